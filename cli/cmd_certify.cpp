@@ -1,0 +1,17 @@
+// Placeholder: `lepp certify` lands with its issue.
+#include <cstdio>
+
+#include "commands.h"
+
+namespace lepp::cli {
+
+void add_certify_command(CLI::App& app, int& status) {
+  auto* cmd = app.add_subcommand("certify", "(not implemented yet)");
+  cmd->allow_extras();
+  cmd->callback([&status] {
+    std::fprintf(stderr, "lepp certify: not implemented yet\n");
+    status = 1;
+  });
+}
+
+}  // namespace lepp::cli

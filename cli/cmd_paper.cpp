@@ -1,0 +1,17 @@
+// Placeholder: `lepp paper` lands with its issue.
+#include <cstdio>
+
+#include "commands.h"
+
+namespace lepp::cli {
+
+void add_paper_command(CLI::App& app, int& status) {
+  auto* cmd = app.add_subcommand("paper", "(not implemented yet)");
+  cmd->allow_extras();
+  cmd->callback([&status] {
+    std::fprintf(stderr, "lepp paper: not implemented yet\n");
+    status = 1;
+  });
+}
+
+}  // namespace lepp::cli

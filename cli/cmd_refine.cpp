@@ -1,0 +1,154 @@
+// `lepp refine IN.poly -o PREFIX`: read, validate, refine, write, report.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "lepp/fast.h"
+#include "lepp/io.h"
+#include "lepp/reference.h"
+#include "lepp/stats.h"
+#include "lepp/validate.h"
+
+namespace lepp::cli {
+namespace {
+
+struct RefineArgs {
+  std::string input, output;
+  double min_angle = 30;
+  std::string method = "centroid";
+  std::string engine = "reference";
+  std::string order = "fifo";
+  std::int64_t max_steiner = -1;
+  double max_area = 0;
+  double time_limit = 0;
+  bool json = false;
+  bool quiet = false;
+};
+
+int run_refine(const RefineArgs& args) {
+  Pslg input;
+  std::vector<std::string> warnings;
+  try {
+    input = validate(read_poly(args.input), warnings);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "lepp refine: %s\n", e.what());
+    return 2;
+  }
+  for (const std::string& w : warnings) std::fprintf(stderr, "lepp refine: warning: %s\n", w.c_str());
+
+  RefineOptions options;
+  options.min_angle_deg = args.min_angle;
+  options.method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
+  options.order = args.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+  options.max_steiner = args.max_steiner;
+  options.max_area = args.max_area;
+  options.time_limit_seconds = args.time_limit;
+  if (!args.quiet && !args.json) {
+    options.on_progress = [](std::int64_t n) { std::fprintf(stderr, "\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
+  }
+
+  RefineResult result;
+  if (args.engine == "fast") {
+    if (!fast::available()) {
+      std::fprintf(stderr, "lepp refine: the fast engine is not implemented yet; use --engine reference\n");
+      return 1;
+    }
+    result = fast::refine(input, options);
+  } else {
+    result = reference::refine(input, options);
+  }
+  if (options.on_progress) std::fprintf(stderr, "\r\033[K");
+  try {
+    write_mesh(args.output, result.mesh);
+    write_unimprovable(args.output, result.unimprovable);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lepp refine: %s\n", e.what());
+    return 1;
+  }
+
+  MeshStats s = mesh_stats(result.mesh, input);
+  double avg_lepp = result.lepp_searches ? static_cast<double>(result.lepp_triangles) / static_cast<double>(result.lepp_searches) : 0;
+  if (args.json) {
+    nlohmann::json j = {
+        {"input", args.input},
+        {"output", args.output},
+        {"engine", args.engine},
+        {"method", to_string(options.method)},
+        {"order", to_string(options.order)},
+        {"min_angle_target", args.min_angle},
+        {"max_area", args.max_area},
+        {"input_vertices", input.vertices.size()},
+        {"steiner_points", result.steiner_points},
+        {"vertices", s.vertices},
+        {"triangles", s.triangles},
+        {"min_angle", s.min_angle_deg},
+        {"avg_min_angle", s.avg_min_angle_deg},
+        {"min_area_quality", s.min_area_quality},
+        {"shortest_edge_ratio", s.shortest_edge_ratio},
+        {"avg_lepp_size", avg_lepp},
+        {"cocircular_ties", result.cocircular_ties},
+        {"unimprovable", result.unimprovable.size()},
+        {"outcome", to_string(result.outcome)},
+        {"stuck", result.stuck},
+        {"seconds", result.seconds},
+        {"warnings", warnings},
+    };
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
+    std::printf("input vertices        %zu\n", input.vertices.size());
+    std::printf("Steiner points added  %lld\n", static_cast<long long>(result.steiner_points));
+    std::printf("triangles             %zu\n", s.triangles);
+    std::printf("smallest angle        %.4f deg\n", s.min_angle_deg);
+    std::printf("average smallest      %.4f deg\n", s.avg_min_angle_deg);
+    std::printf("smallest area quality %.4f\n", s.min_area_quality);
+    std::printf("shortest edge / input %.4f\n", s.shortest_edge_ratio);
+    std::printf("average Lepp size     %.3f\n", avg_lepp);
+    if (!result.unimprovable.empty())
+      std::printf("unimprovable          %zu triangles (listed in %s.unimprovable)\n", result.unimprovable.size(),
+                  args.output.c_str());
+    std::printf("outcome               %s\n", to_string(result.outcome));
+    if (!result.stuck.empty()) std::printf("stuck at              %s\n", result.stuck.c_str());
+    std::printf("seconds               %.3f\n", result.seconds);
+  }
+  return exit_status(result.outcome);
+}
+
+}  // namespace
+
+void add_refine_command(CLI::App& app, int& status) {
+  auto args = std::make_shared<RefineArgs>();
+  auto* cmd = app.add_subcommand("refine", "Refine a .poly file into a quality mesh (writes PREFIX.node/.ele/.poly)");
+  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->output, "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly")->required();
+  cmd->add_option("--min-angle", args->min_angle, "Smallest angle wanted, degrees (a triangle below it is bad)")
+      ->default_val(30)
+      ->check(CLI::Range(0.0, 60.0));
+  cmd->add_option("--method", args->method, "Point selection: centroid (the paper's Lepp-centroid) or midpoint (Lepp-midpoint)")
+      ->default_val("centroid")
+      ->check(CLI::IsMember({"centroid", "midpoint"}));
+  cmd->add_option("--engine", args->engine, "fast (optimized) or reference (exact CGAL Epeck, slow)")
+      ->default_val("reference")
+      ->check(CLI::IsMember({"fast", "reference"}));
+  cmd->add_option("--order", args->order, "Queue discipline for new bad triangles: fifo or lifo (docs/ALGORITHM.md)")
+      ->default_val("fifo")
+      ->check(CLI::IsMember({"fifo", "lifo"}));
+  cmd->add_option("--max-steiner", args->max_steiner, "Steiner budget; default 100000 + 1000 x (vertices + segments)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-area", args->max_area, "Size bound: a triangle larger than this is bad too (Triangle's -a)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds (outcome time-limit, exit 3)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--json", args->json, "Print the statistics as JSON");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
+  cmd->footer(
+      "Exit status: 0 converged; 3 stopped by a guard (budget, edge floor, time limit) or triangles left\n"
+      "unimprovable by small input angles (the mesh is still written, a valid CDT); 2 bad input; 1 internal error.");
+  cmd->callback([args, &status] { status = run_refine(*args); });
+}
+
+}  // namespace lepp::cli

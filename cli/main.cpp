@@ -1,0 +1,27 @@
+// lepp: quality triangulation by the Lepp-centroid method, and the tools to prove it right.
+#include <cstdio>
+#include <exception>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"lepp: Lepp-centroid quality triangulation, an exact reference engine, and a mesh certifier"};
+  app.require_subcommand(1, 1);
+  app.set_help_all_flag("--help-all", "Show help for every subcommand");
+  int status = 0;
+  lepp::cli::add_refine_command(app, status);
+  lepp::cli::add_certify_command(app, status);
+  lepp::cli::add_render_command(app, status);
+  lepp::cli::add_paper_command(app, status);
+  lepp::cli::add_theorems_command(app, status);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : 2;  // a usage error is bad input
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lepp: internal error: %s\n", e.what());
+    return 1;
+  }
+  return status;
+}

@@ -1,0 +1,97 @@
+// What both engines take and give: options, outcome, trace, result.
+// The decisions behind each field are in docs/ALGORITHM.md.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+
+namespace lepp {
+
+enum class Method { Centroid, Midpoint };
+
+// How bad triangles created by an insertion join the queue (ALGORITHM.md, "Processing order").
+enum class QueueOrder { Fifo, Lifo };
+
+enum class Outcome {
+  Converged,      // every triangle has smallest angle >= theta (and area <= max_area)
+  Unimprovable,   // converged except for triangles listed as unimprovable (small input angles)
+  SteinerBudget,  // stopped: the Steiner budget was used up
+  EdgeFloor,      // stopped: an insertion made an edge shorter than the floor
+  TimeLimit,      // stopped: the wall-clock limit passed
+};
+
+// Which branch of the paper's Select Point / New Select Point chose the point.
+enum class Rule {
+  TerminalConstrainedMidpoint,   // both methods: terminal edge constrained (or boundary): its midpoint
+  TerminalMidpoint,              // midpoint method: midpoint of the unconstrained terminal edge
+  SecondLongestMidpoint,         // midpoint: constrained-edge point insertion; centroid: Remark 10 fallback
+  QuadCentroid,                  // centroid: neither second-longest edge constrained
+  CentroidInOther,               // centroid: one second-longest edge constrained, centroid strictly inside the other triangle
+  BothSecondLongestMidpoint,     // centroid: both second-longest edges constrained: midpoint of t1's
+};
+
+struct RefineOptions {
+  double min_angle_deg = 30;
+  Method method = Method::Centroid;
+  double max_area = 0;               // 0: no size bound (Triangle's -a)
+  QueueOrder order = QueueOrder::Fifo;
+  std::int64_t max_steiner = -1;     // -1: default_steiner_budget()
+  double edge_floor = -1;            // -1: default_edge_floor()
+  double time_limit_seconds = 0;     // 0: no limit
+  bool trace = false;                // record a TraceStep per insertion
+  // Called after every insertion with the current mesh (domain triangles only).
+  // Slow: meant for tests on small inputs (Theorem 2 on every intermediate mesh).
+  std::function<void(const Mesh&)> on_insertion;
+  // Called now and then on long runs with the number of Steiner points so far.
+  std::function<void(std::int64_t)> on_progress;
+};
+
+struct TraceStep {
+  Tri bad{};                    // the bad triangle being processed
+  std::vector<Tri> lepp;        // Lepp(bad): bad first, terminal triangle(s) last
+  std::array<int, 2> terminal_edge{};
+  Tri t1{};                     // terminal triangle reached by the Lepp
+  Tri t2{{-1, -1, -1}};         // its neighbour across the terminal edge, or -1s
+  Rule rule = Rule::QuadCentroid;
+  Point point;                  // the point inserted
+  int split_segment = -1;       // input segment split by the point, or -1
+};
+
+// A bad triangle left as it is by the small-input-angle rule (ALGORITHM.md).
+struct UnimprovableTriangle {
+  Tri triangle{};
+  int apex = -1;                // the input vertex where the two segments meet
+  int segment1 = -1, segment2 = -1;
+  double input_angle_deg = 0;   // the angle between them at apex (for reports only)
+};
+
+struct RefineResult {
+  Mesh mesh;
+  Outcome outcome = Outcome::Converged;
+  std::int64_t steiner_points = 0;
+  std::vector<UnimprovableTriangle> unimprovable;
+  std::vector<TraceStep> trace;
+  std::int64_t cocircular_ties = 0;     // Delaunay decisions that met four cocircular points
+  std::int64_t lepp_searches = 0;       // Lepp searches made
+  std::int64_t lepp_triangles = 0;      // triangles visited by them (average Lepp size = ratio)
+  std::string stuck;                    // for a guard outcome: which triangle, its Lepp
+  double seconds = 0;
+};
+
+// Defaults of the loop guards, a function of the input (ALGORITHM.md, "Termination").
+std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& options);
+double default_edge_floor(const Pslg& pslg);
+
+const char* to_string(Outcome outcome);
+const char* to_string(Rule rule);
+const char* to_string(Method method);
+const char* to_string(QueueOrder order);
+// 0 converged, 3 any other outcome (the mesh is still written).
+int exit_status(Outcome outcome);
+
+}  // namespace lepp

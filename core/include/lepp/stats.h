@@ -1,0 +1,26 @@
+// The statistics `lepp refine` prints and the paper plots, in double precision
+// (for display; decisions about angles are made exactly elsewhere).
+#pragma once
+#include <cstddef>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+
+namespace lepp {
+
+struct MeshStats {
+  std::size_t vertices = 0, triangles = 0;
+  double min_angle_deg = 0;        // smallest angle of any triangle
+  double avg_min_angle_deg = 0;    // mean over triangles of their smallest angle
+  double min_area_quality = 0;     // min q(t) = (4/sqrt 3) area / longest^2, 1 for equilateral
+  double shortest_edge = 0;        // shortest mesh edge
+  double shortest_edge_ratio = 0;  // shortest mesh edge / shortest input segment
+};
+
+MeshStats mesh_stats(const Mesh& mesh, const Pslg& input);
+
+// Smallest angle of triangle abc in degrees, and its area quality q.
+double min_angle_deg(const Point& a, const Point& b, const Point& c);
+double area_quality(const Point& a, const Point& b, const Point& c);
+
+}  // namespace lepp

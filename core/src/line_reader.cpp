@@ -1,0 +1,84 @@
+#include "line_reader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "lepp/io.h"
+
+namespace lepp::detail {
+
+LineReader::LineReader(std::string path) : path_(std::move(path)) {
+  std::ifstream in(path_, std::ios::binary);
+  if (!in) throw InputError(path_, 0, "cannot open file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  text_ = buffer.str();
+}
+
+bool LineReader::next(std::vector<std::string_view>& tokens) {
+  tokens.clear();
+  while (pos_ < text_.size()) {
+    std::size_t end = text_.find('\n', pos_);
+    if (end == std::string::npos) end = text_.size();
+    std::string_view line(text_.data() + pos_, end - pos_);
+    pos_ = end + 1;
+    ++line_;
+    if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      std::size_t start = i;
+      while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      if (i > start) tokens.push_back(line.substr(start, i - start));
+    }
+    if (!tokens.empty()) return true;
+  }
+  return false;
+}
+
+void LineReader::expect(std::vector<std::string_view>& tokens, const std::string& what) {
+  if (!next(tokens)) fail(fmt::format("unexpected end of file: expected {}", what));
+}
+
+std::size_t LineReader::lines_left() const {
+  if (pos_ >= text_.size()) return 0;
+  return static_cast<std::size_t>(std::count(text_.begin() + static_cast<std::ptrdiff_t>(pos_), text_.end(), '\n')) + 1;
+}
+
+void LineReader::fail(const std::string& what) const { throw InputError(path_, line_, what); }
+
+double LineReader::real(std::string_view token, const char* what) const {
+  std::string s(token);
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || *end != '\0') fail(fmt::format("{} '{}' is not a number", what, s));
+  if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite (NaN or infinite)", what, s));
+  return v;  // subnormals and underflow to zero are accepted as written
+}
+
+std::int64_t LineReader::integer(std::string_view token, const char* what) const {
+  std::string s(token);
+  char* end = nullptr;
+  errno = 0;
+  long long v = std::strtoll(s.c_str(), &end, 10);
+  if (end == s.c_str() || *end != '\0') fail(fmt::format("{} '{}' is not an integer", what, s));
+  if (errno == ERANGE) fail(fmt::format("{} '{}' is out of range", what, s));
+  return v;
+}
+
+void LineReader::fields(const std::vector<std::string_view>& tokens, std::size_t min, std::size_t max,
+                        const char* what) const {
+  if (tokens.size() < min)
+    fail(fmt::format("{}: expected {} fields, found {}", what, min, tokens.size()));
+  if (tokens.size() > max)
+    fail(fmt::format("{}: expected at most {} fields, found {} (extra fields)", what, max, tokens.size()));
+}
+
+}  // namespace lepp::detail

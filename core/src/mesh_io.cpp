@@ -1,0 +1,173 @@
+// PREFIX.node/.ele/.poly (and .unimprovable) in and out, as Triangle writes them.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+
+#include "lepp/io.h"
+#include "line_reader.h"
+
+namespace lepp {
+namespace {
+
+using detail::LineReader;
+using Tokens = std::vector<std::string_view>;
+
+std::size_t header_count(LineReader& in, std::string_view token, const char* what) {
+  std::int64_t n = in.integer(token, what);
+  if (n < 0 || static_cast<std::size_t>(n) > in.lines_left())
+    in.fail(fmt::format("{} is {} but the file has only {} more lines", what, n, in.lines_left()));
+  return static_cast<std::size_t>(n);
+}
+
+int vertex_id(LineReader& in, std::string_view token, int first, std::size_t n) {
+  std::int64_t v = in.integer(token, "vertex id");
+  if (v < first || v >= first + static_cast<std::int64_t>(n))
+    in.fail(fmt::format("vertex id {} out of range ({} to {})", v, first, first + static_cast<std::int64_t>(n) - 1));
+  return static_cast<int>(v - first);
+}
+
+}  // namespace
+
+Mesh read_mesh(const std::string& prefix) {
+  Mesh mesh;
+  int first = 1;
+  {
+    Pslg nodes = read_node(prefix + ".node");
+    mesh.vertices = std::move(nodes.vertices);
+    LineReader probe(prefix + ".node");
+    Tokens h;
+    probe.expect(h, "vertex header");
+    if (probe.next(h)) first = static_cast<int>(probe.integer(h[0], "vertex number"));
+  }
+  const std::size_t n = mesh.vertices.size();
+  {
+    LineReader in(prefix + ".ele");
+    Tokens t;
+    in.expect(t, "triangle header (count, nodes per triangle, attributes)");
+    in.fields(t, 1, 3, "triangle header (count, nodes per triangle, attributes)");
+    std::size_t nt = header_count(in, t[0], "triangle count");
+    std::int64_t corners = t.size() >= 2 ? in.integer(t[1], "nodes per triangle") : 3;
+    if (corners != 3 && corners != 6) in.fail("nodes per triangle must be 3 or 6");
+    std::int64_t attributes = t.size() >= 3 ? in.integer(t[2], "attribute count") : 0;
+    if (attributes < 0 || attributes > 1000) in.fail("attribute count out of range");
+    const std::size_t fields = 1 + static_cast<std::size_t>(corners + attributes);
+    mesh.triangles.reserve(nt);
+    for (std::size_t i = 0; i < nt; ++i) {
+      in.expect(t, fmt::format("triangle {} of {}", i + 1, nt));
+      in.fields(t, fields, fields, "triangle line (number, corners, attributes)");
+      mesh.triangles.push_back({vertex_id(in, t[1], first, n), vertex_id(in, t[2], first, n), vertex_id(in, t[3], first, n)});
+    }
+  }
+  if (std::ifstream(prefix + ".poly")) {
+    LineReader in(prefix + ".poly");
+    Tokens t;
+    in.expect(t, "vertex header");
+    if (in.integer(t[0], "vertex count") != 0) {
+      // A full .poly: skip its vertex lines (the .node holds the same vertices).
+      std::size_t nv = header_count(in, t[0], "vertex count");
+      for (std::size_t i = 0; i < nv; ++i) in.expect(t, "vertex line");
+    }
+    in.expect(t, "segment header");
+    in.fields(t, 1, 2, "segment header (count, markers)");
+    std::size_t ns = header_count(in, t[0], "segment count");
+    for (std::size_t i = 0; i < ns; ++i) {
+      in.expect(t, fmt::format("segment {} of {}", i + 1, ns));
+      in.fields(t, 3, 4, "segment line (number, endpoint, endpoint, marker)");
+      // Markers are not trusted to be segment ids: the certifier finds the
+      // input segment of each constrained edge by geometry.
+      mesh.constrained_edges.push_back({vertex_id(in, t[1], first, n), vertex_id(in, t[2], first, n), -1});
+    }
+  }
+  return mesh;
+}
+
+void write_mesh(const std::string& prefix, const Mesh& mesh) {
+  try {
+    {
+      auto out = fmt::output_file(prefix + ".node");
+      out.print("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n");
+      out.print("{} 2 0 1\n", mesh.vertices.size());
+      for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        out.print("{} {} {} {}\n", i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
+    }
+    {
+      auto out = fmt::output_file(prefix + ".ele");
+      out.print("{} 3 0\n", mesh.triangles.size());
+      for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const Tri& t = mesh.triangles[i];
+        out.print("{} {} {} {}\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
+      }
+    }
+    {
+      auto out = fmt::output_file(prefix + ".poly");
+      out.print("# lepp mesh: constrained edges; marker = input segment number (1-based), 0 if unknown\n");
+      out.print("0 2 0 1\n{} 1\n", mesh.constrained_edges.size());
+      for (std::size_t i = 0; i < mesh.constrained_edges.size(); ++i) {
+        const ConstrainedEdge& e = mesh.constrained_edges[i];
+        out.print("{} {} {} {}\n", i + 1, e.a + 1, e.b + 1, e.segment + 1);
+      }
+      out.print("0\n");
+    }
+  } catch (const std::system_error& e) {
+    throw InputError(prefix, 0, fmt::format("cannot write mesh: {}", e.what()));
+  }
+}
+
+void write_poly(const std::string& path, const Pslg& pslg) {
+  auto out = fmt::output_file(path);
+  const bool markers = pslg.vertex_markers.size() == pslg.vertices.size() && !pslg.vertices.empty();
+  out.print("{} 2 0 {}\n", pslg.vertices.size(), markers ? 1 : 0);
+  for (std::size_t i = 0; i < pslg.vertices.size(); ++i) {
+    if (markers)
+      out.print("{} {} {} {}\n", i + 1, pslg.vertices[i].x, pslg.vertices[i].y, pslg.vertex_markers[i]);
+    else
+      out.print("{} {} {}\n", i + 1, pslg.vertices[i].x, pslg.vertices[i].y);
+  }
+  out.print("{} 1\n", pslg.segments.size());
+  for (std::size_t i = 0; i < pslg.segments.size(); ++i)
+    out.print("{} {} {} {}\n", i + 1, pslg.segments[i].a + 1, pslg.segments[i].b + 1, pslg.segments[i].marker);
+  out.print("{}\n", pslg.holes.size());
+  for (std::size_t i = 0; i < pslg.holes.size(); ++i) out.print("{} {} {}\n", i + 1, pslg.holes[i].x, pslg.holes[i].y);
+}
+
+void write_unimprovable(const std::string& prefix, const std::vector<UnimprovableTriangle>& list) {
+  const std::string path = prefix + ".unimprovable";
+  if (list.empty()) {
+    std::remove(path.c_str());
+    return;
+  }
+  auto out = fmt::output_file(path);
+  out.print("# triangles left bad by the small-input-angle rule (docs/ALGORITHM.md)\n");
+  out.print("# v1 v2 v3 apex segment1 segment2 input_angle_deg (1-based ids)\n{}\n", list.size());
+  for (const UnimprovableTriangle& u : list)
+    out.print("{} {} {} {} {} {} {}\n", u.triangle[0] + 1, u.triangle[1] + 1, u.triangle[2] + 1, u.apex + 1,
+              u.segment1 + 1, u.segment2 + 1, u.input_angle_deg);
+}
+
+std::vector<UnimprovableTriangle> read_unimprovable(const std::string& prefix) {
+  std::vector<UnimprovableTriangle> list;
+  const std::string path = prefix + ".unimprovable";
+  if (!std::ifstream(path)) return list;
+  LineReader in(path);
+  Tokens t;
+  in.expect(t, "count");
+  in.fields(t, 1, 1, "count");
+  std::size_t n = header_count(in, t[0], "count");
+  for (std::size_t i = 0; i < n; ++i) {
+    in.expect(t, "unimprovable triangle");
+    in.fields(t, 7, 7, "unimprovable line (v1 v2 v3 apex segment1 segment2 angle)");
+    UnimprovableTriangle u;
+    for (int k = 0; k < 3; ++k) u.triangle[k] = static_cast<int>(in.integer(t[k], "vertex id") - 1);
+    u.apex = static_cast<int>(in.integer(t[3], "apex") - 1);
+    u.segment1 = static_cast<int>(in.integer(t[4], "segment") - 1);
+    u.segment2 = static_cast<int>(in.integer(t[5], "segment") - 1);
+    u.input_angle_deg = in.real(t[6], "angle");
+    list.push_back(u);
+  }
+  return list;
+}
+
+}  // namespace lepp

@@ -1,0 +1,56 @@
+#include "lepp/stats.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lepp {
+namespace {
+double len(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+}  // namespace
+
+double min_angle_deg(const Point& a, const Point& b, const Point& c) {
+  auto angle = [](const Point& o, const Point& p, const Point& q) {
+    double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
+    return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+  };
+  double m = std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+  return m * 180.0 / M_PI;
+}
+
+double area_quality(const Point& a, const Point& b, const Point& c) {
+  double area2 = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  double l = std::max({len(a, b), len(b, c), len(c, a)});
+  return l > 0 ? (2.0 / std::sqrt(3.0)) * area2 / (l * l) : 0.0;
+}
+
+MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
+  MeshStats s;
+  s.vertices = mesh.vertices.size();
+  s.triangles = mesh.triangles.size();
+  double min_angle = 180, sum = 0, min_q = std::numeric_limits<double>::infinity();
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const Tri& t : mesh.triangles) {
+    const Point &a = mesh.vertices[static_cast<std::size_t>(t[0])], &b = mesh.vertices[static_cast<std::size_t>(t[1])],
+                &c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    double m = min_angle_deg(a, b, c);
+    min_angle = std::min(min_angle, m);
+    sum += m;
+    min_q = std::min(min_q, area_quality(a, b, c));
+    shortest = std::min({shortest, len(a, b), len(b, c), len(c, a)});
+  }
+  double input_shortest = std::numeric_limits<double>::infinity();
+  for (const Segment& seg : input.segments)
+    input_shortest = std::min(input_shortest, len(input.vertices[static_cast<std::size_t>(seg.a)],
+                                                  input.vertices[static_cast<std::size_t>(seg.b)]));
+  if (!mesh.triangles.empty()) {
+    s.min_angle_deg = min_angle;
+    s.avg_min_angle_deg = sum / static_cast<double>(mesh.triangles.size());
+    s.min_area_quality = min_q;
+    s.shortest_edge = shortest;
+    s.shortest_edge_ratio = std::isfinite(input_shortest) && input_shortest > 0 ? shortest / input_shortest : 0;
+  }
+  return s;
+}
+
+}  // namespace lepp

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs everything lepp needs on Debian 12 (run as root). Debian packages only,
+# plus Node.js's npm from Debian when the machine has no npm yet.
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+apt-get update
+apt-get install -y --no-install-recommends \
+  build-essential cmake ninja-build ccache pkg-config git \
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
+  librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev \
+  clang-14 libclang-rt-14-dev libfuzzer-14-dev \
+  libcli11-dev nlohmann-json3-dev libfmt-dev \
+  python3-matplotlib zip
+# Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
+# nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
+if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi
+if ! command -v npm >/dev/null; then apt-get install -y --no-install-recommends npm; fi
