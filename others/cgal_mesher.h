@@ -1,0 +1,22 @@
+// CGAL's own quality mesher (CGAL::refine_Delaunay_mesh_2), wrapped for comparisons.
+#pragma once
+#include <cstdint>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+
+namespace lepp::others {
+
+struct CgalMeshResult {
+  Mesh mesh;                  // domain triangles only, input vertices first
+  std::int64_t steiner_points = 0;
+  double seconds = 0;         // meshing time (CDT build + refinement)
+};
+
+// Builds the CDT of a validated PSLG (points inserted in bulk), marks holes as
+// seeds, and refines with Delaunay_mesh_size_criteria_2(B = sin^2(theta),
+// max_edge_size; 0 = no size bound). CGAL guarantees termination for theta up
+// to about 20.7 degrees; above that it may not stop.
+CgalMeshResult cgal_mesh(const Pslg& pslg, double min_angle_deg, double max_edge_size = 0);
+
+}  // namespace lepp::others
