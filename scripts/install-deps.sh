@@ -15,3 +15,9 @@ apt-get install -y --no-install-recommends \
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
 if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi
 if ! command -v npm >/dev/null; then apt-get install -y --no-install-recommends npm; fi
+# Triangle (triangle-wasm, pinned by tools/triangle/package-lock.json) for the
+# comparisons in `lepp paper`. Idempotent: skipped when already installed.
+triangle_dir="$(cd "$(dirname "$0")/../tools/triangle" && pwd)"
+if [ ! -f "$triangle_dir/node_modules/triangle-wasm/package.json" ]; then
+  (cd "$triangle_dir" && npm ci --no-audit --no-fund)
+fi
