@@ -96,11 +96,13 @@ Pslg read_poly(const std::string& path) {
     pslg.vertices = std::move(points.vertices);
     pslg.vertex_markers = std::move(points.vertex_markers);
     pslg.vertex_lines = std::move(points.vertex_lines);
-    LineReader probe(node);
-    Tokens h;
-    probe.expect(h, "vertex header");
-    probe.expect(h, "vertex 1");
-    first = static_cast<int>(probe.integer(h[0], "vertex number"));
+    if (!pslg.vertices.empty()) {  // the .node's numbering (0 or 1) is the segments' too
+      LineReader probe(node);
+      Tokens h;
+      probe.expect(h, "vertex header");
+      probe.expect(h, "vertex 1");
+      first = static_cast<int>(probe.integer(h[0], "vertex number"));
+    }
   }
   const std::int64_t nv = static_cast<std::int64_t>(pslg.vertices.size());
 
