@@ -1,0 +1,128 @@
+// Initial CDT: CGAL's Constrained_Delaunay_triangulation_2 on Epick (bulk point
+// insertion, which sorts spatially, then the segments), copied into flat arrays
+// and flooded from the outside and from hole points without crossing a segment.
+// The CDT of points with no four cocircular is unique, so the reference's CDT
+// (on Epeck) is the same triangulation.
+#include "cdt_build.h"
+
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+namespace lepp::fast {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Constrained_triangulation_face_base_2<K>>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
+
+// The input segment joining vertices a and b (an edge of a validated PSLG's CDT
+// is constrained only if it is a whole segment).
+int segment_between(const Pslg& pslg, const SegmentMembership& m, int a, int b) {
+  for (int k = m.start[static_cast<std::size_t>(a)]; k < m.start[static_cast<std::size_t>(a) + 1]; ++k) {
+    int s = m.list[static_cast<std::size_t>(k)];
+    const Segment& seg = pslg.segments[static_cast<std::size_t>(s)];
+    if (seg.a == b || seg.b == b) return s;
+  }
+  throw std::logic_error("fast engine: a constrained CDT edge is no input segment");
+}
+
+}  // namespace
+
+TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership, std::size_t reserve_triangles,
+                          std::size_t reserve_vertices) {
+  Cdt cdt;
+  {
+    std::vector<std::pair<K::Point_2, int>> points;
+    points.reserve(pslg.vertices.size());
+    for (std::size_t i = 0; i < pslg.vertices.size(); ++i)
+      points.emplace_back(K::Point_2(pslg.vertices[i].x, pslg.vertices[i].y), static_cast<int>(i));
+    cdt.insert(points.begin(), points.end());
+  }
+  std::vector<Cdt::Vertex_handle> handle(pslg.vertices.size());
+  for (auto v : cdt.finite_vertex_handles()) handle[static_cast<std::size_t>(v->info())] = v;
+  for (const Segment& s : pslg.segments)
+    cdt.insert_constraint(handle[static_cast<std::size_t>(s.a)], handle[static_cast<std::size_t>(s.b)]);
+
+  // Number the finite faces; the infinite ones get -1.
+  int count = 0;
+  for (auto f : cdt.all_face_handles()) f->info() = -1;
+  for (auto f : cdt.finite_face_handles()) f->info() = count++;
+
+  TriMesh all;
+  all.tris.resize(static_cast<std::size_t>(count));
+  for (auto f : cdt.finite_face_handles()) {
+    FTri& t = all.t(f->info());
+    for (int i = 0; i < 3; ++i) {
+      t.v[i] = f->vertex(i)->info();
+      auto g = f->neighbor(i);
+      t.nbr[i] = g->info() < 0 ? -1 : nbr_code(g->info(), g->index(f));
+      t.seg[i] = f->is_constrained(i) ? segment_between(pslg, membership, f->vertex(Cdt::cw(i))->info(),
+                                                       f->vertex(Cdt::ccw(i))->info())
+                                      : -1;
+    }
+  }
+
+  // Flood (Triangle's -p): from hull triangles across unconstrained hull edges
+  // and from triangles holding a hole point; never across a constrained edge.
+  std::vector<char> removed(static_cast<std::size_t>(count), 0);
+  std::vector<int> stack;
+  auto seed = [&](int ti) {
+    if (ti >= 0 && !removed[static_cast<std::size_t>(ti)]) removed[static_cast<std::size_t>(ti)] = 1, stack.push_back(ti);
+  };
+  for (int ti = 0; ti < count; ++ti)
+    for (int i = 0; i < 3; ++i)
+      if (all.t(ti).nbr[i] < 0 && all.t(ti).seg[i] < 0) seed(ti);
+  for (const Point& h : pslg.holes) {
+    Cdt::Locate_type lt;
+    int li = 0;
+    auto f = cdt.locate(K::Point_2(h.x, h.y), lt, li);
+    if (lt == Cdt::FACE) {
+      seed(f->info());
+    } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
+      seed(f->info());
+      seed(f->neighbor(li)->info());
+    }
+  }
+  while (!stack.empty()) {
+    int ti = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i)
+      if (all.t(ti).seg[i] < 0 && all.t(ti).nbr[i] >= 0) seed(nbr_tri(all.t(ti).nbr[i]));
+  }
+
+  // Keep the domain, renumbered in the order CGAL listed it.
+  std::vector<int> new_id(static_cast<std::size_t>(count), -1);
+  int kept = 0;
+  for (int ti = 0; ti < count; ++ti)
+    if (!removed[static_cast<std::size_t>(ti)]) new_id[static_cast<std::size_t>(ti)] = kept++;
+  TriMesh mesh;
+  mesh.pts.reserve(std::max(reserve_vertices, pslg.vertices.size()));
+  mesh.pts = pslg.vertices;
+  mesh.tris.reserve(std::max(reserve_triangles, static_cast<std::size_t>(kept)));
+  for (int ti = 0; ti < count; ++ti) {
+    if (removed[static_cast<std::size_t>(ti)]) continue;
+    FTri t = all.t(ti);
+    for (int i = 0; i < 3; ++i) {
+      if (t.nbr[i] < 0) continue;
+      int n = new_id[static_cast<std::size_t>(nbr_tri(t.nbr[i]))];
+      if (n < 0) {
+        if (t.seg[i] < 0) throw std::logic_error("fast engine: flooding crossed an unconstrained edge");
+        t.nbr[i] = -1;
+      } else {
+        t.nbr[i] = nbr_code(n, nbr_edge(t.nbr[i]));
+      }
+    }
+    mesh.tris.push_back(t);
+  }
+  return mesh;
+}
+
+}  // namespace lepp::fast

@@ -1,0 +1,244 @@
+// The fast engine's refinement loop (ALGORITHM.md sections 7 to 9): the queue
+// of bad triangles, guards, trace and statistics around Lepp search, point
+// selection and insertion.
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cdt_build.h"
+#include "insertion.h"
+#include "lepp/angle.h"
+#include "lepp/fast.h"
+#include "lepp_search.h"
+#include "point_selection.h"
+#include "quality.h"
+#include "tri_mesh.h"
+
+namespace lepp::fast {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A queued triangle: its key (sorted vertex ids) and where it was. Triangles
+// are rewritten in place and a destroyed triple never comes back (every
+// triangle an insertion makes has the new vertex), so "t remains in tau" iff
+// the slot still holds the same three vertices.
+struct Item {
+  int k[3];
+  int tri;
+};
+
+inline void sorted_key(const FTri& f, int k[3]) {
+  int a = f.v[0], b = f.v[1], c = f.v[2];
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  k[0] = a, k[1] = b, k[2] = c;
+}
+inline bool key_less(const Item& x, const Item& y) {
+  if (x.k[0] != y.k[0]) return x.k[0] < y.k[0];
+  if (x.k[1] != y.k[1]) return x.k[1] < y.k[1];
+  return x.k[2] < y.k[2];
+}
+inline Item make_item(const TriMesh& m, int ti) {
+  Item it;
+  sorted_key(m.t(ti), it.k);
+  it.tri = ti;
+  return it;
+}
+inline bool still_there(const TriMesh& m, const Item& it) {
+  int k[3];
+  sorted_key(m.t(it.tri), k);
+  return k[0] == it.k[0] && k[1] == it.k[1] && k[2] == it.k[2];
+}
+
+// A triangle as the trace names it: counter-clockwise, smallest id first.
+Tri canonical(const FTri& f) {
+  Tri t{f.v[0], f.v[1], f.v[2]};
+  while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  return t;
+}
+
+std::string describe(const TriMesh& m, const Item& it, const Lepp& lepp) {
+  std::string s = fmt::format("triangle {} {} {}; Lepp", it.k[0], it.k[1], it.k[2]);
+  for (int ti : lepp.path) {
+    Tri t = canonical(m.t(ti));
+    s += fmt::format(" ({} {} {})", t[0], t[1], t[2]);
+  }
+  return s;
+}
+
+struct Bbox {
+  double x0, y0, x1, y1;
+};
+Bbox bbox_of(const Pslg& pslg) {
+  Bbox b{0, 0, 0, 0};
+  if (pslg.vertices.empty()) return b;
+  b = {pslg.vertices[0].x, pslg.vertices[0].y, pslg.vertices[0].x, pslg.vertices[0].y};
+  for (const Point& p : pslg.vertices)
+    b.x0 = std::min(b.x0, p.x), b.x1 = std::max(b.x1, p.x), b.y0 = std::min(b.y0, p.y), b.y1 = std::max(b.y1, p.y);
+  return b;
+}
+
+class Refiner {
+ public:
+  Refiner(const Pslg& pslg, const RefineOptions& options)
+      : pslg_(pslg),
+        opt_(options),
+        mem_(make_membership(pslg)),
+        quality_(pslg, mem_, engine_sin2_threshold(options.min_angle_deg), options.max_area) {}
+
+  RefineResult run() {
+    const auto start = Clock::now();
+    const std::int64_t budget = opt_.max_steiner >= 0 ? opt_.max_steiner : default_steiner_budget(pslg_, opt_);
+    const double floor = opt_.edge_floor >= 0 ? opt_.edge_floor : default_edge_floor(pslg_);
+    const std::size_t n = pslg_.vertices.size();
+
+    // Reserve from a size estimate: untouched capacity costs no resident memory.
+    double expected = 4.0 * static_cast<double>(n) + 4096;
+    if (opt_.max_area > 0) {
+      Bbox b = bbox_of(pslg_);
+      expected += 2.5 * (b.x1 - b.x0) * (b.y1 - b.y0) / opt_.max_area;
+    }
+    expected = std::min(expected, static_cast<double>(n) + static_cast<double>(budget) + 1);
+    const auto vertices_guess = static_cast<std::size_t>(std::min(expected, 4e8));
+    mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess);
+    mem_.steiner.reserve(vertices_guess);
+
+    RefineResult result;
+    std::deque<Item> queue;
+    for (int ti = 0; ti < mesh_.size(); ++ti)
+      if (quality_.processed(mesh_, ti)) queue.push_back(make_item(mesh_, ti));
+    std::sort(queue.begin(), queue.end(), key_less);
+
+    Outcome outcome = Outcome::Converged;
+    Lepp lepp;
+    std::vector<Item> fresh;
+    std::int64_t steiner = 0;
+    while (!queue.empty() && outcome == Outcome::Converged) {
+      const Item item = queue.front();
+      queue.pop_front();
+      while (still_there(mesh_, item)) {
+        lepp_search(mesh_, item.tri, lepp);
+        // Guards before the insertion (section 9).
+        if (opt_.time_limit_seconds > 0 &&
+            std::chrono::duration<double>(Clock::now() - start).count() > opt_.time_limit_seconds) {
+          outcome = Outcome::TimeLimit;
+        } else if (steiner >= budget) {
+          outcome = Outcome::SteinerBudget;
+        }
+        if (outcome != Outcome::Converged) {
+          result.stuck = describe(mesh_, item, lepp);
+          break;
+        }
+
+        ++result.lepp_searches;
+        result.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
+        const Choice choice = select_point(mesh_, lepp, opt_.method);
+        TraceStep step;
+        if (opt_.trace) step = trace_step(item, lepp, choice);
+        int split_segment = -1;
+        const int p = static_cast<int>(mesh_.pts.size());
+        const int around = inserter_.insert(mesh_, mem_, choice, split_segment);
+        ++steiner;
+        if (opt_.trace) {
+          step.split_segment = split_segment;
+          result.trace.push_back(std::move(step));
+        }
+
+        // The new point's star: every triangle this insertion made.
+        bool below_floor = false;
+        fresh.clear();
+        mesh_.for_each_in_star(around, [&](int ti) {
+          const FTri& f = mesh_.t(ti);
+          if (floor > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v[1]), floor) ||
+                            sqlen_below(mesh_.p(p), mesh_.p(f.v[2]), floor)))
+            below_floor = true;
+          if (quality_.processed(mesh_, ti)) fresh.push_back(make_item(mesh_, ti));
+        });
+        std::sort(fresh.begin(), fresh.end(), key_less);
+        if (opt_.order == QueueOrder::Fifo) {
+          queue.insert(queue.end(), fresh.begin(), fresh.end());
+        } else {
+          for (auto it = fresh.rbegin(); it != fresh.rend(); ++it) queue.push_front(*it);
+        }
+        if (opt_.on_insertion) {
+          Mesh now = mesh_.to_mesh(n);
+          canonicalize(now);
+          opt_.on_insertion(now);
+        }
+        if (opt_.on_progress && (steiner & 0xffff) == 0) opt_.on_progress(steiner);
+        if (below_floor) {
+          outcome = Outcome::EdgeFloor;
+          result.stuck = describe(mesh_, item, lepp) + fmt::format("; Steiner point {} made an edge below the floor", p);
+          break;
+        }
+      }
+    }
+
+    // The unimprovable list, recomputed on the final mesh in key order (section 8).
+    std::vector<Item> left;
+    for (int ti = 0; ti < mesh_.size(); ++ti) {
+      Quality::Verdict v = quality_.judge(mesh_, ti);
+      if (v.skinny && quality_.unimprovable(mesh_, ti, v.shortest, nullptr)) left.push_back(make_item(mesh_, ti));
+    }
+    std::sort(left.begin(), left.end(), key_less);
+    for (const Item& it : left) {
+      UnimprovableTriangle u;
+      quality_.unimprovable(mesh_, it.tri, quality_.judge(mesh_, it.tri).shortest, &u);
+      u.triangle = canonical(mesh_.t(it.tri));
+      result.unimprovable.push_back(u);
+    }
+    if (outcome == Outcome::Converged && !result.unimprovable.empty()) outcome = Outcome::Unimprovable;
+
+    result.outcome = outcome;
+    result.steiner_points = steiner;
+    result.cocircular_ties = inserter_.cocircular_ties;
+    result.mesh = mesh_.to_mesh(n);
+    canonicalize(result.mesh);
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+  }
+
+ private:
+  TraceStep trace_step(const Item& item, const Lepp& lepp, const Choice& choice) const {
+    TraceStep s;
+    s.bad = canonical(mesh_.t(item.tri));
+    for (int ti : lepp.path) s.lepp.push_back(canonical(mesh_.t(ti)));
+    const FTri& f1 = mesh_.t(lepp.t1);
+    int a = f1.v[next3(lepp.e1)], b = f1.v[prev3(lepp.e1)];
+    s.terminal_edge = {std::min(a, b), std::max(a, b)};
+    s.t1 = canonical(f1);
+    if (lepp.t2 >= 0) s.t2 = canonical(mesh_.t(lepp.t2));
+    s.rule = choice.rule;
+    s.point = choice.point;
+    return s;
+  }
+
+  const Pslg& pslg_;
+  const RefineOptions& opt_;
+  SegmentMembership mem_;
+  Quality quality_;
+  TriMesh mesh_;
+  Inserter inserter_;
+};
+
+}  // namespace
+
+bool available() { return true; }
+
+Mesh build_cdt(const Pslg& pslg) {
+  SegmentMembership mem = make_membership(pslg);
+  Mesh mesh = build_initial_cdt(pslg, mem, 0, 0).to_mesh(pslg.vertices.size());
+  canonicalize(mesh);
+  return mesh;
+}
+
+RefineResult refine(const Pslg& pslg, const RefineOptions& options) { return Refiner(pslg, options).run(); }
+
+}  // namespace lepp::fast

@@ -1,0 +1,88 @@
+// Inserting a Steiner point without point location (ALGORITHM.md section 6):
+// split the constrained edge, the triangle or the terminal edge it lies on,
+// then restore the constrained Delaunay property by Lawson flips that never
+// cross a constrained edge.
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "point_selection.h"
+#include "predicates.h"
+#include "tri_mesh.h"
+
+namespace lepp::fast {
+
+class Inserter {
+ public:
+  std::int64_t cocircular_ties = 0;
+
+  // Inserts choice.point as vertex id pts.size(); returns a triangle with the new
+  // vertex at v[0] (its star is walked from there) and the segment it split, or -1.
+  int insert(TriMesh& m, SegmentMembership& mem, const Choice& choice, int& split_segment) {
+    const int p = static_cast<int>(m.pts.size());
+    int made[4], count = 0;
+    split_segment = -1;
+    if (choice.edge >= 0) {
+      split_segment = m.t(choice.tri).seg[choice.edge];
+      m.pts.push_back(choice.point);
+      count = m.split_edge(choice.tri, choice.edge, p, split_segment, made);
+    } else {
+      int where = choice.tri, edge = -1;
+      if (!locate_in(m, where, choice.point, edge) && edge == -2 && choice.other >= 0) {
+        where = choice.other;
+        locate_in(m, where, choice.point, edge);
+      }
+      if (edge == -2) throw std::logic_error("fast engine: Steiner point outside its terminal quad");
+      if (edge == -3) throw std::logic_error("fast engine: Steiner point on an existing vertex");
+      m.pts.push_back(choice.point);
+      if (edge < 0) {
+        m.split_triangle(where, p, made);
+        count = 3;
+      } else {
+        split_segment = m.t(where).seg[edge];
+        count = m.split_edge(where, edge, p, split_segment, made);
+      }
+    }
+    mem.steiner.push_back(split_segment);
+    for (int k = 0; k < count; ++k) stack_.push_back(made[k]);
+    restore_delaunay(m);
+    return made[0];
+  }
+
+ private:
+  // Where p lies in the closed triangle ti: edge = -1 strictly inside, 0..2 on
+  // the interior of that edge, -2 outside, -3 on a vertex. Returns true if inside or on an edge.
+  static bool locate_in(const TriMesh& m, int ti, const Point& p, int& edge) {
+    const FTri& f = m.t(ti);
+    int o[3];
+    for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]), p);
+    if (o[0] < 0 || o[1] < 0 || o[2] < 0) return edge = -2, false;
+    int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+    if (zeros >= 2) return edge = -3, false;
+    edge = zeros == 0 ? -1 : (o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2);
+    return true;
+  }
+
+  void restore_delaunay(TriMesh& m) {
+    while (!stack_.empty()) {
+      int ti = stack_.back();
+      stack_.pop_back();
+      const FTri& f = m.t(ti);
+      if (f.seg[0] >= 0 || f.nbr[0] < 0) continue;  // never flip a constrained edge
+      const FTri& g = m.t(nbr_tri(f.nbr[0]));
+      int s = incircle(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), m.p(g.v[nbr_edge(f.nbr[0])]));
+      if (s > 0) {
+        int ni = m.flip_edge0(ti);
+        stack_.push_back(ti);
+        stack_.push_back(ni);
+      } else if (s == 0) {
+        ++cocircular_ties;  // left as it is (ALGORITHM.md section 6)
+      }
+    }
+  }
+
+  std::vector<int> stack_;
+};
+
+}  // namespace lepp::fast

@@ -1,0 +1,181 @@
+// The fast engine's triangle mesh: flat arrays, integer ids, no pointers.
+//
+// Triangle t has vertices v[0..2] counter-clockwise; edge i is the edge
+// opposite v[i], from v[i+1] to v[i+2]. nbr[i] is the neighbour across edge i,
+// encoded as (triangle << 2) | (its index of that edge), or -1 on the domain
+// boundary; seg[i] is the input segment edge i lies on, or -1 (unconstrained).
+// Triangles are rewritten in place by insertions and flips and never freed, so
+// the arrays only grow.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+
+namespace lepp::fast {
+
+struct FTri {
+  int v[3];
+  int nbr[3];
+  int seg[3];
+};
+
+inline int next3(int i) { return i == 2 ? 0 : i + 1; }
+inline int prev3(int i) { return i == 0 ? 2 : i - 1; }
+inline int nbr_tri(int code) { return code >> 2; }
+inline int nbr_edge(int code) { return code & 3; }
+inline int nbr_code(int t, int i) { return (t << 2) | i; }
+
+// Which input segments each vertex lies on (ALGORITHM.md section 1): input
+// vertices every segment they end, Steiner points on split edges their one segment.
+struct SegmentMembership {
+  std::vector<int> start;     // input vertex v: its segments are list[start[v] .. start[v+1])
+  std::vector<int> list;
+  std::vector<int> steiner;   // Steiner point n + k: its segment or -1
+  int input_vertices = 0;
+
+  // Calls f(segment) for each segment vertex v lies on.
+  template <class F>
+  void for_each(int v, F&& f) const {
+    if (v < input_vertices) {
+      for (int k = start[static_cast<std::size_t>(v)]; k < start[static_cast<std::size_t>(v) + 1]; ++k)
+        f(list[static_cast<std::size_t>(k)]);
+    } else if (int s = steiner[static_cast<std::size_t>(v - input_vertices)]; s >= 0) {
+      f(s);
+    }
+  }
+  bool on_any(int v) const {
+    return v < input_vertices ? start[static_cast<std::size_t>(v)] < start[static_cast<std::size_t>(v) + 1]
+                              : steiner[static_cast<std::size_t>(v - input_vertices)] >= 0;
+  }
+};
+
+SegmentMembership make_membership(const Pslg& pslg);
+
+struct TriMesh {
+  std::vector<Point> pts;
+  std::vector<FTri> tris;
+
+  const Point& p(int v) const { return pts[static_cast<std::size_t>(v)]; }
+  FTri& t(int i) { return tris[static_cast<std::size_t>(i)]; }
+  const FTri& t(int i) const { return tris[static_cast<std::size_t>(i)]; }
+  int size() const { return static_cast<int>(tris.size()); }
+
+  // Points the neighbour across (t, i) back at `code`.
+  void relink(int code_of_neighbour, int code) {
+    if (code_of_neighbour >= 0) t(nbr_tri(code_of_neighbour)).nbr[nbr_edge(code_of_neighbour)] = code;
+  }
+
+  // Splits triangle ti at vertex p strictly inside it into three triangles, each
+  // with p as v[0] (so edge 0 is the one to test for a flip). Writes their ids to out.
+  void split_triangle(int ti, int p, int out[3]);
+
+  // Splits edge i of triangle ti at vertex p, and the neighbour across it if any;
+  // the two halves keep `segment` (-1 for an unconstrained edge). Every new triangle
+  // has p as v[0]. Writes the 2 or 4 ids to out, returns how many.
+  int split_edge(int ti, int i, int p, int segment, int out[4]);
+
+  // Flips edge 0 of ti = (p, a, b) with the triangle (d, b, a) across it: ti
+  // becomes (p, a, d) and the neighbour (p, d, b), both with p as v[0]. Returns
+  // the neighbour's id.
+  int flip_edge0(int ti);
+
+  // Calls f(tri) for every triangle with vertex p at v[0] around p, starting at
+  // ti (which must have p at v[0]; true of the triangles an insertion makes).
+  template <class F>
+  void for_each_in_star(int ti, F&& f) const;
+
+  // Domain triangles as a Mesh (vertices in id order, not canonicalized).
+  Mesh to_mesh(std::size_t input_vertices) const;
+};
+
+template <class F>
+void TriMesh::for_each_in_star(int ti, F&& f) const {
+  // Around p counter-clockwise: leave each triangle (p, a, b) through edge 1 (b, p);
+  // the next triangle (p, b, c) has that edge as its edge 2.
+  int cur = ti;
+  for (;;) {
+    f(cur);
+    int code = t(cur).nbr[1];
+    if (code < 0) break;  // p lies on the boundary: go the other way from ti
+    cur = nbr_tri(code);
+    if (cur == ti) return;
+  }
+  cur = ti;
+  for (;;) {
+    int code = t(cur).nbr[2];
+    if (code < 0) return;
+    cur = nbr_tri(code);
+    f(cur);
+  }
+}
+
+inline void TriMesh::split_triangle(int ti, int p, int out[3]) {
+  const FTri old = t(ti);
+  const int a = old.v[0], b = old.v[1], c = old.v[2];
+  const int t0 = ti, t1 = size(), t2 = size() + 1;
+  tris.resize(tris.size() + 2);
+  // t0 = (p, b, c), t1 = (p, c, a), t2 = (p, a, b); edge 0 of each is an old edge.
+  t(t0) = FTri{{p, b, c}, {old.nbr[0], nbr_code(t1, 2), nbr_code(t2, 1)}, {old.seg[0], -1, -1}};
+  t(t1) = FTri{{p, c, a}, {old.nbr[1], nbr_code(t2, 2), nbr_code(t0, 1)}, {old.seg[1], -1, -1}};
+  t(t2) = FTri{{p, a, b}, {old.nbr[2], nbr_code(t0, 2), nbr_code(t1, 1)}, {old.seg[2], -1, -1}};
+  relink(old.nbr[0], nbr_code(t0, 0));
+  relink(old.nbr[1], nbr_code(t1, 0));
+  relink(old.nbr[2], nbr_code(t2, 0));
+  out[0] = t0, out[1] = t1, out[2] = t2;
+}
+
+inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
+  const FTri old = t(ti);
+  const int c = old.v[i], a = old.v[next3(i)], b = old.v[prev3(i)];
+  const int na = old.nbr[next3(i)], sa = old.seg[next3(i)];  // edge (b, c), opposite a
+  const int nb = old.nbr[prev3(i)], sb = old.seg[prev3(i)];  // edge (c, a), opposite b
+  const int across = old.nbr[i];
+  const int t0 = ti, t1 = size();
+  if (across < 0) {
+    tris.resize(tris.size() + 1);
+    t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), -1}, {sa, -1, segment}};
+    t(t1) = FTri{{p, c, a}, {nb, -1, nbr_code(t0, 1)}, {sb, segment, -1}};
+    relink(na, nbr_code(t0, 0));
+    relink(nb, nbr_code(t1, 0));
+    out[0] = t0, out[1] = t1;
+    return 2;
+  }
+  // The neighbour (d, b, a): j is its index of the shared edge.
+  const int n0 = nbr_tri(across), j = nbr_edge(across), n1 = t1 + 1;
+  const FTri on = t(n0);
+  const int d = on.v[j];
+  const int mb = on.nbr[next3(j)], smb = on.seg[next3(j)];  // edge (a, d), opposite b
+  const int ma = on.nbr[prev3(j)], sma = on.seg[prev3(j)];  // edge (d, b), opposite a
+  tris.resize(tris.size() + 2);
+  t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(n1, 1)}, {sa, -1, segment}};
+  t(t1) = FTri{{p, c, a}, {nb, nbr_code(n0, 2), nbr_code(t0, 1)}, {sb, segment, -1}};
+  t(n0) = FTri{{p, a, d}, {mb, nbr_code(n1, 2), nbr_code(t1, 1)}, {smb, -1, segment}};
+  t(n1) = FTri{{p, d, b}, {ma, nbr_code(t0, 2), nbr_code(n0, 1)}, {sma, segment, -1}};
+  relink(na, nbr_code(t0, 0));
+  relink(nb, nbr_code(t1, 0));
+  relink(mb, nbr_code(n0, 0));
+  relink(ma, nbr_code(n1, 0));
+  out[0] = t0, out[1] = t1, out[2] = n0, out[3] = n1;
+  return 4;
+}
+
+inline int TriMesh::flip_edge0(int ti) {
+  const FTri old = t(ti);
+  const int p = old.v[0], a = old.v[1], b = old.v[2];
+  const int ni = nbr_tri(old.nbr[0]), j = nbr_edge(old.nbr[0]);
+  const FTri on = t(ni);  // (d, b, a) from index j
+  const int d = on.v[j];
+  const int m1 = on.nbr[next3(j)], s1 = on.seg[next3(j)];  // edge (a, d)
+  const int m2 = on.nbr[prev3(j)], s2 = on.seg[prev3(j)];  // edge (d, b)
+  // ti = (p, a, d), ni = (p, d, b).
+  t(ti) = FTri{{p, a, d}, {m1, nbr_code(ni, 2), old.nbr[2]}, {s1, -1, old.seg[2]}};
+  t(ni) = FTri{{p, d, b}, {m2, old.nbr[1], nbr_code(ti, 1)}, {s2, old.seg[1], -1}};
+  relink(m1, nbr_code(ti, 0));
+  relink(m2, nbr_code(ni, 0));
+  relink(old.nbr[1], nbr_code(ni, 1));
+  return ni;
+}
+
+}  // namespace lepp::fast
