@@ -1,5 +1,5 @@
-// The geometric checks of validate(), on a CGAL constrained Delaunay
-// triangulation with exact predicates (Epick): vertices on segments, overlaps,
+// The geometric checks of validate(), on a CGAL constrained triangulation
+// with exact predicates (Epick): vertices on segments, overlaps,
 // crossings, collinear input, hole points, the empty domain. O(n log n): the
 // triangulation finds what pair loops would (a crossing throws; only then is
 // the partner found by one scan).
@@ -10,7 +10,10 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -27,7 +30,8 @@ using Fb = CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_fa
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 // Segments may pass through vertices and overlap (no new point needed), but a
 // proper crossing throws: that is exactly the line between repair and error.
-using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+// Not Delaunay: no in-circle tests, which cocircular input makes expensive.
+using Cdt = CGAL::Constrained_triangulation_2<K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 using Vh = Cdt::Vertex_handle;
 using Fh = Cdt::Face_handle;
 
@@ -102,19 +106,29 @@ void flood(std::deque<Fh>& queue, int state) {
 void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
   const std::string& file = pslg.source;
   Cdt cdt;
+  std::vector<Vh> handle(pslg.vertices.size());
   {
-    std::vector<std::pair<K::Point_2, int>> points;
+    // Insert in spatial order (Hilbert sort), each located from the last: O(n log n).
+    std::vector<K::Point_2> points;
     points.reserve(pslg.vertices.size());
-    for (std::size_t i = 0; i < pslg.vertices.size(); ++i) points.emplace_back(to_cgal(pslg.vertices[i]), static_cast<int>(i));
-    cdt.insert(points.begin(), points.end());  // spatially sorted: O(n log n)
+    for (const Point& p : pslg.vertices) points.push_back(to_cgal(p));
+    std::vector<std::size_t> order(points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    using Traits = CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<K::Point_2>::type>;
+    CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
+    Fh hint;
+    for (std::size_t i : order) {
+      Vh v = cdt.insert(points[i], hint);
+      v->info() = static_cast<int>(i);
+      handle[i] = v;
+      hint = v->face();
+    }
   }
   if (cdt.dimension() < 2)
     throw InputError(file, 0,
                      fmt::format("fewer than three non-collinear vertices ({} distinct, all on one line): nothing to "
                                  "triangulate",
                                  pslg.vertices.size()));
-  std::vector<Vh> handle(pslg.vertices.size());
-  for (Vh v : cdt.finite_vertex_handles()) handle[static_cast<std::size_t>(v->info())] = v;
 
   for (std::size_t s = 0; s < pslg.segments.size(); ++s) {
     try {
