@@ -1,0 +1,119 @@
+// The exact certifier: decides whether a mesh is a correct (constrained)
+// Delaunay quality triangulation of a PSLG, with exact predicates on the double
+// coordinates. Works on any mesher's output (Triangle format), not only ours.
+// docs/CERTIFIER.md gives the exact test behind every check.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+#include "lepp/refine.h"
+
+namespace lepp::certify {
+
+// The six groups of checks.
+enum class Check { Topology, InputVertices, Constraints, Delaunay, MinAngle, Theorem2 };
+
+// Why a check failed: one value per distinct failure, so tests can assert the reason.
+enum class Reason {
+  // Topology
+  BadTriangle,               // a vertex id out of range or repeated in one triangle
+  NotCounterClockwise,       // orientation <= 0 (clockwise or degenerate)
+  DuplicateMeshVertex,       // two mesh vertices with identical coordinates
+  EdgeOverused,              // an edge in more than two triangles (overlap)
+  EdgeSameDirection,         // two triangles traverse an edge the same way (overlap or fold)
+  UnusedVertex,              // a Steiner vertex, or an input vertex inside the domain, in no triangle
+  BoundaryNotOnDomainBoundary,  // a mesh boundary edge inside the domain (gap) or facing the wrong way
+  MeshOutsideDomain,         // a triangle beyond a domain boundary segment (exterior or hole meshed)
+  DomainBoundaryUncovered,   // a domain boundary segment with no triangle along it
+  EulerCharacteristic,       // V - E + F differs from the domain's
+  // Input preservation
+  InputVertexMissing,        // an input vertex in the domain is not a mesh vertex
+  InputVertexMoved,          // mesh vertex i (i < input_vertices) differs from input vertex i
+  // Constrained edges
+  SegmentMissing,            // no chain of mesh edges from one endpoint of a segment to the other
+  SteinerOffSegment,         // a chain vertex farther from its segment than the tolerance
+  ConstrainedEdgeNotOnSegment,  // a mesh-listed constrained edge lies on no input segment chain
+  ConstrainedEdgeUnlisted,   // a chain edge the mesh does not list as constrained
+  ConstrainedEdgeWrongSegment,  // a listed edge tagged with another segment id than its chain's
+  // Delaunay
+  NotLocallyDelaunay,        // the opposite vertex strictly inside the circumcircle
+  // Minimum angle
+  AngleBelowTheta,           // sin^2(angle) < sin2_bracket(theta).lo: certainly below theta
+  AngleNotCertified,         // lo <= sin^2(angle) < hi: within one ulp of theta, not certified
+  UnimprovableNotInMesh,     // a listed unimprovable triangle is not a mesh triangle
+  UnimprovableRuleFails,     // a listed unimprovable triangle does not satisfy ALGORITHM.md section 8
+  // Theorem 2
+  TerminalAngleOver120,      // a terminal triangle of an unconstrained terminal edge with an angle > 120 degrees
+};
+
+Check check_of(Reason reason);
+const char* to_string(Check check);
+const char* to_string(Reason reason);
+
+// One violation: what failed, and the triangles, edges, vertices and coordinates involved.
+struct Violation {
+  Reason reason{};
+  std::string message;                     // one line, with ids (0-based) and coordinates
+  std::vector<int> triangles;              // indices into Mesh::triangles
+  std::vector<std::array<int, 2>> edges;   // mesh vertex ids
+  std::vector<int> vertices;               // mesh vertex ids (input ids for missing input vertices)
+  std::vector<Point> points;               // coordinates of the vertices above
+  int segment = -1;                        // input segment id when one is involved
+};
+
+struct Options {
+  double min_angle_deg = 0;   // 0: no angle check
+  bool conforming = false;    // every edge locally Delaunay, constrained ones too
+  bool theorem2 = true;       // check Theorem 2 on every unconstrained terminal edge
+  // Triangles the engine reported unimprovable (ALGORITHM.md section 8): exempt from
+  // the angle check when the rule holds for them, listed apart in the report.
+  std::vector<UnimprovableTriangle> unimprovable;
+  std::size_t max_listed_per_reason = 50;  // further violations are counted, not listed
+};
+
+// The statistics the paper plots (doubles, for display) and what was checked.
+struct Statistics {
+  std::size_t vertices = 0, triangles = 0, edges = 0;
+  double min_angle_deg = 0, avg_min_angle_deg = 0, min_area_quality = 0;
+  double shortest_edge = 0, shortest_edge_ratio = 0;  // shortest mesh edge, and / shortest input segment
+  double avg_lepp_size = 0;                           // over every triangle, terminal triangles included
+  std::size_t delaunay_edges_checked = 0;             // in-circle tests made
+  std::size_t constrained_edges = 0;                  // edges on input segment chains
+  std::size_t terminal_pairs_checked = 0;             // unconstrained terminal edges (Theorem 2)
+  std::size_t cocircular_edges = 0;                   // in-circle exactly zero (allowed)
+  long euler_mesh = 0, euler_domain = 0;
+};
+
+struct Report {
+  std::vector<Violation> violations;         // at most max_listed_per_reason per reason
+  std::vector<std::size_t> count_by_reason;  // every violation counted, indexed by Reason
+  std::vector<UnimprovableTriangle> unimprovable_accepted;  // listed by the engine, rule holds
+  Statistics stats;
+  double min_angle_deg = 0;  // the theta checked (0: none)
+
+  bool certified() const;
+  std::size_t count(Reason reason) const;
+  bool has(Reason reason) const { return count(reason) > 0; }
+};
+
+// The exact certificate. pslg must be validated (lepp::validate). Mesh vertex ids
+// need not equal input ids (input vertices are found by their coordinates) unless
+// mesh.input_vertices > 0, which promises that they do.
+Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options = {});
+
+// A human-readable report: verdict, statistics, each violation on one line.
+std::string format_report(const Report& report);
+
+// The tolerance of constrained-edge preservation (docs/CERTIFIER.md): a chain vertex P
+// of segment AB with k interior vertices passes iff
+//   |cross(B - A, P - A)| <= (k + 1) * ulp(M) * (|B.x - A.x| + |B.y - A.y|),
+// M = the largest |coordinate| of A and B, ulp(M) = 2^(exponent(M) - 52); i.e. P is
+// within (k + 1) ulp(M) per coordinate of the line AB. Exposed for tests.
+double segment_tolerance(const Point& a, const Point& b, std::size_t interior_vertices);
+
+}  // namespace lepp::certify

@@ -1,0 +1,662 @@
+// The checks, in the order docs/CERTIFIER.md lists them. Every decision is an
+// exact sign (exact.h); doubles appear only in messages and statistics.
+#include "lepp/certify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "exact.h"
+#include "expected_domain.h"
+#include "lepp/angle.h"
+#include "lepp/stats.h"
+
+namespace lepp::certify {
+namespace {
+
+constexpr std::size_t kReasons = static_cast<std::size_t>(Reason::TerminalAngleOver120) + 1;
+
+std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+std::string pt(const Point& p) { return fmt::format("({}, {})", p.x, p.y); }
+
+struct PointHash {
+  std::size_t operator()(const Point& p) const {
+    std::uint64_t x = 0, y = 0;
+    std::memcpy(&x, &p.x, sizeof x);
+    std::memcpy(&y, &p.y, sizeof y);
+    return std::hash<std::uint64_t>()(x * 0x9E3779B97F4A7C15ull ^ y);
+  }
+};
+
+class Certifier {
+ public:
+  Certifier(const Pslg& pslg, const Mesh& mesh, const Options& options, Report& report)
+      : pslg_(pslg), mesh_(mesh), opt_(options), report_(report) {}
+
+  void run() {
+    report_.count_by_reason.assign(kReasons, 0);
+    report_.min_angle_deg = opt_.min_angle_deg;
+    check_triangles();
+    build_edges();
+    check_duplicate_vertices();
+    domain_ = expected_domain(pslg_);
+    map_input_vertices();
+    check_unused_vertices();
+    build_adjacency();
+    find_chains();
+    check_listed_constrained_edges();
+    check_coverage();
+    check_euler();
+    compute_longest_edges();
+    check_delaunay();
+    if (opt_.min_angle_deg > 0) check_angles();
+    if (opt_.theorem2) check_theorem2();
+    compute_statistics();
+  }
+
+ private:
+  const Pslg& pslg_;
+  const Mesh& mesh_;
+  const Options& opt_;
+  Report& report_;
+  ExpectedDomain domain_;
+
+  std::vector<char> tri_ok_;           // ids valid (orientation may still be wrong)
+  std::vector<int> twin_;              // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
+  std::vector<std::array<int, 2>> edges_;  // unique edges (a < b) of valid triangles
+  std::vector<char> used_;
+  std::vector<int> input_to_mesh_;     // input vertex id -> mesh vertex id, -1 missing
+  std::vector<int> mesh_to_input_;     // mesh vertex id -> input vertex id, -1 Steiner
+  std::vector<int> adj_begin_, adj_;   // vertex adjacency (CSR)
+  std::unordered_map<std::uint64_t, int> listed_;  // listed constrained edge -> its segment id (-1 unknown)
+  std::unordered_map<std::uint64_t, int> chain_edge_;  // edge on a segment chain -> segment id
+  std::vector<std::vector<int>> chains_;  // per segment: mesh vertex ids from a to b, empty if not found
+  std::vector<int> vertex_segment_;    // Steiner vertex -> the segment whose chain it is inside, -1 none
+  std::vector<char> constrained_half_;
+  std::vector<signed char> longest_;   // per triangle: index i of its longest half-edge
+
+  const Point& P(int v) const { return mesh_.vertices[static_cast<std::size_t>(v)]; }
+  const Tri& T(std::size_t t) const { return mesh_.triangles[t]; }
+  int from(int h) const { return T(static_cast<std::size_t>(h / 3))[static_cast<std::size_t>(h % 3)]; }
+  int to(int h) const { return T(static_cast<std::size_t>(h / 3))[static_cast<std::size_t>((h % 3 + 1) % 3)]; }
+  int apex(int h) const { return T(static_cast<std::size_t>(h / 3))[static_cast<std::size_t>((h % 3 + 2) % 3)]; }
+
+  void add(Violation v) {
+    std::size_t r = static_cast<std::size_t>(v.reason);
+    if (report_.count_by_reason[r]++ < opt_.max_listed_per_reason) {
+      for (int id : v.vertices)
+        if (id >= 0 && static_cast<std::size_t>(id) < mesh_.vertices.size() && v.points.size() < v.vertices.size())
+          v.points.push_back(P(id));
+      report_.violations.push_back(std::move(v));
+    }
+  }
+  std::string tri_text(std::size_t t) const {
+    const Tri& x = T(t);
+    return fmt::format("triangle {} ({} {} {}: {} {} {})", t, x[0], x[1], x[2], pt(P(x[0])), pt(P(x[1])), pt(P(x[2])));
+  }
+
+  // --- 1. Topology -------------------------------------------------------
+  void check_triangles() {
+    const int n = static_cast<int>(mesh_.vertices.size());
+    tri_ok_.assign(mesh_.triangles.size(), 0);
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      const Tri& x = T(t);
+      bool ids = true;
+      for (int v : x) ids = ids && v >= 0 && v < n;
+      if (!ids || x[0] == x[1] || x[1] == x[2] || x[0] == x[2]) {
+        add({Reason::BadTriangle, fmt::format("triangle {} has vertex ids {} {} {} (out of range or repeated)", t, x[0], x[1], x[2]),
+             {static_cast<int>(t)}, {}, {}, {}, -1});
+        continue;
+      }
+      tri_ok_[t] = 1;
+      if (exact::orient(P(x[0]), P(x[1]), P(x[2])) <= 0)
+        add({Reason::NotCounterClockwise, fmt::format("{} is not strictly counter-clockwise", tri_text(t)),
+             {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
+    }
+  }
+
+  void build_edges() {
+    struct Half {
+      std::uint64_t key;
+      int h;
+    };
+    std::vector<Half> halves;
+    halves.reserve(mesh_.triangles.size() * 3);
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
+      if (tri_ok_[t])
+        for (int i = 0; i < 3; ++i) {
+          int h = static_cast<int>(3 * t) + i;
+          halves.push_back({edge_key(from(h), to(h)), h});
+        }
+    std::sort(halves.begin(), halves.end(), [](const Half& x, const Half& y) { return x.key < y.key || (x.key == y.key && x.h < y.h); });
+    twin_.assign(mesh_.triangles.size() * 3, -1);
+    used_.assign(mesh_.vertices.size(), 0);
+    for (std::size_t i = 0; i < halves.size();) {
+      std::size_t j = i;
+      while (j < halves.size() && halves[j].key == halves[i].key) ++j;
+      const int a = from(halves[i].h), b = to(halves[i].h);
+      edges_.push_back({std::min(a, b), std::max(a, b)});
+      used_[static_cast<std::size_t>(a)] = used_[static_cast<std::size_t>(b)] = 1;
+      if (j - i > 2) {
+        Violation v{Reason::EdgeOverused, fmt::format("edge {}-{} {} {} lies in {} triangles (overlap)", a, b, pt(P(a)), pt(P(b)), j - i),
+                    {}, {{a, b}}, {a, b}, {}, -1};
+        for (std::size_t k = i; k < j; ++k) {
+          v.triangles.push_back(halves[k].h / 3);
+          twin_[static_cast<std::size_t>(halves[k].h)] = -2;
+        }
+        add(std::move(v));
+      } else if (j - i == 2) {
+        const int h0 = halves[i].h, h1 = halves[i + 1].h;
+        if (from(h0) == from(h1)) {
+          add({Reason::EdgeSameDirection,
+               fmt::format("edge {}-{} {} {} is traversed the same way by triangles {} and {} (overlap or fold)", from(h0), to(h0),
+                           pt(P(from(h0))), pt(P(to(h0))), h0 / 3, h1 / 3),
+               {h0 / 3, h1 / 3}, {{from(h0), to(h0)}}, {from(h0), to(h0)}, {}, -1});
+          twin_[static_cast<std::size_t>(h0)] = twin_[static_cast<std::size_t>(h1)] = -2;
+        } else {
+          twin_[static_cast<std::size_t>(h0)] = h1;
+          twin_[static_cast<std::size_t>(h1)] = h0;
+        }
+      }
+      i = j;
+    }
+  }
+
+  void check_duplicate_vertices() {
+    std::vector<int> order(mesh_.vertices.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    auto less = [&](int a, int b) { return P(a).x < P(b).x || (P(a).x == P(b).x && P(a).y < P(b).y); };
+    std::sort(order.begin(), order.end(), less);
+    for (std::size_t i = 1; i < order.size(); ++i)
+      if (P(order[i - 1]) == P(order[i]))
+        add({Reason::DuplicateMeshVertex,
+             fmt::format("mesh vertices {} and {} have the same coordinates {}", order[i - 1], order[i], pt(P(order[i]))), {}, {},
+             {order[i - 1], order[i]}, {}, -1});
+  }
+
+  // --- 2. Input preservation ----------------------------------------------
+  void map_input_vertices() {
+    const std::size_t n = pslg_.vertices.size();
+    input_to_mesh_.assign(n, -1);
+    mesh_to_input_.assign(mesh_.vertices.size(), -1);
+    std::unordered_map<Point, int, PointHash> where;
+    where.reserve(mesh_.vertices.size() * 2);
+    for (std::size_t i = mesh_.vertices.size(); i-- > 0;) where[mesh_.vertices[i]] = static_cast<int>(i);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point& p = pslg_.vertices[i];
+      if (i < mesh_.input_vertices) {
+        // The mesh promises vertex i is input vertex i: coordinates must be bit-identical.
+        if (i >= mesh_.vertices.size() || mesh_.vertices[i] != p) {
+          add({Reason::InputVertexMoved,
+               fmt::format("input vertex {} {} is mesh vertex {} at {}", i, pt(p), i,
+                           i < mesh_.vertices.size() ? pt(mesh_.vertices[i]) : std::string("(absent)")),
+               {}, {}, {static_cast<int>(i)}, {p}, -1});
+        }
+        if (i < mesh_.vertices.size()) input_to_mesh_[i] = static_cast<int>(i);
+      } else {
+        auto it = where.find(p);
+        if (it != where.end()) input_to_mesh_[i] = it->second;
+      }
+      const int m = input_to_mesh_[i];
+      if (m >= 0) mesh_to_input_[static_cast<std::size_t>(m)] = static_cast<int>(i);
+      const bool moved = m >= 0 && mesh_.vertices[static_cast<std::size_t>(m)] != p;
+      const bool present = m >= 0 && used_[static_cast<std::size_t>(m)];
+      if (!present && !moved && domain_.vertex_in_domain[i])
+        add({Reason::InputVertexMissing, fmt::format("input vertex {} {} (in the domain) is not a vertex of any triangle", i, pt(p)),
+             {}, {}, {static_cast<int>(i)}, {p}, -1});
+    }
+    if (mesh_.input_vertices > n)
+      add({Reason::InputVertexMoved,
+           fmt::format("the mesh claims {} input vertices, the input has {}", mesh_.input_vertices, n), {}, {}, {}, {}, -1});
+  }
+
+  void check_unused_vertices() {
+    for (std::size_t v = 0; v < mesh_.vertices.size(); ++v) {
+      if (used_[v]) continue;
+      const int in = mesh_to_input_[v];
+      if (in >= 0 && !domain_.vertex_in_domain[static_cast<std::size_t>(in)]) continue;  // outside the domain: may be unused
+      if (in >= 0) continue;  // reported as InputVertexMissing
+      add({Reason::UnusedVertex, fmt::format("Steiner vertex {} {} is in no triangle", v, pt(P(static_cast<int>(v)))), {}, {},
+           {static_cast<int>(v)}, {}, -1});
+    }
+  }
+
+  // --- 3. Constrained edges ------------------------------------------------
+  void build_adjacency() {
+    adj_begin_.assign(mesh_.vertices.size() + 1, 0);
+    for (const auto& e : edges_) {
+      ++adj_begin_[static_cast<std::size_t>(e[0]) + 1];
+      ++adj_begin_[static_cast<std::size_t>(e[1]) + 1];
+    }
+    for (std::size_t i = 1; i < adj_begin_.size(); ++i) adj_begin_[i] += adj_begin_[i - 1];
+    adj_.assign(static_cast<std::size_t>(adj_begin_.back()), 0);
+    std::vector<int> fill(adj_begin_.begin(), adj_begin_.end() - 1);
+    for (const auto& e : edges_) {
+      adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = e[1];
+      adj_[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = e[0];
+    }
+    for (const ConstrainedEdge& e : mesh_.constrained_edges) listed_[edge_key(e.a, e.b)] = e.segment;
+  }
+
+  bool adjacent(int v, int w) const {
+    for (int i = adj_begin_[static_cast<std::size_t>(v)]; i < adj_begin_[static_cast<std::size_t>(v) + 1]; ++i)
+      if (adj_[static_cast<std::size_t>(i)] == w) return true;
+    return false;
+  }
+
+  // |cross(B - A, P - A)| <= tol * (|B.x - A.x| + |B.y - A.y|), exactly.
+  static bool within(const Point& a, const Point& b, const Point& p, double tol) {
+    return exact::sign([&](auto z) -> decltype(z) {
+             using NT = decltype(z);
+             NT dx = NT(b.x) - NT(a.x), dy = NT(b.y) - NT(a.y);
+             NT cross = dx * (NT(p.y) - NT(a.y)) - dy * (NT(p.x) - NT(a.x));
+             return CGAL::abs(cross) - NT(tol) * (CGAL::abs(dx) + CGAL::abs(dy));
+           }) <= 0;
+  }
+  // |cross(B - A, P - A)| <= 2^-20 |AB|^2: P within 2^-20 |AB| of the line (to follow listed edges).
+  static bool near_line(const Point& a, const Point& b, const Point& p) {
+    return exact::sign([&](auto z) -> decltype(z) {
+             using NT = decltype(z);
+             NT dx = NT(b.x) - NT(a.x), dy = NT(b.y) - NT(a.y);
+             NT cross = dx * (NT(p.y) - NT(a.y)) - dy * (NT(p.x) - NT(a.x));
+             return CGAL::abs(cross) - NT(std::ldexp(1.0, -20)) * (dx * dx + dy * dy);
+           }) <= 0;
+  }
+  // sign(dot(q - p, B - A)): q ahead of p along AB.
+  static int ahead(const Point& a, const Point& b, const Point& p, const Point& q) {
+    return exact::sign([&](auto z) -> decltype(z) {
+      using NT = decltype(z);
+      return (NT(q.x) - NT(p.x)) * (NT(b.x) - NT(a.x)) + (NT(q.y) - NT(p.y)) * (NT(b.y) - NT(a.y));
+    });
+  }
+
+  // Walks from a to b: at each vertex, the next vertex strictly ahead along AB and
+  // strictly before B, joined by a listed constrained edge near the line or within
+  // the loosest tolerance, the nearest one first. Empty when there is no chain.
+  std::vector<int> walk(int a, int b) const {
+    const Point &A = P(a), &B = P(b);
+    const double loose = segment_tolerance(A, B, mesh_.vertices.size());
+    std::vector<int> chain{a};
+    int v = a;
+    while (chain.size() <= mesh_.vertices.size()) {
+      if (adjacent(v, b)) {
+        chain.push_back(b);
+        return chain;
+      }
+      int best = -1;
+      for (int i = adj_begin_[static_cast<std::size_t>(v)]; i < adj_begin_[static_cast<std::size_t>(v) + 1]; ++i) {
+        const int w = adj_[static_cast<std::size_t>(i)];
+        if (ahead(A, B, P(v), P(w)) <= 0 || ahead(A, B, P(w), B) <= 0) continue;
+        const bool listed = listed_.count(edge_key(v, w)) && near_line(A, B, P(w));
+        if (!listed && !within(A, B, P(w), loose)) continue;
+        if (best < 0 || ahead(A, B, P(w), P(best)) > 0) best = w;
+      }
+      if (best < 0) break;
+      chain.push_back(best);
+      v = best;
+    }
+    chain.push_back(v);  // marks where the walk stopped
+    chain.insert(chain.begin(), -1);
+    return chain;
+  }
+
+  void find_chains() {
+    chains_.assign(pslg_.segments.size(), {});
+    vertex_segment_.assign(mesh_.vertices.size(), -1);
+    constrained_half_.assign(mesh_.triangles.size() * 3, 0);
+    for (std::size_t s = 0; s < pslg_.segments.size(); ++s) {
+      const int a = input_to_mesh_[static_cast<std::size_t>(pslg_.segments[s].a)];
+      const int b = input_to_mesh_[static_cast<std::size_t>(pslg_.segments[s].b)];
+      const bool in_domain = domain_.segment_sides[s] != 0;
+      if (a < 0 || b < 0 || !used_[static_cast<std::size_t>(a)] || !used_[static_cast<std::size_t>(b)]) {
+        if (in_domain)
+          add({Reason::SegmentMissing, fmt::format("segment {} ({}-{}): an endpoint is not in the mesh", s, pslg_.segments[s].a, pslg_.segments[s].b),
+               {}, {}, {}, {}, static_cast<int>(s)});
+        continue;
+      }
+      std::vector<int> chain = walk(a, b);
+      if (chain.front() == -1) {
+        const int stuck = chain.back();
+        if (in_domain)
+          add({Reason::SegmentMissing,
+               fmt::format("segment {} {}-{} {} {} is not a chain of mesh edges: no edge continues it from vertex {} {}", s, a, b,
+                           pt(P(a)), pt(P(b)), stuck, pt(P(stuck))),
+               {}, {}, {a, b, stuck}, {}, static_cast<int>(s)});
+        continue;
+      }
+      const std::size_t interior = chain.size() - 2;
+      const double tol = segment_tolerance(P(a), P(b), interior);
+      for (std::size_t k = 1; k + 1 < chain.size(); ++k) {
+        const int v = chain[k];
+        if (!within(P(a), P(b), P(v), tol))
+          add({Reason::SteinerOffSegment,
+               fmt::format("vertex {} {} of segment {} {}-{} {} {} is off the segment by more than the tolerance {} per coordinate", v,
+                           pt(P(v)), s, a, b, pt(P(a)), pt(P(b)), tol),
+               {}, {}, {v, a, b}, {}, static_cast<int>(s)});
+        if (mesh_to_input_[static_cast<std::size_t>(v)] < 0) vertex_segment_[static_cast<std::size_t>(v)] = static_cast<int>(s);
+      }
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) chain_edge_[edge_key(chain[k], chain[k + 1])] = static_cast<int>(s);
+      chains_[s] = std::move(chain);
+    }
+    for (std::size_t h = 0; h < constrained_half_.size(); ++h)
+      if (tri_ok_[h / 3] && chain_edge_.count(edge_key(from(static_cast<int>(h)), to(static_cast<int>(h))))) constrained_half_[h] = 1;
+    report_.stats.constrained_edges = chain_edge_.size();
+  }
+
+  void check_listed_constrained_edges() {
+    for (const ConstrainedEdge& e : mesh_.constrained_edges) {
+      auto it = chain_edge_.find(edge_key(e.a, e.b));
+      const bool ids = e.a >= 0 && e.b >= 0 && static_cast<std::size_t>(e.a) < mesh_.vertices.size() &&
+                       static_cast<std::size_t>(e.b) < mesh_.vertices.size();
+      if (it == chain_edge_.end()) {
+        add({Reason::ConstrainedEdgeNotOnSegment,
+             ids ? fmt::format("listed constrained edge {}-{} {} {} is on no input segment's chain", e.a, e.b, pt(P(e.a)), pt(P(e.b)))
+                 : fmt::format("listed constrained edge {}-{} has a vertex id out of range", e.a, e.b),
+             {}, {{e.a, e.b}}, ids ? std::vector<int>{e.a, e.b} : std::vector<int>{}, {}, e.segment});
+      } else if (e.segment >= 0 && e.segment != it->second) {
+        add({Reason::ConstrainedEdgeWrongSegment,
+             fmt::format("constrained edge {}-{} is tagged segment {} but lies on segment {}", e.a, e.b, e.segment, it->second), {},
+             {{e.a, e.b}}, {e.a, e.b}, {}, it->second});
+      }
+    }
+    if (mesh_.constrained_edges.empty()) return;  // the mesh lists none: found by geometry only
+    for (const auto& [key, s] : chain_edge_)
+      if (!listed_.count(key)) {
+        const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+        add({Reason::ConstrainedEdgeUnlisted,
+             fmt::format("edge {}-{} {} {} lies on segment {} but the mesh does not list it as constrained", a, b, pt(P(a)), pt(P(b)), s),
+             {}, {{a, b}}, {a, b}, {}, s});
+      }
+  }
+
+  // Coverage: with every triangle CCW and every interior edge used once each way,
+  // the number of triangles over a point is the winding number of the mesh's
+  // boundary edges; these checks make that boundary the domain's (docs/CERTIFIER.md).
+  void check_coverage() {
+    std::unordered_map<std::uint64_t, std::array<int, 2>> halves_of_chain;  // chain edge -> (half a->b, half b->a)
+    for (std::size_t h = 0; h < twin_.size(); ++h) {
+      if (!tri_ok_[h / 3]) continue;
+      const int x = from(static_cast<int>(h)), y = to(static_cast<int>(h));
+      auto it = chain_edge_.find(edge_key(x, y));
+      if (it == chain_edge_.end()) {
+        if (twin_[h] == -1)
+          add({Reason::BoundaryNotOnDomainBoundary,
+               fmt::format("edge {}-{} {} {} of {} has no triangle on its other side but lies on no segment (a gap)", x, y, pt(P(x)),
+                           pt(P(y)), tri_text(h / 3)),
+               {static_cast<int>(h / 3)}, {{x, y}}, {x, y}, {}, -1});
+        continue;
+      }
+      auto& pair = halves_of_chain.try_emplace(it->first, std::array<int, 2>{-1, -1}).first->second;
+      pair[x < y ? 0 : 1] = static_cast<int>(h);
+    }
+    for (std::size_t s = 0; s < chains_.size(); ++s) {
+      const std::vector<int>& chain = chains_[s];
+      const unsigned char sides = domain_.segment_sides[s];
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+        const int u = chain[k], w = chain[k + 1];
+        auto it = halves_of_chain.find(edge_key(u, w));
+        const std::array<int, 2> pair = it == halves_of_chain.end() ? std::array<int, 2>{-1, -1} : it->second;
+        const int left = pair[u < w ? 0 : 1], right = pair[u < w ? 1 : 0];  // half u->w has its triangle on the left
+        auto side = [&](int half, bool domain, const char* name) {
+          if (domain && half < 0)
+            add({Reason::DomainBoundaryUncovered,
+                 fmt::format("no triangle on the {} of edge {}-{} {} {} of segment {}, a domain side (a gap)", name, u, w, pt(P(u)),
+                             pt(P(w)), s),
+                 {}, {{u, w}}, {u, w}, {}, static_cast<int>(s)});
+          if (!domain && half >= 0)
+            add({Reason::MeshOutsideDomain,
+                 fmt::format("{} lies on the {} of segment {} edge {}-{}, outside the domain (exterior or hole)", tri_text(half / 3), name,
+                             s, u, w),
+                 {half / 3}, {{u, w}}, {u, w}, {}, static_cast<int>(s)});
+        };
+        side(left, sides & ExpectedDomain::Left, "left");
+        side(right, sides & ExpectedDomain::Right, "right");
+      }
+    }
+  }
+
+  void check_euler() {
+    long v = 0;
+    for (char u : used_) v += u;
+    std::size_t f = 0;
+    for (char ok : tri_ok_) f += ok;
+    const long euler = v - static_cast<long>(edges_.size()) + static_cast<long>(f);
+    report_.stats.euler_mesh = euler;
+    report_.stats.euler_domain = domain_.euler;
+    if (euler != domain_.euler)
+      add({Reason::EulerCharacteristic,
+           fmt::format("V - E + F = {} - {} + {} = {}, the domain's is {}", v, edges_.size(), f, euler, domain_.euler), {}, {}, {}, {}, -1});
+  }
+
+  // --- 4. Delaunay ------------------------------------------------------------
+  void check_delaunay() {
+    for (std::size_t h = 0; h < twin_.size(); ++h) {
+      const int g = twin_[h];
+      if (g < static_cast<int>(h)) continue;  // each interior edge once; boundary and bad edges skipped
+      if (constrained_half_[h] && !opt_.conforming) continue;
+      const int a = from(static_cast<int>(h)), b = to(static_cast<int>(h)), c = apex(static_cast<int>(h)), d = apex(g);
+      ++report_.stats.delaunay_edges_checked;
+      if (exact::orient(P(a), P(b), P(c)) <= 0) continue;  // reported; in-circle meaningless
+      const int side = exact::incircle(P(a), P(b), P(c), P(d));
+      if (side == 0) ++report_.stats.cocircular_edges;
+      if (side > 0)
+        add({Reason::NotLocallyDelaunay,
+             fmt::format("{}edge {}-{} {} {} is not locally Delaunay: vertex {} {} is strictly inside the circumcircle of {}",
+                         constrained_half_[h] ? "constrained " : "", a, b, pt(P(a)), pt(P(b)), d, pt(P(d)), tri_text(h / 3)),
+             {static_cast<int>(h / 3), g / 3}, {{a, b}}, {a, b, c, d}, {}, -1});
+    }
+  }
+
+  // --- 5. Minimum angle ---------------------------------------------------
+  // Edge order (ALGORITHM.md section 3): (squared length, -min id, -max id); true iff e > f.
+  bool longer(int a, int b, int c, int d) const {
+    const int s = exact::compare_squared_length(P(a), P(b), P(c), P(d));
+    if (s != 0) return s > 0;
+    const int e0 = std::min(a, b), e1 = std::max(a, b), f0 = std::min(c, d), f1 = std::max(c, d);
+    return e0 != f0 ? e0 < f0 : e1 < f1;
+  }
+
+  void compute_longest_edges() {
+    longest_.assign(mesh_.triangles.size(), 0);
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      int best = 0;
+      for (int i = 1; i < 3; ++i) {
+        const int h = static_cast<int>(3 * t) + i, b = static_cast<int>(3 * t) + best;
+        if (longer(from(h), to(h), from(b), to(b))) best = i;
+      }
+      longest_[t] = static_cast<signed char>(best);
+    }
+  }
+
+  std::vector<int> segments_of(int v) const {
+    std::vector<int> out;
+    const int in = mesh_to_input_[static_cast<std::size_t>(v)];
+    if (in >= 0) {
+      for (std::size_t s = 0; s < pslg_.segments.size(); ++s)
+        if (pslg_.segments[s].a == in || pslg_.segments[s].b == in) out.push_back(static_cast<int>(s));
+    } else if (vertex_segment_[static_cast<std::size_t>(v)] >= 0) {
+      out.push_back(vertex_segment_[static_cast<std::size_t>(v)]);
+    }
+    return out;
+  }
+
+  // ALGORITHM.md section 8, checked on the mesh itself.
+  bool unimprovable_rule_holds(std::size_t t, double s_hi) const {
+    const int shortest_half = [&] {
+      int best = 0;
+      for (int i = 1; i < 3; ++i) {
+        const int h = static_cast<int>(3 * t) + i, b = static_cast<int>(3 * t) + best;
+        if (longer(from(b), to(b), from(h), to(h))) best = i;
+      }
+      return static_cast<int>(3 * t) + best;
+    }();
+    const int p = from(shortest_half), q = to(shortest_half);
+    for (int s1 : segments_of(p))
+      for (int s2 : segments_of(q)) {
+        if (s1 == s2) continue;
+        const Segment &x = pslg_.segments[static_cast<std::size_t>(s1)], &y = pslg_.segments[static_cast<std::size_t>(s2)];
+        for (int v_in : {x.a, x.b}) {
+          if (v_in != y.a && v_in != y.b) continue;
+          const int v = input_to_mesh_[static_cast<std::size_t>(v_in)];
+          if (v < 0 || v == p || v == q) continue;
+          const Point& V = pslg_.vertices[static_cast<std::size_t>(v_in)];
+          const Point& U = pslg_.vertices[static_cast<std::size_t>(x.a == v_in ? x.b : x.a)];
+          const Point& W = pslg_.vertices[static_cast<std::size_t>(y.a == v_in ? y.b : y.a)];
+          if (exact::acute_angle_sin2_below(V, U, W, s_hi)) return true;
+        }
+      }
+    return false;
+  }
+
+  void check_angles() {
+    const Sin2Bracket bracket = sin2_bracket(opt_.min_angle_deg);
+    auto sorted = [](Tri x) {
+      std::sort(x.begin(), x.end());
+      return x;
+    };
+    std::map<Tri, std::size_t> listed;  // sorted triple -> index in options.unimprovable
+    for (std::size_t i = 0; i < opt_.unimprovable.size(); ++i) listed.emplace(sorted(opt_.unimprovable[i].triangle), i);
+    std::vector<char> found(opt_.unimprovable.size(), 0);
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      const Tri& x = T(t);
+      int worst = -1;  // corner with an angle below theta (the smallest such angle is not needed)
+      bool certainly = false;
+      for (int i = 0; i < 3; ++i) {
+        const Point &o = P(x[static_cast<std::size_t>(i)]), &p = P(x[static_cast<std::size_t>((i + 1) % 3)]),
+                    &q = P(x[static_cast<std::size_t>((i + 2) % 3)]);
+        if (exact::acute_angle_sin2_below(o, p, q, bracket.hi)) {
+          const bool below = exact::acute_angle_sin2_below(o, p, q, bracket.lo);
+          if (worst < 0 || (below && !certainly)) {
+            worst = i;
+            certainly = below;
+          }
+        }
+      }
+      if (worst < 0) continue;
+      auto it = listed.find(sorted(x));
+      if (it != listed.end()) {
+        const std::size_t listed_index = it->second;
+        found[listed_index] = 1;
+        if (unimprovable_rule_holds(t, bracket.hi)) {
+          report_.unimprovable_accepted.push_back(opt_.unimprovable[listed_index]);
+          continue;
+        }
+        add({Reason::UnimprovableRuleFails,
+             fmt::format("{} is listed unimprovable but its shortest edge does not join two segments meeting at an input angle below {}",
+                         tri_text(t), opt_.min_angle_deg),
+             {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
+        continue;
+      }
+      const double deg = min_angle_deg(P(x[0]), P(x[1]), P(x[2]));
+      add({certainly ? Reason::AngleBelowTheta : Reason::AngleNotCertified,
+           fmt::format("{} has an angle at vertex {} {} theta = {} (about {} degrees)", tri_text(t), x[static_cast<std::size_t>(worst)],
+                       certainly ? "below" : "within one ulp of", opt_.min_angle_deg, deg),
+           {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
+    }
+    // Listed but not skinny is harmless for the angle check; listed but absent is not.
+    std::set<Tri> triangles;
+    if (std::find(found.begin(), found.end(), 0) != found.end())
+      for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) triangles.insert(sorted(T(t)));
+    for (std::size_t i = 0; i < opt_.unimprovable.size(); ++i) {
+      const Tri& x = opt_.unimprovable[i].triangle;
+      if (!found[i] && !triangles.count(sorted(x)))
+        add({Reason::UnimprovableNotInMesh,
+             fmt::format("listed unimprovable triangle {} {} {} is not a triangle of the mesh", x[0], x[1], x[2]), {}, {}, {}, {}, -1});
+    }
+  }
+
+  // --- 6. Theorem 2 and the Lepp statistic -----------------------------------
+  int longest_half(std::size_t t) const { return static_cast<int>(3 * t) + longest_[t]; }
+
+  void check_theorem2() {
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      const int h = longest_half(t), g = twin_[static_cast<std::size_t>(h)];
+      if (g < h || constrained_half_[static_cast<std::size_t>(h)]) continue;  // once per pair; boundary, bad, constrained skipped
+      if (longest_half(static_cast<std::size_t>(g / 3)) != g) continue;       // not terminal
+      ++report_.stats.terminal_pairs_checked;
+      const int a = from(h), b = to(h);
+      for (int half : {h, g}) {
+        const int c = apex(half);
+        if (exact::angle_over_120(P(c), P(a), P(b))) {
+          const Point &C = P(c), &A = P(a), &B = P(b);
+          const double deg = std::atan2(std::abs((A.x - C.x) * (B.y - C.y) - (A.y - C.y) * (B.x - C.x)),
+                                        (A.x - C.x) * (B.x - C.x) + (A.y - C.y) * (B.y - C.y)) *
+                             180 / M_PI;
+          add({Reason::TerminalAngleOver120,
+               fmt::format("terminal edge {}-{} {} {} (triangles {} and {}): the angle at {} {} is over 120 degrees (about {})", a, b,
+                           pt(A), pt(B), h / 3, g / 3, c, pt(C), deg),
+               {h / 3, g / 3}, {{a, b}}, {a, b, c}, {}, -1});
+        }
+      }
+    }
+  }
+
+  double average_lepp_size() const {
+    std::size_t total = 0, count = 0;
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      ++count;
+      std::size_t cur = t, size = 1;
+      while (size <= mesh_.triangles.size()) {
+        const int h = longest_half(cur), g = twin_[static_cast<std::size_t>(h)];
+        if (g < 0 || constrained_half_[static_cast<std::size_t>(h)]) break;  // constrained or boundary terminal edge
+        const std::size_t next = static_cast<std::size_t>(g / 3);
+        ++size;
+        if (longest_half(next) == g) break;  // terminal pair: t2 counted
+        cur = next;
+      }
+      total += size;
+    }
+    return count ? static_cast<double>(total) / static_cast<double>(count) : 0;
+  }
+
+  void compute_statistics() {
+    Statistics& s = report_.stats;
+    Mesh valid;
+    valid.vertices = mesh_.vertices;
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
+      if (tri_ok_[t]) valid.triangles.push_back(T(t));
+    const MeshStats m = mesh_stats(valid, pslg_);
+    s.vertices = mesh_.vertices.size();
+    s.triangles = mesh_.triangles.size();
+    s.edges = edges_.size();
+    s.min_angle_deg = m.min_angle_deg;
+    s.avg_min_angle_deg = m.avg_min_angle_deg;
+    s.min_area_quality = m.min_area_quality;
+    s.shortest_edge = m.shortest_edge;
+    s.shortest_edge_ratio = m.shortest_edge_ratio;
+    s.avg_lepp_size = average_lepp_size();
+  }
+};
+
+}  // namespace
+
+double segment_tolerance(const Point& a, const Point& b, std::size_t interior_vertices) {
+  const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)});
+  if (m == 0) return 0;
+  int exponent = 0;
+  std::frexp(m, &exponent);  // m = f * 2^exponent, f in [0.5, 1): ulp(m) = 2^(exponent - 53)
+  const double ulp = std::ldexp(1.0, std::max(exponent - 53, -1074));
+  return static_cast<double>(interior_vertices + 1) * ulp;
+}
+
+Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
+  Report report;
+  Certifier(pslg, mesh, options, report).run();
+  return report;
+}
+
+}  // namespace lepp::certify

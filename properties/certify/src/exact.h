@@ -1,0 +1,82 @@
+// Exact signs of small polynomials in double coordinates: an interval filter,
+// then exact rationals when the interval straddles zero. Private to the certifier.
+#pragma once
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Interval_nt.h>
+
+#include "lepp/pslg.h"
+
+namespace lepp::certify::exact {
+
+// f is a generic callable taking a number-type tag (a value of type NT) and
+// returning an NT: evaluated on intervals first, exactly only if needed. Declare
+// the return type (-> decltype(z)): Boost's rationals return expression templates
+// that would outlive the lambda's locals.
+template <class F>
+int sign(const F& f) {
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const CGAL::Interval_nt<false> r = f(CGAL::Interval_nt<false>(0));
+    if (r.inf() > 0) return 1;
+    if (r.sup() < 0) return -1;
+    if (r.inf() == 0 && r.sup() == 0) return 0;
+  }
+  return static_cast<int>(CGAL::sign(f(CGAL::Exact_rational(0))));
+}
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+inline K::Point_2 cg(const Point& p) { return {p.x, p.y}; }
+
+// orientation(a, b, c): +1 counter-clockwise, 0 collinear, -1 clockwise (filtered, exact).
+inline int orient(const Point& a, const Point& b, const Point& c) {
+  return static_cast<int>(CGAL::orientation(cg(a), cg(b), cg(c)));
+}
+
+// +1 iff d lies strictly inside the circle through the CCW triangle abc.
+inline int incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+  return static_cast<int>(CGAL::side_of_oriented_circle(cg(a), cg(b), cg(c), cg(d)));
+}
+
+// sign(|ab|^2 - |cd|^2)
+inline int compare_squared_length(const Point& a, const Point& b, const Point& c, const Point& d) {
+  return sign([&](auto z) -> decltype(z) {
+    using NT = decltype(z);
+    NT ux = NT(b.x) - NT(a.x), uy = NT(b.y) - NT(a.y), vx = NT(d.x) - NT(c.x), vy = NT(d.y) - NT(c.y);
+    return (ux * ux + uy * uy) - (vx * vx + vy * vy);
+  });
+}
+
+// sign(dot(p - o, q - o))
+inline int sign_dot(const Point& o, const Point& p, const Point& q) {
+  return sign([&](auto z) -> decltype(z) {
+    using NT = decltype(z);
+    return (NT(p.x) - NT(o.x)) * (NT(q.x) - NT(o.x)) + (NT(p.y) - NT(o.y)) * (NT(q.y) - NT(o.y));
+  });
+}
+
+// The angle at c of triangle (c, a, b) is > 120 degrees:
+// dot(ca, cb) < 0 and 4 dot^2 > |ca|^2 |cb|^2.
+inline bool angle_over_120(const Point& c, const Point& a, const Point& b) {
+  if (sign_dot(c, a, b) >= 0) return false;
+  return sign([&](auto z) -> decltype(z) {
+           using NT = decltype(z);
+           NT ux = NT(a.x) - NT(c.x), uy = NT(a.y) - NT(c.y), vx = NT(b.x) - NT(c.x), vy = NT(b.y) - NT(c.y);
+           NT dot = ux * vx + uy * vy;
+           return NT(4) * dot * dot - (ux * ux + uy * uy) * (vx * vx + vy * vy);
+         }) > 0;
+}
+
+// The angle at o between p and q is acute and its sin^2 is below s:
+// dot > 0 and cross^2 < s |op|^2 |oq|^2, exactly (s is a double, taken as the rational it is).
+inline bool acute_angle_sin2_below(const Point& o, const Point& p, const Point& q, double s) {
+  if (sign_dot(o, p, q) <= 0) return false;
+  return sign([&](auto z) -> decltype(z) {
+           using NT = decltype(z);
+           NT ux = NT(p.x) - NT(o.x), uy = NT(p.y) - NT(o.y), vx = NT(q.x) - NT(o.x), vy = NT(q.y) - NT(o.y);
+           NT cross = ux * vy - uy * vx;
+           return cross * cross - NT(s) * (ux * ux + uy * uy) * (vx * vx + vy * vy);
+         }) < 0;
+}
+
+}  // namespace lepp::certify::exact

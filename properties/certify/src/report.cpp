@@ -1,0 +1,115 @@
+// Names of checks and reasons, the verdict, and the human-readable report.
+#include <fmt/format.h>
+
+#include "lepp/certify.h"
+
+namespace lepp::certify {
+
+Check check_of(Reason reason) {
+  switch (reason) {
+    case Reason::BadTriangle:
+    case Reason::NotCounterClockwise:
+    case Reason::DuplicateMeshVertex:
+    case Reason::EdgeOverused:
+    case Reason::EdgeSameDirection:
+    case Reason::UnusedVertex:
+    case Reason::BoundaryNotOnDomainBoundary:
+    case Reason::MeshOutsideDomain:
+    case Reason::DomainBoundaryUncovered:
+    case Reason::EulerCharacteristic: return Check::Topology;
+    case Reason::InputVertexMissing:
+    case Reason::InputVertexMoved: return Check::InputVertices;
+    case Reason::SegmentMissing:
+    case Reason::SteinerOffSegment:
+    case Reason::ConstrainedEdgeNotOnSegment:
+    case Reason::ConstrainedEdgeUnlisted:
+    case Reason::ConstrainedEdgeWrongSegment: return Check::Constraints;
+    case Reason::NotLocallyDelaunay: return Check::Delaunay;
+    case Reason::AngleBelowTheta:
+    case Reason::AngleNotCertified:
+    case Reason::UnimprovableNotInMesh:
+    case Reason::UnimprovableRuleFails: return Check::MinAngle;
+    case Reason::TerminalAngleOver120: return Check::Theorem2;
+  }
+  return Check::Topology;
+}
+
+const char* to_string(Check check) {
+  switch (check) {
+    case Check::Topology: return "topology";
+    case Check::InputVertices: return "input-vertices";
+    case Check::Constraints: return "constrained-edges";
+    case Check::Delaunay: return "delaunay";
+    case Check::MinAngle: return "min-angle";
+    case Check::Theorem2: return "theorem-2";
+  }
+  return "?";
+}
+
+const char* to_string(Reason reason) {
+  switch (reason) {
+    case Reason::BadTriangle: return "bad-triangle";
+    case Reason::NotCounterClockwise: return "not-counter-clockwise";
+    case Reason::DuplicateMeshVertex: return "duplicate-mesh-vertex";
+    case Reason::EdgeOverused: return "edge-overused";
+    case Reason::EdgeSameDirection: return "edge-same-direction";
+    case Reason::UnusedVertex: return "unused-vertex";
+    case Reason::BoundaryNotOnDomainBoundary: return "boundary-not-on-domain-boundary";
+    case Reason::MeshOutsideDomain: return "mesh-outside-domain";
+    case Reason::DomainBoundaryUncovered: return "domain-boundary-uncovered";
+    case Reason::EulerCharacteristic: return "euler-characteristic";
+    case Reason::InputVertexMissing: return "input-vertex-missing";
+    case Reason::InputVertexMoved: return "input-vertex-moved";
+    case Reason::SegmentMissing: return "segment-missing";
+    case Reason::SteinerOffSegment: return "steiner-off-segment";
+    case Reason::ConstrainedEdgeNotOnSegment: return "constrained-edge-not-on-segment";
+    case Reason::ConstrainedEdgeUnlisted: return "constrained-edge-unlisted";
+    case Reason::ConstrainedEdgeWrongSegment: return "constrained-edge-wrong-segment";
+    case Reason::NotLocallyDelaunay: return "not-locally-delaunay";
+    case Reason::AngleBelowTheta: return "angle-below-theta";
+    case Reason::AngleNotCertified: return "angle-not-certified";
+    case Reason::UnimprovableNotInMesh: return "unimprovable-not-in-mesh";
+    case Reason::UnimprovableRuleFails: return "unimprovable-rule-fails";
+    case Reason::TerminalAngleOver120: return "terminal-angle-over-120";
+  }
+  return "?";
+}
+
+bool Report::certified() const {
+  for (std::size_t c : count_by_reason)
+    if (c) return false;
+  return true;
+}
+
+std::size_t Report::count(Reason reason) const {
+  const auto r = static_cast<std::size_t>(reason);
+  return r < count_by_reason.size() ? count_by_reason[r] : 0;
+}
+
+std::string format_report(const Report& report) {
+  const Statistics& s = report.stats;
+  std::string out;
+  std::size_t total = 0;
+  for (std::size_t c : report.count_by_reason) total += c;
+  out += report.certified() ? "CERTIFIED\n" : fmt::format("NOT CERTIFIED: {} violations\n", total);
+  out += fmt::format("vertices {}  triangles {}  edges {}  euler {} (domain {})\n", s.vertices, s.triangles, s.edges, s.euler_mesh,
+                     s.euler_domain);
+  out += fmt::format("min angle {:.4f} deg  avg min angle {:.4f} deg  min area quality {:.4f}\n", s.min_angle_deg, s.avg_min_angle_deg,
+                     s.min_area_quality);
+  out += fmt::format("shortest edge {:.6g} ({:.6g} x shortest input segment)  avg Lepp size {:.4f}\n", s.shortest_edge,
+                     s.shortest_edge_ratio, s.avg_lepp_size);
+  out += fmt::format("checked: {} in-circle tests ({} cocircular), {} constrained edges, {} terminal pairs (Theorem 2){}\n",
+                     s.delaunay_edges_checked, s.cocircular_edges, s.constrained_edges, s.terminal_pairs_checked,
+                     report.min_angle_deg > 0 ? fmt::format(", min angle >= {}", report.min_angle_deg) : std::string());
+  if (!report.unimprovable_accepted.empty())
+    out += fmt::format("{} triangles below theta accepted as unimprovable (small input angle, rule holds)\n",
+                       report.unimprovable_accepted.size());
+  for (std::size_t r = 0; r < report.count_by_reason.size(); ++r)
+    if (report.count_by_reason[r])
+      out += fmt::format("  {} x {} ({})\n", report.count_by_reason[r], to_string(static_cast<Reason>(r)),
+                         to_string(check_of(static_cast<Reason>(r))));
+  for (const Violation& v : report.violations) out += fmt::format("{}: {}\n", to_string(v.reason), v.message);
+  return out;
+}
+
+}  // namespace lepp::certify

@@ -1,0 +1,343 @@
+// Every check of the certifier must be able to fail: a correct mesh is broken in
+// one way and the certifier must reject it for that reason (and accept the
+// unbroken mesh, so the rejection is the mutation's doing).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "cgal_mesh.h"
+#include "lepp/certify.h"
+#include "lepp/validate.h"
+#include "test_pslgs.h"
+
+namespace lepp {
+namespace {
+
+using certify::Reason;
+
+certify::Report run(const Pslg& pslg, const Mesh& mesh, double theta = 0) {
+  certify::Options options;
+  options.min_angle_deg = theta;
+  return certify::certify(pslg, mesh, options);
+}
+
+void expect_certified(const certify::Report& r) { EXPECT_TRUE(r.certified()) << certify::format_report(r); }
+
+void expect_rejected_for(const certify::Report& r, Reason reason) {
+  EXPECT_FALSE(r.certified());
+  EXPECT_TRUE(r.has(reason)) << "expected " << certify::to_string(reason) << "\n" << certify::format_report(r);
+  // The listed violation names what is involved.
+  auto it = std::find_if(r.violations.begin(), r.violations.end(), [&](const certify::Violation& v) { return v.reason == reason; });
+  ASSERT_NE(it, r.violations.end());
+  EXPECT_FALSE(it->message.empty());
+}
+
+// Triangles (a,b,c) and (b,a,d) sharing edge ab; the flip makes (a,d,c), (d,b,c).
+struct Pair {
+  std::size_t t1, t2;
+  int a, b, c, d;
+};
+
+std::optional<Pair> find_pair(const Mesh& m, int a, int b) {
+  std::optional<std::size_t> t1, t2;
+  int c = -1, d = -1;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Tri& x = m.triangles[t];
+      if (x[static_cast<std::size_t>(i)] == a && x[static_cast<std::size_t>((i + 1) % 3)] == b) t1 = t, c = x[static_cast<std::size_t>((i + 2) % 3)];
+      if (x[static_cast<std::size_t>(i)] == b && x[static_cast<std::size_t>((i + 1) % 3)] == a) t2 = t, d = x[static_cast<std::size_t>((i + 2) % 3)];
+    }
+  if (!t1 || !t2) return std::nullopt;
+  return Pair{*t1, *t2, a, b, c, d};
+}
+
+double orient(const Point& a, const Point& b, const Point& c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+
+bool flippable(const Mesh& m, const Pair& p) {
+  const auto& V = m.vertices;
+  auto P = [&](int i) { return V[static_cast<std::size_t>(i)]; };
+  // Integer coordinates in these tests: the double orientation is exact.
+  return orient(P(p.a), P(p.d), P(p.c)) > 0 && orient(P(p.d), P(p.b), P(p.c)) > 0;
+}
+
+void flip(Mesh& m, const Pair& p) {
+  m.triangles[p.t1] = {p.a, p.d, p.c};
+  m.triangles[p.t2] = {p.d, p.b, p.c};
+}
+
+bool is_constrained(const Mesh& m, int a, int b) {
+  for (const ConstrainedEdge& e : m.constrained_edges)
+    if ((e.a == a && e.b == b) || (e.a == b && e.b == a)) return true;
+  return false;
+}
+
+TEST(CertifyAccepts, CgalCdtOfTestInputs) {
+  for (const Pslg& p : {test::square_with_crack(), test::square_with_hole()}) expect_certified(run(p, test::cgal_cdt(p)));
+}
+
+TEST(CertifyRejects, FlippedNonDelaunayDiagonal) {
+  const Pslg p = test::square_with_crack();
+  const Mesh good = test::cgal_cdt(p);
+  expect_certified(run(p, good));
+  bool done = false;
+  for (const Tri& t : good.triangles) {
+    for (int i = 0; i < 3 && !done; ++i) {
+      const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+      auto pair = find_pair(good, a, b);
+      if (!pair || is_constrained(good, a, b) || !flippable(good, *pair)) continue;
+      Mesh bad = good;
+      flip(bad, *pair);
+      const auto r = run(p, bad);
+      if (r.stats.cocircular_edges > 0 && !r.has(Reason::NotLocallyDelaunay)) continue;  // a cocircular quad: both diagonals Delaunay
+      expect_rejected_for(r, Reason::NotLocallyDelaunay);
+      EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u);
+      done = true;
+    }
+    if (done) break;
+  }
+  EXPECT_TRUE(done) << "no flippable unconstrained edge found";
+}
+
+TEST(CertifyRejects, FlippedConstrainedEdge) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  const Segment crack = p.segments.back();  // the interior segment
+  auto pair = find_pair(bad, crack.a, crack.b);
+  if (!pair) pair = find_pair(bad, crack.b, crack.a);
+  ASSERT_TRUE(pair);
+  ASSERT_TRUE(flippable(bad, *pair));
+  flip(bad, *pair);
+  // The mesh still lists the crack as constrained: the certifier must see it is gone.
+  expect_rejected_for(run(p, bad), Reason::SegmentMissing);
+  // Also when the mesh lists no constrained edges (found by geometry alone).
+  bad.constrained_edges.clear();
+  expect_rejected_for(run(p, bad), Reason::SegmentMissing);
+}
+
+TEST(CertifyRejects, ClockwiseTriangle) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  std::swap(bad.triangles[3][1], bad.triangles[3][2]);
+  expect_rejected_for(run(p, bad), Reason::NotCounterClockwise);
+}
+
+TEST(CertifyRejects, MissingTriangle) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  // An interior triangle (no edge on the boundary square) leaves a gap.
+  auto on_boundary = [&](const Tri& t) {
+    for (int v : t) {
+      const Point& q = bad.vertices[static_cast<std::size_t>(v)];
+      if (q.x == 0 || q.x == 10 || q.y == 0 || q.y == 10) return true;
+    }
+    return false;
+  };
+  auto it = std::find_if(bad.triangles.begin(), bad.triangles.end(), [&](const Tri& t) { return !on_boundary(t); });
+  ASSERT_NE(it, bad.triangles.end());
+  bad.triangles.erase(it);
+  const auto r = run(p, bad);
+  expect_rejected_for(r, Reason::BoundaryNotOnDomainBoundary);
+  EXPECT_TRUE(r.has(Reason::EulerCharacteristic));
+}
+
+TEST(CertifyRejects, MissingTriangleAlongSegment) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  const Segment crack = p.segments.back();
+  auto pair = find_pair(bad, crack.a, crack.b);
+  ASSERT_TRUE(pair);
+  bad.triangles.erase(bad.triangles.begin() + static_cast<long>(pair->t1));
+  expect_rejected_for(run(p, bad), Reason::DomainBoundaryUncovered);
+}
+
+TEST(CertifyRejects, OverlappingTriangle) {
+  const Pslg p = test::square_with_crack();
+  const Mesh good = test::cgal_cdt(p);
+  {  // the same triangle twice
+    Mesh bad = good;
+    bad.triangles.push_back(bad.triangles[2]);
+    expect_rejected_for(run(p, bad), Reason::EdgeSameDirection);
+  }
+  {  // a triangle over two adjacent ones: their outer quad's diagonal the other way
+    Mesh bad = good;
+    bool added = false;
+    for (const Tri& t : good.triangles) {
+      for (int i = 0; i < 3 && !added; ++i) {
+        auto pair = find_pair(good, t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]);
+        if (!pair || !flippable(good, *pair)) continue;
+        bad.triangles.push_back({pair->a, pair->d, pair->c});
+        added = true;
+      }
+      if (added) break;
+    }
+    ASSERT_TRUE(added);
+    const auto r = run(p, bad);
+    EXPECT_FALSE(r.certified());
+    EXPECT_TRUE(r.has(Reason::EdgeSameDirection) || r.has(Reason::EdgeOverused)) << certify::format_report(r);
+  }
+}
+
+TEST(CertifyRejects, MovedInputVertex) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  ASSERT_EQ(bad.input_vertices, p.vertices.size());
+  const std::size_t interior = p.vertices.size() - 1;  // an interior input vertex
+  bad.vertices[interior].x = std::nextafter(bad.vertices[interior].x, 100.0);
+  expect_rejected_for(run(p, bad), Reason::InputVertexMoved);
+  // Without the promise that ids match, the moved vertex is a missing one.
+  bad.input_vertices = 0;
+  expect_rejected_for(run(p, bad), Reason::InputVertexMissing);
+}
+
+TEST(CertifyRejects, MissingInputVertex) {
+  const Pslg p = test::square_with_crack();
+  Pslg without = p;
+  without.vertices.pop_back();  // an interior vertex on no segment
+  Mesh bad = test::cgal_cdt(without);
+  bad.input_vertices = 0;
+  expect_certified(run(without, bad));
+  expect_rejected_for(run(p, bad), Reason::InputVertexMissing);
+}
+
+TEST(CertifyRejects, SteinerPointOffItsSegment) {
+  const Pslg p = test::square_with_crack();
+  const Mesh good = test::cgal_refined(p);
+  expect_certified(run(p, good, 20));
+  // A Steiner point on the bottom side y = 0, moved inside by 1e-9.
+  Mesh bad = good;
+  auto it = std::find_if(bad.vertices.begin() + static_cast<long>(bad.input_vertices), bad.vertices.end(),
+                         [](const Point& q) { return q.y == 0 && q.x > 0 && q.x < 10; });
+  ASSERT_NE(it, bad.vertices.end()) << "CGAL put no Steiner point on the bottom side";
+  it->y = 1e-9;
+  expect_rejected_for(run(p, bad, 20), Reason::SteinerOffSegment);
+}
+
+TEST(CertifyRejects, SteinerToleranceIsTight) {
+  // The tolerance is (k+1) ulp(M) per coordinate: a point just beyond it is off.
+  const Point a{0, 0}, b{8, 8};
+  const double tol = certify::segment_tolerance(a, b, 1);
+  EXPECT_EQ(tol, std::ldexp(1.0, -48));  // M = 8: ulp(8) = 2^-49, times k + 1 = 2
+  Pslg p;
+  p.vertices = {a, b, {8, 0}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  for (double off : {tol, 3 * tol}) {
+    Mesh m;
+    m.vertices = {a, b, {8, 0}, {4 + off, 4}};
+    m.input_vertices = 3;
+    m.triangles = {{0, 2, 3}, {3, 2, 1}};
+    m.constrained_edges = {{0, 3, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+    const auto r = run(p, m);
+    EXPECT_EQ(r.has(Reason::SteinerOffSegment), off > tol) << certify::format_report(r);
+  }
+}
+
+TEST(CertifyRejects, AngleJustUnderTheta) {
+  // A lone triangle whose smallest angle is 30 degrees minus 1e-7 degrees.
+  const double rad = (30 - 1e-7) * M_PI / 180;
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {std::cos(rad), std::sin(rad)}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 3;
+  m.triangles = {{0, 1, 2}};
+  m.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {0, 2, 2}};
+  expect_rejected_for(run(p, m, 30), Reason::AngleBelowTheta);
+  expect_certified(run(p, m, 30 - 2e-7));
+}
+
+TEST(CertifyRejects, TerminalPairOver120NonDelaunay) {
+  // Two flat triangles on the common longest edge (-1,0)-(1,0): the apexes
+  // (0, +-0.25) see it at about 152 degrees; (0,-0.25) is inside the other's circumcircle.
+  Pslg p;
+  p.vertices = {{-1, 0}, {1, 0}, {0, 0.25}, {0, -0.25}};
+  p.segments = {{0, 3, 0}, {3, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 4;
+  m.triangles = {{0, 1, 2}, {1, 0, 3}};
+  m.constrained_edges = {{0, 3, 0}, {3, 1, 1}, {1, 2, 2}, {2, 0, 3}};
+  const auto r = run(p, m);
+  expect_rejected_for(r, Reason::TerminalAngleOver120);
+  EXPECT_EQ(r.count(Reason::TerminalAngleOver120), 2u);
+  EXPECT_TRUE(r.has(Reason::NotLocallyDelaunay));
+  // The Delaunay diagonal: no terminal pair is over 120 degrees.
+  m.triangles = {{0, 3, 2}, {3, 1, 2}};
+  expect_certified(run(p, m));
+}
+
+TEST(CertifyRejects, MeshedHole) {
+  const Pslg p = test::square_with_hole();
+  Pslg no_hole = p;
+  no_hole.holes.clear();
+  const Mesh bad = test::cgal_cdt(no_hole);
+  expect_rejected_for(run(p, bad), Reason::MeshOutsideDomain);
+}
+
+TEST(CertifyRejects, UnusedSteinerVertex) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  bad.vertices.push_back({5, 5.5});
+  expect_rejected_for(run(p, bad), Reason::UnusedVertex);
+}
+
+TEST(CertifyRejects, ListedConstrainedEdgeOffSegments) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  // An unconstrained edge listed as constrained.
+  for (const Tri& t : bad.triangles)
+    if (!is_constrained(bad, t[0], t[1])) {
+      bad.constrained_edges.push_back({t[0], t[1], -1});
+      break;
+    }
+  expect_rejected_for(run(p, bad), Reason::ConstrainedEdgeNotOnSegment);
+}
+
+TEST(CertifyUnimprovable, RuleCheckedNotTrusted) {
+  // A 10-degree wedge between segments 0 (v0-v1) and 1 (v0-v2), closed by segment 2.
+  const double rad = 10 * M_PI / 180;
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {std::cos(rad), std::sin(rad)}};
+  p.segments = {{0, 1, 0}, {0, 2, 0}, {1, 2, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 3;
+  m.triangles = {{0, 1, 2}};
+  m.constrained_edges = {{0, 1, 0}, {0, 2, 1}, {1, 2, 2}};
+  certify::Options options;
+  options.min_angle_deg = 20;
+  expect_rejected_for(certify::certify(p, m, options), Reason::AngleBelowTheta);
+  // Listed: the shortest edge v1-v2 joins segments 0 and 1, meeting at v0 at 10 degrees.
+  options.unimprovable = {{{0, 1, 2}, 0, 0, 1, 10}};
+  const auto r = certify::certify(p, m, options);
+  expect_certified(r);
+  EXPECT_EQ(r.unimprovable_accepted.size(), 1u);
+  // At theta = 8 the wedge is not below theta: no exemption is needed, none is abused.
+  // A triangle listed that is not in the mesh is reported.
+  options.unimprovable = {{{0, 1, 2}, 0, 0, 1, 10}, {{0, 2, 1}, 0, 0, 1, 10}};
+  EXPECT_TRUE(certify::certify(p, m, options).certified());  // same triangle, other orientation
+  options.unimprovable = {{{0, 1, 2}, 0, 0, 1, 10}, {{0, 1, 5}, 0, 0, 1, 10}};
+  expect_rejected_for(certify::certify(p, m, options), Reason::UnimprovableNotInMesh);
+}
+
+TEST(CertifyUnimprovable, ListedTriangleWithoutSmallInputAngleRejected) {
+  // The crack square has no input angle below 90 degrees: listing its skinny
+  // triangles as unimprovable must not excuse them.
+  const Pslg p = test::square_with_crack();
+  const Mesh m = test::cgal_cdt(p);
+  certify::Options options;
+  options.min_angle_deg = 30;
+  const auto plain = certify::certify(p, m, options);
+  ASSERT_TRUE(plain.has(Reason::AngleBelowTheta)) << "the test input needs a skinny triangle";
+  for (const certify::Violation& v : plain.violations)
+    if (v.reason == Reason::AngleBelowTheta) options.unimprovable.push_back({m.triangles[static_cast<std::size_t>(v.triangles[0])], 0, 0, 1, 5});
+  const auto r = certify::certify(p, m, options);
+  expect_rejected_for(r, Reason::UnimprovableRuleFails);
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), plain.count(Reason::AngleBelowTheta));
+  EXPECT_TRUE(r.unimprovable_accepted.empty());
+}
+
+}  // namespace
+}  // namespace lepp
