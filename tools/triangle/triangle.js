@@ -5,9 +5,12 @@
 //   node triangle.js IN.poly SWITCHES OUT_PREFIX      e.g.  node triangle.js square400.poly -pq30 out/sq
 //
 // Writes OUT_PREFIX.node, OUT_PREFIX.ele and OUT_PREFIX.poly (1-based, Triangle's
-// formats; the .poly lists the output segments with their markers) and prints
-// "points added N" (output vertices minus input vertices) on stdout.
-// Exit status: 0 ok, 2 bad input or usage, 1 Triangle failed.
+// formats) and prints "points added N" (output vertices minus input vertices)
+// on stdout. Triangle is given segment markers 1..n (the file's own markers are
+// dropped), so each output segment's marker is the input segment id + 1: the
+// reading lepp's read_mesh gives it. Input vertices keep their numbers (no -j).
+// Exit status: 0 ok, 2 bad input or usage, 1 Triangle failed, 77 triangle-wasm
+// not installed.
 'use strict';
 
 const fs = require('fs');
@@ -16,7 +19,13 @@ const path = require('path');
 // triangle-wasm's Emscripten loader fetches the .wasm as a URL whenever fetch
 // exists; under Node it must read the file instead.
 globalThis.fetch = undefined;
-const Triangle = require('triangle-wasm');
+let Triangle;
+try {
+  Triangle = require('triangle-wasm');
+} catch (e) {
+  process.stderr.write('triangle.js: triangle-wasm is not installed: run `npm ci` in tools/triangle (scripts/install-deps.sh does)\n');
+  process.exit(77);
+}
 
 function usage(message) {
   process.stderr.write(`triangle.js: ${message}\nusage: node triangle.js IN.poly SWITCHES OUT_PREFIX\n`);
@@ -71,7 +80,7 @@ function readPoly(file) {
     v = readVertices(nodeFile, readLines(nodeFile), 0);
   }
   if (at >= lines.length) bad(file, 'missing segment header');
-  const [nseg, segMarkers] = lines[at].map(Number);
+  const nseg = Number(lines[at][0]);
   const segments = [];
   const segmentMarkers = [];
   for (let i = 0; i < nseg; i++) {
@@ -81,7 +90,7 @@ function readPoly(file) {
     const b = v.ids.get(Number(row[2]));
     if (a === undefined || b === undefined) bad(file, `segment ${i + 1} names an unknown vertex`);
     segments.push(a, b);
-    segmentMarkers.push(segMarkers > 0 && row.length > 3 ? Number(row[3]) : 1);
+    segmentMarkers.push(i + 1);
   }
   at += 1 + nseg;
   const holes = [];
