@@ -1,17 +1,119 @@
-// Placeholder: `lepp certify` lands with its issue.
+// `lepp certify IN.poly MESH_PREFIX`: the exact certificate of any mesher's
+// Triangle-format output (docs/CERTIFIER.md): exit 0 certified, 1 violations, 2 bad input.
 #include <cstdio>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "lepp/certify.h"
+#include "lepp/io.h"
+#include "lepp/validate.h"
 
 namespace lepp::cli {
+namespace {
+
+struct CertifyArgs {
+  std::string input, mesh;
+  double min_angle = 0;
+  bool conforming = false;
+  bool no_theorem2 = false;
+  bool json = false;
+  std::size_t max_listed = 50;
+};
+
+nlohmann::json to_json(const certify::Report& r) {
+  const certify::Statistics& s = r.stats;
+  nlohmann::json counts = nlohmann::json::object();
+  for (std::size_t i = 0; i < r.count_by_reason.size(); ++i)
+    if (r.count_by_reason[i]) counts[certify::to_string(static_cast<certify::Reason>(i))] = r.count_by_reason[i];
+  nlohmann::json violations = nlohmann::json::array();
+  for (const certify::Violation& v : r.violations) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const Point& p : v.points) points.push_back({p.x, p.y});
+    violations.push_back({{"reason", certify::to_string(v.reason)},
+                          {"check", certify::to_string(certify::check_of(v.reason))},
+                          {"message", v.message},
+                          {"triangles", v.triangles},
+                          {"edges", v.edges},
+                          {"vertices", v.vertices},
+                          {"points", points},
+                          {"segment", v.segment}});
+  }
+  nlohmann::json unimprovable = nlohmann::json::array();
+  for (const UnimprovableTriangle& u : r.unimprovable_accepted)
+    unimprovable.push_back({{"triangle", u.triangle}, {"apex", u.apex}, {"segment1", u.segment1}, {"segment2", u.segment2}});
+  return {{"certified", r.certified()},
+          {"min_angle_checked", r.min_angle_deg},
+          {"statistics",
+           {{"vertices", s.vertices},
+            {"triangles", s.triangles},
+            {"edges", s.edges},
+            {"min_angle", s.min_angle_deg},
+            {"avg_min_angle", s.avg_min_angle_deg},
+            {"min_area_quality", s.min_area_quality},
+            {"shortest_edge", s.shortest_edge},
+            {"shortest_edge_ratio", s.shortest_edge_ratio},
+            {"avg_lepp_size", s.avg_lepp_size},
+            {"incircle_tests", s.delaunay_edges_checked},
+            {"cocircular_edges", s.cocircular_edges},
+            {"constrained_edges", s.constrained_edges},
+            {"terminal_pairs", s.terminal_pairs_checked},
+            {"euler_mesh", s.euler_mesh},
+            {"euler_domain", s.euler_domain}}},
+          {"violation_counts", counts},
+          {"violations", violations},
+          {"unimprovable_accepted", unimprovable}};
+}
+
+int run_certify(const CertifyArgs& args) {
+  Pslg input;
+  Mesh mesh;
+  certify::Options options;
+  std::vector<std::string> warnings;
+  try {
+    input = validate(read_poly(args.input), warnings);
+    mesh = read_mesh(args.mesh);
+    options.unimprovable = read_unimprovable(args.mesh);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "lepp certify: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lepp certify: cannot read input: %s\n", e.what());
+    return 2;
+  }
+  for (const std::string& w : warnings) std::fprintf(stderr, "lepp certify: warning: %s\n", w.c_str());
+  options.min_angle_deg = args.min_angle;
+  options.conforming = args.conforming;
+  options.theorem2 = !args.no_theorem2;
+  options.max_listed_per_reason = args.max_listed;
+  const certify::Report report = certify::certify(input, mesh, options);
+  if (args.json)
+    std::printf("%s\n", to_json(report).dump(2).c_str());
+  else
+    std::printf("%s", certify::format_report(report).c_str());
+  return report.certified() ? 0 : 1;
+}
+
+}  // namespace
 
 void add_certify_command(CLI::App& app, int& status) {
-  auto* cmd = app.add_subcommand("certify", "(not implemented yet)");
-  cmd->allow_extras();
-  cmd->callback([&status] {
-    std::fprintf(stderr, "lepp certify: not implemented yet\n");
-    status = 1;
-  });
+  auto args = std::make_shared<CertifyArgs>();
+  auto* cmd = app.add_subcommand("certify", "Check a mesh of a .poly file exactly (topology, input, constraints, Delaunay, angles, Theorem 2)");
+  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format")->required();
+  cmd->add_option("mesh", args->mesh, "Mesh prefix: reads PREFIX.node, PREFIX.ele, PREFIX.poly and PREFIX.unimprovable if present")
+      ->required();
+  cmd->add_option("--min-angle", args->min_angle, "Check every smallest angle >= this many degrees (0: no angle check)")
+      ->default_val(0)
+      ->check(CLI::Range(0.0, 60.0));
+  cmd->add_flag("--conforming", args->conforming, "Every edge locally Delaunay, constrained ones too (conforming Delaunay)");
+  cmd->add_flag("--no-theorem2", args->no_theorem2, "Skip the Theorem 2 check (largest angles of terminal pairs <= 120 degrees)");
+  cmd->add_option("--max-listed", args->max_listed, "List at most this many violations of each kind (all are counted)")
+      ->default_val(50);
+  cmd->add_flag("--json", args->json, "Print the report as JSON");
+  cmd->footer("Exit status: 0 certified; 1 violations found (each listed); 2 unreadable input. docs/CERTIFIER.md says what each check tests.");
+  cmd->callback([args, &status] { status = run_certify(*args); });
 }
 
 }  // namespace lepp::cli
