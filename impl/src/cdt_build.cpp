@@ -5,6 +5,7 @@
 // (on Epeck) is the same triangulation.
 #include "cdt_build.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -13,6 +14,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include "predicates.h"
 
 namespace lepp::fast {
 namespace {
@@ -37,7 +40,7 @@ int segment_between(const Pslg& pslg, const SegmentMembership& m, int a, int b) 
 }  // namespace
 
 TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership, std::size_t reserve_triangles,
-                          std::size_t reserve_vertices) {
+                          std::size_t reserve_vertices, std::int64_t* cocircular_ties) {
   Cdt cdt;
   {
     std::vector<std::pair<K::Point_2, int>> points;
@@ -121,6 +124,18 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
       }
     }
     mesh.tris.push_back(t);
+  }
+  if (cocircular_ties) {
+    *cocircular_ties = 0;
+    for (int ti = 0; ti < mesh.size(); ++ti) {
+      const FTri& f = mesh.t(ti);
+      for (int i = 0; i < 3; ++i) {
+        if (f.seg[i] >= 0 || f.nbr[i] < 0 || nbr_tri(f.nbr[i]) < ti) continue;
+        const FTri& g = mesh.t(nbr_tri(f.nbr[i]));
+        if (incircle(mesh.p(f.v[0]), mesh.p(f.v[1]), mesh.p(f.v[2]), mesh.p(g.v[nbr_edge(f.nbr[i])])) == 0)
+          ++*cocircular_ties;
+      }
+    }
   }
   return mesh;
 }

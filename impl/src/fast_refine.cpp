@@ -107,7 +107,8 @@ class Refiner {
     }
     expected = std::min(expected, static_cast<double>(n) + static_cast<double>(budget) + 1);
     const auto vertices_guess = static_cast<std::size_t>(std::min(expected, 4e8));
-    mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess);
+    std::int64_t initial_ties = 0;
+    mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess, &initial_ties);
     mem_.steiner.reserve(vertices_guess);
 
     RefineResult result;
@@ -198,7 +199,7 @@ class Refiner {
 
     result.outcome = outcome;
     result.steiner_points = steiner;
-    result.cocircular_ties = inserter_.cocircular_ties;
+    result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
     result.mesh = mesh_.to_mesh(n);
     canonicalize(result.mesh);
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
