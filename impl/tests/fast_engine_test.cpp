@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "lepp/certify.h"
 #include "lepp/fast.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
@@ -30,6 +31,16 @@ impl_test::InvariantOptions quality(const RefineOptions& o, const RefineResult& 
   q.max_area = o.max_area;
   q.unimprovable = r.unimprovable;
   return q;
+}
+
+certify::Options certify_options(const RefineOptions& o, const RefineResult& r) {
+  certify::Options c;
+  c.min_angle_deg = r.outcome == Outcome::Converged || r.outcome == Outcome::Unimprovable ? o.min_angle_deg : 0;
+  c.unimprovable = r.unimprovable;
+  return c;
+}
+bool certified(const Pslg& p, const RefineResult& r, const RefineOptions& o) {
+  return certify::certify(p, r.mesh, certify_options(o, r)).certified();
 }
 
 TEST(FastEngine, IsAvailable) { EXPECT_TRUE(fast::available()); }
@@ -71,6 +82,7 @@ TEST_P(PaperCorpus, ConvergesAndHoldsTheInvariants) {
   EXPECT_EQ(r.outcome, Outcome::Converged) << r.stuck;
   EXPECT_EQ(r.steiner_points, static_cast<std::int64_t>(r.mesh.vertices.size() - p.vertices.size()));
   EXPECT_EQ(joined(impl_test::check_invariants(p, r.mesh, quality(o, r))), "");
+  EXPECT_TRUE(certified(p, r, o)) << certify::format_report(certify::certify(p, r.mesh, certify_options(o, r)));
   RecordProperty("steiner_points", static_cast<int>(r.steiner_points));
 }
 
@@ -104,6 +116,7 @@ TEST(FastEngine, SteinerBudgetStopsWithAValidCdt) {
   RefineResult r = fast::refine(p, o);
   EXPECT_EQ(r.outcome, Outcome::SteinerBudget);
   EXPECT_EQ(r.steiner_points, 10);
+  EXPECT_TRUE(certified(p, r, o));
   EXPECT_NE(r.stuck.find("Lepp"), std::string::npos) << r.stuck;
   EXPECT_EQ(joined(impl_test::check_invariants(p, r.mesh, {})), "");
 }
@@ -114,6 +127,7 @@ TEST(FastEngine, EdgeFloorStops) {
   o.edge_floor = 0.9;  // the input segments are 1 long: the first interior points come closer
   RefineResult r = fast::refine(p, o);
   EXPECT_EQ(r.outcome, Outcome::EdgeFloor);
+  EXPECT_TRUE(certified(p, r, o));
   EXPECT_FALSE(r.stuck.empty());
   EXPECT_EQ(joined(impl_test::check_invariants(p, r.mesh, {})), "");
 }
@@ -134,6 +148,7 @@ TEST(FastEngine, SizeBoundIsMet) {
   RefineResult r = fast::refine(p, o);
   EXPECT_EQ(r.outcome, Outcome::Converged);
   EXPECT_GT(r.mesh.triangles.size(), 1000u);
+  EXPECT_TRUE(certified(p, r, o));
   EXPECT_EQ(joined(impl_test::check_invariants(p, r.mesh, quality(o, r))), "");
 }
 
@@ -149,6 +164,7 @@ TEST(FastEngine, SmallInputAngleIsReportedUnimprovable) {
   o.min_angle_deg = 20;
   RefineResult r = fast::refine(p, o);
   EXPECT_EQ(r.outcome, Outcome::Unimprovable) << r.stuck;
+  EXPECT_TRUE(certified(p, r, o));
   ASSERT_FALSE(r.unimprovable.empty());
   for (const UnimprovableTriangle& u : r.unimprovable) {
     EXPECT_EQ(u.apex, 0);
@@ -216,6 +232,7 @@ TEST(FastEngine, LifoOrderAlsoConverges) {
   RefineOptions o;
   o.order = QueueOrder::Lifo;
   RefineResult r = fast::refine(p, o);
+  EXPECT_TRUE(certified(p, r, o));
   EXPECT_EQ(r.outcome, Outcome::Converged);
   EXPECT_EQ(joined(impl_test::check_invariants(p, r.mesh, quality(o, r))), "");
 }

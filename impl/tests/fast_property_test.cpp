@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 
+#include "lepp/certify.h"
 #include "lepp/fast.h"
 #include "mesh_invariants.h"
 #include "random_pslg.h"
@@ -32,6 +33,11 @@ RC_GTEST_PROP(FastProperty, RefinedMeshHoldsTheInvariants, ()) {
   q.unimprovable = r.unimprovable;
   auto problems = impl_test::check_invariants(p, r.mesh, q);
   RC_ASSERT(problems.empty());
+  certify::Options c;
+  c.min_angle_deg = q.min_angle_deg;
+  c.unimprovable = r.unimprovable;
+  certify::Report report = certify::certify(p, r.mesh, c);
+  if (!report.certified()) RC_FAIL(certify::format_report(report));
 }
 
 }  // namespace
