@@ -1,0 +1,72 @@
+// fuzz_refine: a structure-aware hunt for loops. The input is a PSLG on a small
+// grid plus theta, method, engine and queue order (support/fuzz_input.h). The
+// run gets a loop guard justified by the input (support/loop_guard.h); a run
+// that stops on it is a loop, re-run with a trace, classified and reported.
+// A run that ends is certified.
+//
+// Environment: LEPP_FUZZ_METHOD, LEPP_FUZZ_THETA=lo:hi pin the method and the
+// theta band; LEPP_FUZZ_MIN_INPUT_ANGLE=60 skips PSLGs with a smaller angle
+// between segments; LEPP_FUZZ_IGNORE=class,... keeps fuzzing past known classes.
+#include <cstdint>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "lepp/io.h"
+#include "support/certify_result.h"
+#include "support/engines.h"
+#include "support/finding.h"
+#include "support/fuzz_input.h"
+#include "support/loop_guard.h"
+#include "support/pslg_mutator.h"
+
+using namespace lepp::fuzz;
+
+namespace {
+constexpr std::int64_t kBudgetCap = 200000;  // keeps one execution under a few seconds
+
+void finding(const std::string& cls, const std::string& what) { report_finding("fuzz_refine", cls, what); }
+}  // namespace
+
+LEPP_FUZZ_PSLG_MUTATOR
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzInput input = decode(data, size);
+  apply_environment(input);
+  const Engine engine = input.engine == 1 ? Engine::Reference : Engine::Fast;
+  if (!engine_available(engine)) return 0;
+  lepp::Pslg pslg;
+  try {
+    pslg = to_pslg(input);
+  } catch (const lepp::InputError&) {
+    return 0;
+  }
+  if (const char* min = std::getenv("LEPP_FUZZ_MIN_INPUT_ANGLE"))
+    if (input_features(pslg).min_input_angle_deg < std::atof(min)) return 0;
+
+  lepp::RefineOptions options = options_of(input);
+  const LoopGuard guard = loop_guard(pslg, engine == Engine::Fast ? kBudgetCap : kBudgetCap / 20);
+  options.max_steiner = guard.steiner_budget;
+  options.edge_floor = guard.edge_floor;
+  const std::string what = fmt::format("{} engine={} budget={} floor={}", describe(input), to_string(engine),
+                                       guard.steiner_budget, guard.edge_floor);
+  lepp::RefineResult result;
+  try {
+    result = refine(engine, pslg, options);
+  } catch (const std::exception& e) {
+    finding("engine-exception", fmt::format("{}: {}", what, e.what()));
+    return 0;
+  }
+  if (std::string problems = certify_result(pslg, options, result); !problems.empty())
+    finding("not-certified", fmt::format("{} outcome={}: {}", what, lepp::to_string(result.outcome), problems));
+  if (result.outcome == lepp::Outcome::SteinerBudget || result.outcome == lepp::Outcome::EdgeFloor) {
+    options.trace = true;
+    const lepp::RefineResult traced = refine(engine, pslg, options);
+    const std::string cls = classify_loop(pslg, options, traced);
+    finding("loop-" + cls, fmt::format("{} band={} outcome={} steiner={} stuck={}", what,
+                                       theta_band(options.min_angle_deg), lepp::to_string(result.outcome),
+                                       result.steiner_points, result.stuck));
+  }
+  return 0;
+}

@@ -1,0 +1,88 @@
+// Writes the structured fuzz seeds: small PSLGs of each kind (polygons, holes,
+// point sets, small input angles, clustered boundaries) at several theta and
+// both methods, encoded as fuzz_refine, fuzz_differential and fuzz_cdt read them.
+//   fuzz_make_seeds OUT_DIR
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "support/fuzz_input.h"
+
+using lepp::fuzz::FuzzInput;
+using lepp::fuzz::GridPoint;
+
+namespace {
+
+FuzzInput polygon(int grid, std::vector<GridPoint> points, bool closed = true) {
+  FuzzInput in;
+  in.grid = grid;
+  in.vertices = std::move(points);
+  const int n = static_cast<int>(in.vertices.size());
+  for (int i = 0; i + 1 < n || (closed && i < n); ++i) in.segments.push_back({i, (i + 1) % n});
+  return in;
+}
+
+void add_loop(FuzzInput& in, std::vector<GridPoint> points) {
+  const int first = static_cast<int>(in.vertices.size()), n = static_cast<int>(points.size());
+  for (const GridPoint& p : points) in.vertices.push_back(p);
+  for (int i = 0; i < n; ++i) in.segments.push_back({first + i, first + (i + 1) % n});
+}
+
+std::vector<std::pair<std::string, FuzzInput>> shapes() {
+  std::vector<std::pair<std::string, FuzzInput>> s;
+  s.emplace_back("triangle", polygon(8, {{0, 0}, {8, 0}, {3, 5}}));
+  s.emplace_back("square", polygon(8, {{0, 0}, {8, 0}, {8, 8}, {0, 8}}));
+  FuzzInput dense = polygon(16, {{0, 0}, {4, 0}, {8, 0}, {12, 0}, {16, 0}, {16, 16}, {0, 16}});
+  s.emplace_back("square-dense-side", dense);
+  s.emplace_back("l-shape", polygon(8, {{0, 0}, {8, 0}, {8, 3}, {3, 3}, {3, 8}, {0, 8}}));
+  FuzzInput holed = polygon(12, {{0, 0}, {12, 0}, {12, 12}, {0, 12}});
+  add_loop(holed, {{4, 4}, {8, 4}, {8, 8}, {4, 8}});
+  holed.holes.push_back({12, 12});  // (6, 6) on the half grid
+  s.emplace_back("square-with-hole", holed);
+  FuzzInput points;
+  points.grid = 10;
+  points.vertices = {{0, 0}, {10, 1}, {3, 9}, {7, 4}, {2, 5}, {9, 9}, {5, 2}};
+  s.emplace_back("point-set", points);
+  s.emplace_back("thin-wedge", polygon(20, {{0, 0}, {20, 3}, {20, 6}}));  // about 8 degrees at the apex
+  s.emplace_back("needle-corner", polygon(32, {{0, 0}, {32, 0}, {32, 32}, {1, 32}}));
+  s.emplace_back("zigzag", polygon(12, {{0, 0}, {12, 0}, {12, 6}, {9, 3}, {6, 6}, {3, 3}, {0, 6}}));
+  s.emplace_back("octagon", polygon(12, {{4, 0}, {8, 0}, {12, 4}, {12, 8}, {8, 12}, {4, 12}, {0, 8}, {0, 4}}));
+  FuzzInput interior = polygon(16, {{0, 0}, {16, 0}, {16, 8}, {0, 8}});
+  interior.vertices.push_back({5, 4});
+  interior.vertices.push_back({11, 4});
+  interior.segments.push_back({4, 5});  // a free segment inside
+  s.emplace_back("rect-inner-segment", interior);
+  s.emplace_back("clustered-rect", polygon(40, {{0, 0}, {20, 0}, {30, 0}, {35, 0}, {38, 0}, {40, 0}, {40, 20},
+                                                {39, 20}, {36, 20}, {30, 20}, {0, 20}}));
+  s.emplace_back("open-chain", polygon(10, {{0, 0}, {5, 2}, {10, 0}, {10, 10}}, false));
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: fuzz_make_seeds OUT_DIR\n");
+    return 2;
+  }
+  const std::filesystem::path out = argv[1];
+  std::filesystem::create_directories(out);
+  const struct { int theta_tenths, method; } settings[] = {{200, 0}, {300, 0}, {200, 1}, {250, 1}, {340, 0}};
+  int written = 0;
+  for (auto [name, shape] : shapes()) {
+    for (const auto& setting : settings) {
+      shape.theta_tenths = setting.theta_tenths;
+      shape.method = setting.method;
+      const std::vector<std::uint8_t> bytes = lepp::fuzz::encode(shape);
+      const std::string file = name + "-" + (setting.method ? "midpoint" : "centroid") + "-" +
+                               std::to_string(setting.theta_tenths / 10) + ".bin";
+      std::ofstream(out / file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                       static_cast<std::streamsize>(bytes.size()));
+      ++written;
+    }
+  }
+  std::printf("wrote %d seeds to %s\n", written, out.c_str());
+  return 0;
+}

@@ -1,0 +1,54 @@
+#include "certify_result.h"
+
+#include <fmt/format.h>
+
+#ifdef LEPP_FUZZ_HAVE_CERTIFIER
+#include "lepp/certify.h"
+#endif
+
+namespace lepp::fuzz {
+
+bool have_certifier() {
+#ifdef LEPP_FUZZ_HAVE_CERTIFIER
+  return true;
+#else
+  return false;
+#endif
+}
+
+std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_deg,
+                             const std::vector<UnimprovableTriangle>& unimprovable) {
+  // Structural checks that need no exact arithmetic.
+  const int n = static_cast<int>(mesh.vertices.size());
+  for (const Tri& t : mesh.triangles)
+    for (int v : t)
+      if (v < 0 || v >= n) return fmt::format("triangle vertex id {} out of range [0, {})", v, n);
+  if (mesh.input_vertices != pslg.vertices.size())
+    return fmt::format("mesh has {} input vertices, the PSLG {}", mesh.input_vertices, pslg.vertices.size());
+  for (std::size_t i = 0; i < pslg.vertices.size() && i < mesh.vertices.size(); ++i)
+    if (mesh.vertices[i] != pslg.vertices[i]) return fmt::format("input vertex {} moved", i);
+#ifdef LEPP_FUZZ_HAVE_CERTIFIER
+  certify::Options options;
+  options.min_angle_deg = theta_deg;
+  options.unimprovable = unimprovable;
+  options.max_listed_per_reason = 3;
+  const certify::Report report = certify::certify(pslg, mesh, options);
+  if (!report.certified()) {
+    std::string text;
+    for (std::size_t i = 0; i < report.violations.size() && i < 3; ++i)
+      text += fmt::format("[{}] {}; ", certify::to_string(report.violations[i].reason), report.violations[i].message);
+    return text.empty() ? "not certified" : text;
+  }
+#else
+  (void)theta_deg;
+  (void)unimprovable;
+#endif
+  return {};
+}
+
+std::string certify_result(const Pslg& pslg, const RefineOptions& options, const RefineResult& result) {
+  const bool converged = result.outcome == Outcome::Converged || result.outcome == Outcome::Unimprovable;
+  return certify_problems(pslg, result.mesh, converged ? options.min_angle_deg : 0, result.unimprovable);
+}
+
+}  // namespace lepp::fuzz
