@@ -1,0 +1,133 @@
+// The exact decisions of ALGORITHM.md on one triangle: edge order (Section 3),
+// bad triangles (Section 4), the unimprovable rule (Section 8), and Lepp(t).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "triangulation.h"
+
+namespace lepp::reference::detail {
+
+namespace {
+
+FT squared_length(VH a, VH b) { return CGAL::squared_distance(a->point(), b->point()); }
+
+// Edge order key (squared length, -min id, -max id): true iff ab > cd.
+bool edge_greater(VH a, VH b, VH c, VH d) {
+  CGAL::Comparison_result r = CGAL::compare(squared_length(a, b), squared_length(c, d));
+  if (r != CGAL::EQUAL) return r == CGAL::LARGER;
+  int ab_min = std::min(id(a), id(b)), ab_max = std::max(id(a), id(b));
+  int cd_min = std::min(id(c), id(d)), cd_max = std::max(id(c), id(d));
+  if (ab_min != cd_min) return ab_min < cd_min;  // older vertices win ties
+  return ab_max < cd_max;
+}
+
+// Vertex indices 0,1,2 of f sorted by their opposite edge, shortest first.
+std::array<int, 3> edges_ascending(FH f) {
+  std::array<int, 3> e{0, 1, 2};
+  std::sort(e.begin(), e.end(), [&](int i, int j) { return edge_greater(f, j, f, i); });
+  return e;
+}
+
+}  // namespace
+
+bool edge_greater(FH f, int i, FH g, int j) {
+  return edge_greater(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i)), g->vertex(Cdt::ccw(j)), g->vertex(Cdt::cw(j)));
+}
+
+int longest_edge(FH f) { return edges_ascending(f)[2]; }
+int second_longest_edge(FH f) { return edges_ascending(f)[1]; }
+int shortest_edge(FH f) { return edges_ascending(f)[0]; }
+
+Tri key(FH f) {
+  Tri t{id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+Tri ccw_ids(FH f) {
+  Tri t{id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))};
+  while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  return t;
+}
+
+// The smallest angle is at the vertex opposite the shortest edge; with u, v
+// the edge vectors leaving it: skinny iff cross(u,v)^2 < S |u|^2 |v|^2.
+bool is_skinny(FH f, const FT& sin2) {
+  int i = shortest_edge(f);
+  const CPoint& o = f->vertex(i)->point();
+  K::Vector_2 u = f->vertex(Cdt::ccw(i))->point() - o, v = f->vertex(Cdt::cw(i))->point() - o;
+  FT cross = u.x() * v.y() - u.y() * v.x();
+  return cross * cross < sin2 * u.squared_length() * v.squared_length();
+}
+
+bool is_too_big(FH f, const FT& twice_max_area) {
+  const CPoint &a = f->vertex(0)->point(), &b = f->vertex(1)->point(), &c = f->vertex(2)->point();
+  FT cross = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+  return CGAL::abs(cross) > twice_max_area;
+}
+
+std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, const FT& sin2) {
+  int i = shortest_edge(f);
+  VH p = f->vertex(Cdt::ccw(i)), q = f->vertex(Cdt::cw(i));
+  std::optional<UnimprovableTriangle> best;
+  for (int s1 : p->info().segments) {
+    for (int s2 : q->info().segments) {
+      if (s1 == s2) continue;
+      const Segment& a = tr.input->segments[static_cast<std::size_t>(s1)];
+      const Segment& b = tr.input->segments[static_cast<std::size_t>(s2)];
+      // The shared endpoint v and the other endpoints of each segment.
+      int v = -1, ea = -1, eb = -1;
+      if (a.a == b.a) v = a.a, ea = a.b, eb = b.b;
+      else if (a.a == b.b) v = a.a, ea = a.b, eb = b.a;
+      else if (a.b == b.a) v = a.b, ea = a.a, eb = b.b;
+      else if (a.b == b.b) v = a.b, ea = a.a, eb = b.a;
+      if (v < 0 || v == id(p) || v == id(q)) continue;
+      const CPoint& pv = tr.vertex[static_cast<std::size_t>(v)]->point();
+      K::Vector_2 u = tr.vertex[static_cast<std::size_t>(ea)]->point() - pv;
+      K::Vector_2 w = tr.vertex[static_cast<std::size_t>(eb)]->point() - pv;
+      FT dot = u * w, cross = u.x() * w.y() - u.y() * w.x();
+      if (!(dot > 0 && cross * cross < sin2 * u.squared_length() * w.squared_length())) continue;
+      int lo = std::min(s1, s2), hi = std::max(s1, s2);
+      if (best && std::make_pair(best->segment1, best->segment2) <= std::make_pair(lo, hi)) continue;
+      UnimprovableTriangle u_t;
+      u_t.triangle = ccw_ids(f);
+      u_t.apex = v;
+      u_t.segment1 = lo;
+      u_t.segment2 = hi;
+      u_t.input_angle_deg = std::atan2(std::abs(CGAL::to_double(cross)), CGAL::to_double(dot)) * 180.0 / M_PI;
+      best = u_t;
+    }
+  }
+  return best;
+}
+
+// ALGORITHM.md Section 3: follow longest edges while they grow; stop at a
+// constrained longest edge or at an edge that is longest for both triangles.
+Lepp find_lepp(FH t) {
+  Lepp lepp;
+  FH f = t;
+  for (;;) {
+    lepp.path.push_back(f);
+    int i = longest_edge(f);
+    if (f->is_constrained(i)) {
+      lepp.t1 = f;
+      lepp.edge = i;
+      return lepp;
+    }
+    FH n = f->neighbor(i);
+    if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");
+    int j = n->index(f);
+    if (longest_edge(n) == j) {
+      lepp.t1 = f;
+      lepp.t2 = n;
+      lepp.edge = i;
+      lepp.path.push_back(n);
+      return lepp;
+    }
+    f = n;  // n's longest edge is strictly greater: the path cannot cycle
+  }
+}
+
+}  // namespace lepp::reference::detail

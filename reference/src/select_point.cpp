@@ -1,0 +1,172 @@
+// Point selection (ALGORITHM.md Section 5: the paper's Select Point and New
+// Select Point with Remark 10) and insertion (Section 6).
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "triangulation.h"
+
+namespace lepp::reference::detail {
+
+namespace {
+
+// The fixed IEEE formulas both engines use (no FMA: -ffp-contract=off).
+Point midpoint(VH a, VH b) {
+  const CPoint &p = a->point(), &q = b->point();
+  double ax = CGAL::to_double(p.x()), ay = CGAL::to_double(p.y());
+  double bx = CGAL::to_double(q.x()), by = CGAL::to_double(q.y());
+  return {(ax + bx) * 0.5, (ay + by) * 0.5};
+}
+Point centroid(VH a, VH b, VH c, VH d) {
+  auto x = [](VH v) { return CGAL::to_double(v->point().x()); };
+  auto y = [](VH v) { return CGAL::to_double(v->point().y()); };
+  return {((x(a) + x(b)) + (x(c) + x(d))) * 0.25, ((y(a) + y(b)) + (y(c) + y(d))) * 0.25};
+}
+
+Selection edge_midpoint(Rule rule, FH f, int i) {
+  Selection s;
+  s.rule = rule;
+  s.point = midpoint(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i)));
+  if (f->is_constrained(i)) s.split_face = f, s.split_index = i;
+  return s;
+}
+
+bool strictly_inside(FH f, const Point& p) {
+  CPoint q(p.x, p.y);
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::orientation(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point(), q) != CGAL::LEFT_TURN) return false;
+  return true;
+}
+
+}  // namespace
+
+Selection select_point(const Lepp& lepp, Method method) {
+  FH t1 = lepp.t1, t2 = lepp.t2;
+  int l = lepp.edge;
+  if (t2 == FH()) return edge_midpoint(Rule::TerminalConstrainedMidpoint, t1, l);
+
+  int s1 = second_longest_edge(t1), s2 = second_longest_edge(t2);
+  bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
+
+  if (method == Method::Midpoint) {
+    if (!c1 && !c2) return edge_midpoint(Rule::TerminalMidpoint, t1, l);
+    return c1 ? edge_midpoint(Rule::SecondLongestMidpoint, t1, s1) : edge_midpoint(Rule::SecondLongestMidpoint, t2, s2);
+  }
+
+  // Centroid method. A, B: the terminal edge; C, D: the apexes of t1, t2.
+  VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l)), c = t1->vertex(l);
+  VH d = t2->vertex(t2->index(t1));
+  if (!c1 && !c2) {
+    Selection s;
+    s.rule = Rule::QuadCentroid;
+    s.point = centroid(a, b, c, d);
+    return s;
+  }
+  if (c1 && c2) return edge_midpoint(Rule::BothSecondLongestMidpoint, t1, s1);
+  // Exactly one, t*, has a constrained second-longest edge; o is the other.
+  FH star = c1 ? t1 : t2, other = c1 ? t2 : t1;
+  int star_edge = c1 ? s1 : s2;
+  Point g = centroid(a, b, c, d);
+  if (strictly_inside(other, g)) {
+    Selection s;
+    s.rule = Rule::CentroidInOther;
+    s.point = g;
+    return s;
+  }
+  return edge_midpoint(Rule::SecondLongestMidpoint, star, star_edge);
+}
+
+namespace {
+
+// Lawson flips around the new vertex v, never across a constrained edge. An
+// edge is flipped only when the opposite vertex is strictly inside the
+// circumcircle; a cocircular quad is left as it is and counted.
+void restore_delaunay(Triangulation& tr, VH v) {
+  std::vector<FH> stack;
+  Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+  do stack.push_back(fc); while (++fc != done);
+  while (!stack.empty()) {
+    FH f = stack.back();
+    stack.pop_back();
+    int i = f->index(v);
+    FH n = f->neighbor(i);
+    if (f->is_constrained(i) || tr.cdt.is_infinite(f) || tr.cdt.is_infinite(n)) continue;
+    CGAL::Oriented_side side = tr.cdt.side_of_oriented_circle(n, v->point(), false);
+    if (side == CGAL::ON_ORIENTED_BOUNDARY) ++tr.cocircular_ties;
+    if (side != CGAL::ON_POSITIVE_SIDE) continue;
+    tr.cdt.flip(f, i);  // f and n now both have v as a vertex
+    stack.push_back(f);
+    stack.push_back(n);
+  }
+}
+
+}  // namespace
+
+VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
+  Cdt& cdt = tr.cdt;
+  CPoint p(s.point.x, s.point.y);
+  VH v;
+  std::vector<int> segments;
+  bool split = s.split_face != FH();
+  // Domain flags of the two sides of a split constrained edge AB: left of A->B, right.
+  bool left_in = false, right_in = false;
+  VH a, b;
+  if (split) {
+    FH f = s.split_face;
+    int i = s.split_index;
+    a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));  // f is left of a->b
+    left_in = f->info().in_domain;
+    right_in = f->neighbor(i)->info().in_domain;
+    auto e = edge_key(id(a), id(b));
+    auto found = tr.segment_of_edge.find(e);
+    if (found == tr.segment_of_edge.end())
+      throw std::logic_error("reference: constrained edge (" + std::to_string(e.first) + "," + std::to_string(e.second) +
+                             ") lies on no input segment");
+    int segment = found->second;
+    tr.segment_of_edge.erase(e);
+    segments.push_back(segment);
+    // Insert into the edge itself even when the rounded midpoint is half an
+    // ulp off the line: CGAL then keeps both halves constrained, where a
+    // located insert would drop the point into a face beside the old constraint.
+    v = cdt.Cdt::Ctr::insert(p, Cdt::EDGE, f, i);
+  } else {
+    Cdt::Locate_type lt;
+    int li;
+    FH f = cdt.locate(p, lt, li, t1);
+    if (lt == Cdt::VERTEX) throw std::logic_error("reference: the selected point is already a vertex");
+    if (lt == Cdt::OUTSIDE_CONVEX_HULL || lt == Cdt::OUTSIDE_AFFINE_HULL || !f->info().in_domain ||
+        (lt == Cdt::EDGE && f->is_constrained(li)))
+      throw std::logic_error("reference: the selected point is not inside the terminal quad");
+    v = cdt.Cdt::Ctr::insert(p, lt, f, li);
+  }
+  v->info().id = static_cast<int>(tr.vertex.size());
+  v->info().segments = segments;
+  tr.vertex.push_back(v);
+  tr.coords.push_back(s.point);
+  if (split) {
+    tr.segment_of_edge[edge_key(id(a), id(v))] = segments[0];
+    tr.segment_of_edge[edge_key(id(v), id(b))] = segments[0];
+  }
+  restore_delaunay(tr, v);
+
+  // New faces are all incident to v. Going counter-clockwise around v from
+  // the edge v->b (the direction a->b) sweeps the left side of ab until v->a.
+  Cdt::Face_circulator fc = cdt.incident_faces(v), done = fc;
+  if (split) {
+    while (fc->vertex(Cdt::ccw(fc->index(v))) != b) ++fc;
+    done = fc;
+  }
+  bool in = split ? left_in : true;
+  do {
+    FH f = fc;
+    int i = f->index(v);
+    if (!cdt.is_infinite(f) &&
+        CGAL::orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) != CGAL::LEFT_TURN)
+      throw std::logic_error("reference: insertion made a triangle that is not counter-clockwise");
+    f->info().in_domain = in;
+    if (split && f->vertex(Cdt::cw(i)) == a) in = right_in;  // crossing v->a to the right side
+  } while (++fc != done);
+  return v;
+}
+
+}  // namespace lepp::reference::detail

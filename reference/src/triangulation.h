@@ -1,0 +1,103 @@
+// Private to the reference engine: the CGAL types and the bookkeeping around
+// them. CGAL stays in reference/src; the public header speaks plain doubles.
+#pragma once
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+#include "lepp/refine.h"
+
+namespace lepp::reference::detail {
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;  // Epeck: every decision is exact
+using FT = K::FT;
+using CPoint = K::Point_2;
+
+// id: 0..n-1 input vertices, n.. Steiner points in insertion order, -1 the
+// four bounding-box corners (never part of the domain, never output).
+// segments: the input segments the vertex lies on (ALGORITHM.md, Section 1).
+struct VertexInfo {
+  int id = -1;
+  std::vector<int> segments;
+};
+struct FaceInfo {
+  bool in_domain = false;
+};
+
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K, CGAL::Constrained_triangulation_face_base_2<K>>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+// Points on a constraint are allowed (the split of a constrained edge); crossings never happen.
+using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag>;
+using VH = Cdt::Vertex_handle;
+using FH = Cdt::Face_handle;
+
+// The CDT and what the algorithm keeps beside it.
+struct Triangulation {
+  const Pslg* input = nullptr;
+  Cdt cdt;
+  std::vector<VH> vertex;     // by id
+  std::vector<Point> coords;  // the double coordinates, by id (exactly the CGAL points)
+  std::size_t input_vertices = 0;
+  // Constrained edge (smaller id, larger id) -> the input segment it lies on.
+  std::map<std::pair<int, int>, int> segment_of_edge;
+  std::int64_t cocircular_ties = 0;
+};
+
+// The key of an edge in segment_of_edge (by value: std::minmax of temporaries dangles).
+inline std::pair<int, int> edge_key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+
+// --- cdt_build.cpp ---
+// CDT of a validated PSLG inside a far bounding box (so that no input segment
+// is ever on the convex hull), domain flags set by Triangle's -p flood.
+void build_triangulation(const Pslg& pslg, Triangulation& tr);
+// Domain triangles (CCW), input then Steiner vertices, tagged constrained edges; canonical.
+Mesh extract_mesh(const Triangulation& tr);
+// Unconstrained domain edges whose two triangles are cocircular.
+std::int64_t count_cocircular_edges(const Triangulation& tr);
+
+// --- geometry.cpp: exact decisions of ALGORITHM.md Sections 3, 4, 8 ---
+inline int id(VH v) { return v->info().id; }
+// The edge of f opposite vertex i, compared in the edge order of Section 3.
+// Returns true iff edge (f,i) is strictly greater than edge (g,j).
+bool edge_greater(FH f, int i, FH g, int j);
+int longest_edge(FH f);         // index of the vertex opposite the longest edge
+int second_longest_edge(FH f);
+int shortest_edge(FH f);
+Tri key(FH f);                  // ids sorted ascending
+Tri ccw_ids(FH f);              // ids CCW, rotated to start at the smallest
+bool is_skinny(FH f, const FT& sin2);
+bool is_too_big(FH f, const FT& twice_max_area);
+std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, const FT& sin2);
+
+struct Lepp {
+  std::vector<FH> path;  // t first, then t1, then t2 if any
+  FH t1, t2;             // t2 null for a constrained terminal edge
+  int edge = -1;         // terminal edge as index in t1
+};
+Lepp find_lepp(FH t);
+
+// --- select_point.cpp: ALGORITHM.md Sections 5 and 6 ---
+struct Selection {
+  Rule rule = Rule::QuadCentroid;
+  Point point;
+  // A midpoint of a constrained edge: the edge (face, index) it splits.
+  FH split_face;
+  int split_index = -1;
+};
+Selection select_point(const Lepp& lepp, Method method);
+// Inserts the selected point, restores the constrained Delaunay property by
+// flips (counting cocircular ties), sets ids, segment membership and domain flags.
+VH insert_point(Triangulation& tr, const Selection& s, FH t1);
+
+}  // namespace lepp::reference::detail
