@@ -1,0 +1,59 @@
+// The generators keep their promises: every PSLG validates untouched, triangles
+// are counter-clockwise, terminal pairs are Delaunay terminal pairs (checked by
+// the certifier, an independent implementation of the same conditions).
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "lepp/certify.h"
+#include "lepp/gen.h"
+#include "lepp/validate.h"
+
+namespace lepp {
+namespace {
+
+void expect_validates_untouched(const Pslg& p) {
+  RC_TAG(p.source);
+  std::vector<std::string> warnings;
+  Pslg v;
+  try {
+    v = validate(p, warnings);
+  } catch (const std::exception& e) {
+    RC_FAIL(std::string("validate rejected a generated PSLG: ") + e.what());
+  }
+  RC_ASSERT(warnings.empty());
+  RC_ASSERT(v.vertices.size() == p.vertices.size());
+  RC_ASSERT(v.segments.size() == p.segments.size());
+}
+
+RC_GTEST_PROP(Generators, AnyPslgValidates, ()) { expect_validates_untouched(*gen::anyPslg()); }
+RC_GTEST_PROP(Generators, WellShapedPslgValidatesWithAnglesAtLeast60, ()) {
+  const Pslg p = *gen::wellShapedPslg();
+  expect_validates_untouched(p);
+  RC_ASSERT(gen::min_input_angle_deg(p) >= 60 - 1e-9);
+}
+RC_GTEST_PROP(Generators, ScaledPslgValidates, ()) { expect_validates_untouched(*gen::anyPslg(1.0 / 64)); }
+
+RC_GTEST_PROP(Generators, TrianglesAreCounterClockwise, ()) {
+  const auto t = *gen::triangle();
+  const double o = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[1].y - t[0].y) * (t[2].x - t[0].x);  // exact: small integers
+  RC_ASSERT(o > 0);
+}
+
+RC_GTEST_PROP(Generators, TerminalPairsAreDelaunayTerminalPairs, ()) {
+  const gen::TerminalPair q = *gen::delaunayTerminalPair();
+  // The quad a, d, b, c as a PSLG meshed by the two triangles: the certifier must
+  // accept it (CCW, local Delaunay across ab) and find ab a terminal edge.
+  Pslg p;
+  p.vertices = {q.a, q.b, q.c, q.d};
+  p.segments = {{0, 3, 0}, {3, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 4;
+  m.triangles = {{0, 1, 2}, {1, 0, 3}};
+  const auto r = certify::certify(p, m);
+  if (!r.certified()) RC_FAIL(certify::format_report(r));
+  RC_ASSERT(r.stats.terminal_pairs_checked == 1u);
+}
+
+}  // namespace
+}  // namespace lepp
