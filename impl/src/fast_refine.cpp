@@ -213,7 +213,7 @@ class Refiner {
     for (int ti : lepp.path) s.lepp.push_back(canonical(mesh_.t(ti)));
     const FTri& f1 = mesh_.t(lepp.t1);
     int a = f1.v[next3(lepp.e1)], b = f1.v[prev3(lepp.e1)];
-    s.terminal_edge = {std::min(a, b), std::max(a, b)};
+    s.terminal_edge = {a, b};  // as t1 runs along it, counter-clockwise
     s.t1 = canonical(f1);
     if (lepp.t2 >= 0) s.t2 = canonical(mesh_.t(lepp.t2));
     s.rule = choice.rule;

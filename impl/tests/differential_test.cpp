@@ -1,0 +1,179 @@
+// impl against the reference (docs/ALGORITHM.md: identical meshes on inputs with
+// no cocircular ties): the paper corpus, generated PSLGs, and trace replay.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "lepp/certify.h"
+#include "lepp/fast.h"
+#include "lepp/io.h"
+#include "lepp/reference.h"
+#include "lepp/validate.h"
+#include "random_pslg.h"
+
+namespace lepp {
+namespace {
+
+const int fixed_seed = (setenv("RC_PARAMS", "seed=20261122", 0), 0);
+
+Pslg load(const std::string& name) {
+  std::vector<std::string> warnings;
+  return validate(read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/paper/" + name + ".poly"), warnings);
+}
+
+std::string tri(const Tri& t) { return fmt::format("({} {} {})", t[0], t[1], t[2]); }
+
+// The first difference between two results, or "" when they are the same run.
+std::string difference(const RefineResult& a, const RefineResult& b) {
+  if (a.outcome != b.outcome) return fmt::format("outcome {} vs {}", to_string(a.outcome), to_string(b.outcome));
+  if (a.steiner_points != b.steiner_points) return fmt::format("Steiner points {} vs {}", a.steiner_points, b.steiner_points);
+  const Mesh &x = a.mesh, &y = b.mesh;
+  if (x.vertices.size() != y.vertices.size()) return "vertex counts differ";
+  for (std::size_t i = 0; i < x.vertices.size(); ++i)
+    if (x.vertices[i] != y.vertices[i])
+      return fmt::format("vertex {}: ({:.17g}, {:.17g}) vs ({:.17g}, {:.17g})", i, x.vertices[i].x, x.vertices[i].y,
+                         y.vertices[i].x, y.vertices[i].y);
+  if (x.triangles.size() != y.triangles.size())
+    return fmt::format("{} vs {} triangles", x.triangles.size(), y.triangles.size());
+  for (std::size_t i = 0; i < x.triangles.size(); ++i)
+    if (x.triangles[i] != y.triangles[i]) return fmt::format("triangle {}: {} vs {}", i, tri(x.triangles[i]), tri(y.triangles[i]));
+  if (x.constrained_edges.size() != y.constrained_edges.size()) return "constrained edge counts differ";
+  for (std::size_t i = 0; i < x.constrained_edges.size(); ++i) {
+    const ConstrainedEdge &e = x.constrained_edges[i], &f = y.constrained_edges[i];
+    if (e.a != f.a || e.b != f.b || e.segment != f.segment)
+      return fmt::format("constrained edge {}: {}-{} s{} vs {}-{} s{}", i, e.a, e.b, e.segment, f.a, f.b, f.segment);
+  }
+  if (a.unimprovable.size() != b.unimprovable.size())
+    return fmt::format("{} vs {} unimprovable", a.unimprovable.size(), b.unimprovable.size());
+  for (std::size_t i = 0; i < a.unimprovable.size(); ++i) {
+    const UnimprovableTriangle &u = a.unimprovable[i], &v = b.unimprovable[i];
+    if (u.triangle != v.triangle || u.apex != v.apex || u.segment1 != v.segment1 || u.segment2 != v.segment2)
+      return fmt::format("unimprovable {}: {} apex {} s{} s{} vs {} apex {} s{} s{}", i, tri(u.triangle), u.apex,
+                         u.segment1, u.segment2, tri(v.triangle), v.apex, v.segment1, v.segment2);
+  }
+  return "";
+}
+
+// The first step where two traces disagree, or "".
+std::string trace_difference(const std::vector<TraceStep>& a, const std::vector<TraceStep>& b) {
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    const TraceStep &s = a[k], &t = b[k];
+    std::string what;
+    if (s.bad != t.bad) what = fmt::format("bad triangle {} vs {}", tri(s.bad), tri(t.bad));
+    else if (s.lepp != t.lepp) what = fmt::format("Lepp of length {} vs {}", s.lepp.size(), t.lepp.size());
+    else if (s.terminal_edge != t.terminal_edge)
+      what = fmt::format("terminal edge {}-{} vs {}-{}", s.terminal_edge[0], s.terminal_edge[1], t.terminal_edge[0], t.terminal_edge[1]);
+    else if (s.t1 != t.t1 || s.t2 != t.t2) what = "terminal triangles";
+    else if (s.rule != t.rule) what = fmt::format("rule {} vs {}", to_string(s.rule), to_string(t.rule));
+    else if (s.point != t.point) what = fmt::format("point ({:.17g}, {:.17g}) vs ({:.17g}, {:.17g})", s.point.x, s.point.y, t.point.x, t.point.y);
+    else if (s.split_segment != t.split_segment) what = fmt::format("split segment {} vs {}", s.split_segment, t.split_segment);
+    if (!what.empty()) return fmt::format("step {}: {}", k, what);
+  }
+  if (a.size() != b.size()) return fmt::format("{} vs {} steps", a.size(), b.size());
+  return "";
+}
+
+struct Case {
+  const char* name;
+  int theta;
+  Method method;
+};
+
+class PaperDifferential : public ::testing::TestWithParam<Case> {};
+
+// Identical where neither engine met a cocircular tie; side by side (and both
+// certified) where one did: the CDT of cocircular points is not unique.
+TEST_P(PaperDifferential, SameMeshAsTheReference) {
+  const Case& c = GetParam();
+  Pslg p = load(c.name);
+  RefineOptions o;
+  o.min_angle_deg = c.theta;
+  o.method = c.method;
+  RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+  RecordProperty("fast_steiner", static_cast<int>(f.steiner_points));
+  RecordProperty("reference_steiner", static_cast<int>(r.steiner_points));
+  RecordProperty("cocircular_ties", static_cast<int>(f.cocircular_ties));
+  std::string diff = difference(f, r);
+  if (f.cocircular_ties == 0 && r.cocircular_ties == 0) {
+    EXPECT_EQ(diff, "");
+  } else if (!diff.empty()) {
+    std::printf("%s theta %d %s: ties %lld/%lld, Steiner fast %lld reference %lld: %s\n", c.name, c.theta,
+                to_string(c.method), static_cast<long long>(f.cocircular_ties), static_cast<long long>(r.cocircular_ties),
+                static_cast<long long>(f.steiner_points), static_cast<long long>(r.steiner_points), diff.c_str());
+  }
+  certify::Options co;
+  co.min_angle_deg = c.theta;
+  co.unimprovable = f.unimprovable;
+  EXPECT_TRUE(certify::certify(p, f.mesh, co).certified());
+}
+
+std::vector<Case> cases() {
+  std::vector<Case> v;
+  for (const char* name : {"A", "square400", "circles240", "rect162"}) {
+    for (int theta = 20; theta <= 34; ++theta) v.push_back({name, theta, Method::Centroid});
+    for (int theta : {20, 25, 30}) v.push_back({name, theta, Method::Midpoint});
+  }
+  return v;
+}
+INSTANTIATE_TEST_SUITE_P(Paper, PaperDifferential, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<Case>& i) {
+                           return fmt::format("{}_{}_{}", i.param.name, i.param.theta, to_string(i.param.method));
+                         });
+
+RC_GTEST_PROP(Differential, SameMeshAsTheReferenceOnGeneralPosition, ()) {
+  const Pslg p = impl_test::to_pslg(*impl_test::gen_raw_pslg(16, 16));
+  RC_PRE(!p.vertices.empty());
+  RefineOptions o;
+  o.min_angle_deg = *rc::gen::inRange(15, 35);
+  o.method = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  o.order = *rc::gen::element(QueueOrder::Fifo, QueueOrder::Lifo);
+  o.max_steiner = 1500;
+  RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+  RC_CLASSIFY(f.outcome == Outcome::Converged, "converged");
+  RC_CLASSIFY(f.outcome == Outcome::Unimprovable, "unimprovable");
+  RC_CLASSIFY(f.outcome == Outcome::SteinerBudget, "budget");
+  RC_PRE(f.cocircular_ties == 0 && r.cocircular_ties == 0);
+  std::string diff = difference(f, r);
+  RC_ASSERT(diff == "");
+}
+
+RC_GTEST_PROP(Differential, TraceReplaysStepByStep, ()) {
+  const Pslg p = impl_test::to_pslg(*impl_test::gen_raw_pslg(20, 20));
+  RC_PRE(!p.vertices.empty());
+  RefineOptions o;
+  o.min_angle_deg = *rc::gen::inRange(15, 35);
+  o.method = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  o.max_steiner = 500;
+  o.trace = true;
+  RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+  RC_PRE(f.cocircular_ties == 0 && r.cocircular_ties == 0);
+  for (Rule rule : {Rule::TerminalConstrainedMidpoint, Rule::TerminalMidpoint, Rule::SecondLongestMidpoint,
+                    Rule::QuadCentroid, Rule::CentroidInOther, Rule::BothSecondLongestMidpoint}) {
+    bool used = std::any_of(f.trace.begin(), f.trace.end(), [&](const TraceStep& s) { return s.rule == rule; });
+    RC_CLASSIFY(used, to_string(rule));
+  }
+  std::string diff = trace_difference(f.trace, r.trace);
+  RC_ASSERT(diff == "");
+}
+
+TEST(Differential, TraceReplayOnThePaperProblems) {
+  for (const char* name : {"A", "circles240", "rect162", "square400"}) {
+    for (Method m : {Method::Centroid, Method::Midpoint}) {
+      Pslg p = load(name);
+      RefineOptions o;
+      o.method = m;
+      o.trace = true;
+      RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+      EXPECT_EQ(trace_difference(f.trace, r.trace), "") << name << " " << to_string(m);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lepp
