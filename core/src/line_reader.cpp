@@ -59,6 +59,7 @@ double LineReader::real(std::string_view token, const char* what) const {
   errno = 0;
   double v = std::strtod(s.c_str(), &end);
   if (end == s.c_str() || *end != '\0') fail(fmt::format("{} '{}' is not a number", what, s));
+  if (errno == ERANGE && std::isinf(v)) fail(fmt::format("{} '{}' is too large for a double (overflows)", what, s));
   if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite (NaN or infinite)", what, s));
   return v;  // subnormals and underflow to zero are accepted as written
 }

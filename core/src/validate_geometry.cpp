@@ -126,9 +126,12 @@ void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
   }
   if (cdt.dimension() < 2)
     throw InputError(file, 0,
-                     fmt::format("fewer than three non-collinear vertices ({} distinct, all on one line): nothing to "
-                                 "triangulate",
-                                 pslg.vertices.size()));
+                     pslg.vertices.size() < 3
+                         ? fmt::format("fewer than three non-collinear vertices (only {} distinct): nothing to triangulate",
+                                       pslg.vertices.size())
+                         : fmt::format("fewer than three non-collinear vertices (all {} distinct vertices lie on one "
+                                       "line): nothing to triangulate",
+                                       pslg.vertices.size()));
 
   for (std::size_t s = 0; s < pslg.segments.size(); ++s) {
     try {
