@@ -21,7 +21,7 @@ struct RefineArgs {
   std::string input, output;
   double min_angle = 30;
   std::string method = "centroid";
-  std::string engine = "reference";
+  std::string engine = "fast";
   std::string order = "fifo";
   std::int64_t max_steiner = -1;
   double max_area = 0;
@@ -132,7 +132,7 @@ void add_refine_command(CLI::App& app, int& status) {
       ->default_val("centroid")
       ->check(CLI::IsMember({"centroid", "midpoint"}));
   cmd->add_option("--engine", args->engine, "fast (optimized) or reference (exact CGAL Epeck, slow)")
-      ->default_val("reference")
+      ->default_val("fast")
       ->check(CLI::IsMember({"fast", "reference"}));
   cmd->add_option("--order", args->order, "Queue discipline for new bad triangles: fifo or lifo (docs/ALGORITHM.md)")
       ->default_val("fifo")
