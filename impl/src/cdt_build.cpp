@@ -63,6 +63,7 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
   all.tris.resize(static_cast<std::size_t>(count));
   for (auto f : cdt.finite_face_handles()) {
     FTri& t = all.t(f->info());
+    t.longest = -1;
     for (int i = 0; i < 3; ++i) {
       t.v[i] = f->vertex(i)->info();
       auto g = f->neighbor(i);

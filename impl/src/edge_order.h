@@ -49,4 +49,17 @@ class EdgeOrder {
   double len_[3];
 };
 
+// The longest edge of ti, computed once per triangle and cached in it.
+inline int longest_edge(TriMesh& m, int ti) {
+  FTri& f = m.t(ti);
+  if (f.longest < 0) f.longest = EdgeOrder(m, ti).longest();
+  return f.longest;
+}
+
+// The second-longest edge of ti.
+inline int middle_edge(TriMesh& m, int ti) {
+  const int l = longest_edge(m, ti), i = next3(l), j = prev3(l);
+  return EdgeOrder(m, ti).longer(i, j) ? i : j;
+}
+
 }  // namespace lepp::fast

@@ -185,13 +185,13 @@ class Refiner {
     // The unimprovable list, recomputed on the final mesh in key order (section 8).
     std::vector<Item> left;
     for (int ti = 0; ti < mesh_.size(); ++ti) {
-      Quality::Verdict v = quality_.judge(mesh_, ti);
-      if (v.skinny && quality_.unimprovable(mesh_, ti, v.shortest, nullptr)) left.push_back(make_item(mesh_, ti));
+      if (quality_.judge(mesh_, ti).skinny && quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr))
+        left.push_back(make_item(mesh_, ti));
     }
     std::sort(left.begin(), left.end(), key_less);
     for (const Item& it : left) {
       UnimprovableTriangle u;
-      quality_.unimprovable(mesh_, it.tri, quality_.judge(mesh_, it.tri).shortest, &u);
+      quality_.unimprovable(mesh_, it.tri, quality_.shortest_edge(mesh_, it.tri), &u);
       u.triangle = canonical(mesh_.t(it.tri));
       result.unimprovable.push_back(u);
     }
@@ -200,8 +200,7 @@ class Refiner {
     result.outcome = outcome;
     result.steiner_points = steiner;
     result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
-    result.mesh = mesh_.to_mesh(n);
-    canonicalize(result.mesh);
+    result.mesh = mesh_.to_canonical_mesh(n);
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }

@@ -14,11 +14,11 @@ struct Lepp {
 };
 
 // Fills `out` with Lepp(t). The path never crosses a constrained edge.
-inline void lepp_search(const TriMesh& m, int t, Lepp& out) {
+inline void lepp_search(TriMesh& m, int t, Lepp& out) {
   out.path.clear();
   out.t2 = out.e2 = -1;
   int cur = t;
-  int e = EdgeOrder(m, cur).longest();
+  int e = longest_edge(m, cur);
   for (;;) {
     out.path.push_back(cur);
     const FTri& f = m.t(cur);
@@ -27,7 +27,7 @@ inline void lepp_search(const TriMesh& m, int t, Lepp& out) {
       return;
     }
     int next = nbr_tri(f.nbr[e]), j = nbr_edge(f.nbr[e]);
-    int ne = EdgeOrder(m, next).longest();
+    int ne = longest_edge(m, next);
     if (ne == j) {  // e is the longest edge of both: terminal
       out.t1 = cur, out.e1 = e, out.t2 = next, out.e2 = j;
       out.path.push_back(next);

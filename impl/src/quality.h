@@ -18,23 +18,52 @@ class Quality {
 
   struct Verdict {
     bool skinny = false, too_big = false;
-    int shortest = 0;  // edge index
   };
 
-  Verdict judge(const TriMesh& m, int ti) const {
+  // Skinny iff cross^2 < S * |u|^2 |v|^2 for the two edges u, v at the smallest
+  // angle, i.e. the two longest edges: their product of squared lengths is the
+  // largest of the three products, so no edge ranking is needed unless the
+  // filter cannot decide. Caches the longest edge for the Lepp search.
+  Verdict judge(TriMesh& m, int ti) const {
+    FTri& f = m.t(ti);
+    const Point &a = m.p(f.v[0]), &b = m.p(f.v[1]), &c = m.p(f.v[2]);
+    const double e0x = c.x - b.x, e0y = c.y - b.y, e1x = a.x - c.x, e1y = a.y - c.y, e2x = b.x - a.x, e2y = b.y - a.y;
+    const double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
+    const double c1 = e2x * e1y, c2 = e2y * e1x;  // cross(b - a, c - a) = c2 - c1
+    const double cross = c2 - c1, pc = std::fabs(c1) + std::fabs(c2);
+    const double rhs = s_ * std::max(std::max(l0 * l1, l0 * l2), l1 * l2);
     Verdict v;
-    v.shortest = EdgeOrder(m, ti).rank().shortest;
-    const FTri& f = m.t(ti);
-    v.skinny = skinny_at(m.p(f.v[v.shortest]), m.p(f.v[next3(v.shortest)]), m.p(f.v[prev3(v.shortest)]), s_);
-    v.too_big = twice_area_ > 0 && area_above(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), twice_area_);
+    int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6);
+    if (sign == 2) {
+      int sh = EdgeOrder(m, ti).rank().shortest;
+      sign = skinny_at(m.p(f.v[sh]), m.p(f.v[next3(sh)]), m.p(f.v[prev3(sh)]), s_) ? 1 : -1;
+    }
+    v.skinny = sign > 0;
+    if (twice_area_ > 0) {
+      int big = detail::filtered_sign(std::fabs(cross) - twice_area_, pc + twice_area_, 4);
+      v.too_big = big == 2 ? area_above(a, b, c, twice_area_) : big > 0;
+    }
+    if (f.longest < 0) {
+      // The longest of the three, from the lengths already at hand.
+      auto longer = [&](int i, double li, int j, double lj) {
+        int s = detail::filtered_sign(li - lj, li + lj, 4);
+        if (s == 2) return EdgeOrder(m, ti).longer(i, j);
+        return s > 0;
+      };
+      int w = longer(0, l0, 1, l1) ? 0 : 1;
+      double lw = w == 0 ? l0 : l1;
+      f.longest = longer(w, lw, 2, l2) ? w : 2;
+    }
     return v;
   }
 
+  int shortest_edge(const TriMesh& m, int ti) const { return EdgeOrder(m, ti).rank().shortest; }
+
   // Bad, and not left alone by the unimprovable rule.
-  bool processed(const TriMesh& m, int ti) const {
+  bool processed(TriMesh& m, int ti) const {
     Verdict v = judge(m, ti);
     if (v.too_big) return true;
-    return v.skinny && !unimprovable(m, ti, v.shortest, nullptr);
+    return v.skinny && !unimprovable(m, ti, shortest_edge(m, ti), nullptr);
   }
 
   // The rule of section 8 for a skinny triangle with shortest edge `shortest`;

@@ -1,6 +1,9 @@
 // The cold parts of the flat mesh: segment membership and conversion to Mesh.
 #include "tri_mesh.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace lepp::fast {
 
 SegmentMembership make_membership(const Pslg& pslg) {
@@ -38,6 +41,47 @@ Mesh TriMesh::to_mesh(std::size_t input_vertices) const {
       mesh.constrained_edges.push_back({f.v[next3(i)], f.v[prev3(i)], f.seg[i]});
     }
   }
+  return mesh;
+}
+
+Mesh TriMesh::to_canonical_mesh(std::size_t input_vertices) const {
+  Mesh raw = to_mesh(input_vertices);
+  Mesh mesh;
+  mesh.input_vertices = input_vertices;
+  mesh.vertices = std::move(raw.vertices);
+  const std::size_t nv = mesh.vertices.size();
+  // Triangles: rotate to the smallest id, bucket by it, then order each (small) bucket.
+  for (Tri& t : raw.triangles)
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+  std::vector<std::size_t> start(nv + 1, 0);
+  for (const Tri& t : raw.triangles) ++start[static_cast<std::size_t>(t[0]) + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  mesh.triangles.resize(raw.triangles.size());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (const Tri& t : raw.triangles) mesh.triangles[fill[static_cast<std::size_t>(t[0])]++] = t;
+  }
+  raw.triangles = {};
+  for (std::size_t v = 0; v < nv; ++v)
+    std::sort(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              mesh.triangles.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
+  // Constrained edges: a < b, then the same bucket order by a.
+  for (ConstrainedEdge& e : raw.constrained_edges)
+    if (e.a > e.b) std::swap(e.a, e.b);
+  std::fill(start.begin(), start.end(), 0);
+  for (const ConstrainedEdge& e : raw.constrained_edges) ++start[static_cast<std::size_t>(e.a) + 1];
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  mesh.constrained_edges.resize(raw.constrained_edges.size());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (const ConstrainedEdge& e : raw.constrained_edges) mesh.constrained_edges[fill[static_cast<std::size_t>(e.a)]++] = e;
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    std::sort(mesh.constrained_edges.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              mesh.constrained_edges.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [](const ConstrainedEdge& x, const ConstrainedEdge& y) {
+                return x.b != y.b ? x.b < y.b : x.segment < y.segment;
+              });
   return mesh;
 }
 

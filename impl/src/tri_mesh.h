@@ -19,6 +19,7 @@ struct FTri {
   int v[3];
   int nbr[3];
   int seg[3];
+  int longest;  // index of the longest edge in the edge order, -1 until computed
 };
 
 inline int next3(int i) { return i == 2 ? 0 : i + 1; }
@@ -88,6 +89,8 @@ struct TriMesh {
 
   // Domain triangles as a Mesh (vertices in id order, not canonicalized).
   Mesh to_mesh(std::size_t input_vertices) const;
+  // The same in lepp::canonicalize's order, by bucket sorts (linear time).
+  Mesh to_canonical_mesh(std::size_t input_vertices) const;
 };
 
 template <class F>
@@ -117,9 +120,9 @@ inline void TriMesh::split_triangle(int ti, int p, int out[3]) {
   const int t0 = ti, t1 = size(), t2 = size() + 1;
   tris.resize(tris.size() + 2);
   // t0 = (p, b, c), t1 = (p, c, a), t2 = (p, a, b); edge 0 of each is an old edge.
-  t(t0) = FTri{{p, b, c}, {old.nbr[0], nbr_code(t1, 2), nbr_code(t2, 1)}, {old.seg[0], -1, -1}};
-  t(t1) = FTri{{p, c, a}, {old.nbr[1], nbr_code(t2, 2), nbr_code(t0, 1)}, {old.seg[1], -1, -1}};
-  t(t2) = FTri{{p, a, b}, {old.nbr[2], nbr_code(t0, 2), nbr_code(t1, 1)}, {old.seg[2], -1, -1}};
+  t(t0) = FTri{{p, b, c}, {old.nbr[0], nbr_code(t1, 2), nbr_code(t2, 1)}, {old.seg[0], -1, -1}, -1};
+  t(t1) = FTri{{p, c, a}, {old.nbr[1], nbr_code(t2, 2), nbr_code(t0, 1)}, {old.seg[1], -1, -1}, -1};
+  t(t2) = FTri{{p, a, b}, {old.nbr[2], nbr_code(t0, 2), nbr_code(t1, 1)}, {old.seg[2], -1, -1}, -1};
   relink(old.nbr[0], nbr_code(t0, 0));
   relink(old.nbr[1], nbr_code(t1, 0));
   relink(old.nbr[2], nbr_code(t2, 0));
@@ -135,8 +138,8 @@ inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
   const int t0 = ti, t1 = size();
   if (across < 0) {
     tris.resize(tris.size() + 1);
-    t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), -1}, {sa, -1, segment}};
-    t(t1) = FTri{{p, c, a}, {nb, -1, nbr_code(t0, 1)}, {sb, segment, -1}};
+    t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), -1}, {sa, -1, segment}, -1};
+    t(t1) = FTri{{p, c, a}, {nb, -1, nbr_code(t0, 1)}, {sb, segment, -1}, -1};
     relink(na, nbr_code(t0, 0));
     relink(nb, nbr_code(t1, 0));
     out[0] = t0, out[1] = t1;
@@ -149,10 +152,10 @@ inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
   const int mb = on.nbr[next3(j)], smb = on.seg[next3(j)];  // edge (a, d), opposite b
   const int ma = on.nbr[prev3(j)], sma = on.seg[prev3(j)];  // edge (d, b), opposite a
   tris.resize(tris.size() + 2);
-  t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(n1, 1)}, {sa, -1, segment}};
-  t(t1) = FTri{{p, c, a}, {nb, nbr_code(n0, 2), nbr_code(t0, 1)}, {sb, segment, -1}};
-  t(n0) = FTri{{p, a, d}, {mb, nbr_code(n1, 2), nbr_code(t1, 1)}, {smb, -1, segment}};
-  t(n1) = FTri{{p, d, b}, {ma, nbr_code(t0, 2), nbr_code(n0, 1)}, {sma, segment, -1}};
+  t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(n1, 1)}, {sa, -1, segment}, -1};
+  t(t1) = FTri{{p, c, a}, {nb, nbr_code(n0, 2), nbr_code(t0, 1)}, {sb, segment, -1}, -1};
+  t(n0) = FTri{{p, a, d}, {mb, nbr_code(n1, 2), nbr_code(t1, 1)}, {smb, -1, segment}, -1};
+  t(n1) = FTri{{p, d, b}, {ma, nbr_code(t0, 2), nbr_code(n0, 1)}, {sma, segment, -1}, -1};
   relink(na, nbr_code(t0, 0));
   relink(nb, nbr_code(t1, 0));
   relink(mb, nbr_code(n0, 0));
@@ -170,8 +173,8 @@ inline int TriMesh::flip_edge0(int ti) {
   const int m1 = on.nbr[next3(j)], s1 = on.seg[next3(j)];  // edge (a, d)
   const int m2 = on.nbr[prev3(j)], s2 = on.seg[prev3(j)];  // edge (d, b)
   // ti = (p, a, d), ni = (p, d, b).
-  t(ti) = FTri{{p, a, d}, {m1, nbr_code(ni, 2), old.nbr[2]}, {s1, -1, old.seg[2]}};
-  t(ni) = FTri{{p, d, b}, {m2, old.nbr[1], nbr_code(ti, 1)}, {s2, old.seg[1], -1}};
+  t(ti) = FTri{{p, a, d}, {m1, nbr_code(ni, 2), old.nbr[2]}, {s1, -1, old.seg[2]}, -1};
+  t(ni) = FTri{{p, d, b}, {m2, old.nbr[1], nbr_code(ti, 1)}, {s2, old.seg[1], -1}, -1};
   relink(m1, nbr_code(ti, 0));
   relink(m2, nbr_code(ni, 0));
   relink(old.nbr[1], nbr_code(ni, 1));

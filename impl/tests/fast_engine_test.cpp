@@ -2,6 +2,7 @@
 // invariants (mesh_invariants.h), guards, trace, size bound, unimprovable rule.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -107,6 +108,26 @@ TEST(FastEngine, DeterministicAcrossRuns) {
   RefineResult a = fast::refine(p, o), b = fast::refine(p, o);
   EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+}
+
+// The engine's linear-time canonical order is lepp::canonicalize's.
+TEST(FastEngine, OutputIsInCanonicalOrder) {
+  Pslg p = load("circles240");
+  RefineOptions o;
+  o.max_area = 0.01;
+  RefineResult r = fast::refine(p, o);
+  Mesh again = r.mesh;
+  std::reverse(again.triangles.begin(), again.triangles.end());
+  std::reverse(again.constrained_edges.begin(), again.constrained_edges.end());
+  for (ConstrainedEdge& e : again.constrained_edges) std::swap(e.a, e.b);
+  canonicalize(again);
+  EXPECT_EQ(again.triangles, r.mesh.triangles);
+  ASSERT_EQ(again.constrained_edges.size(), r.mesh.constrained_edges.size());
+  for (std::size_t i = 0; i < again.constrained_edges.size(); ++i) {
+    EXPECT_EQ(again.constrained_edges[i].a, r.mesh.constrained_edges[i].a);
+    EXPECT_EQ(again.constrained_edges[i].b, r.mesh.constrained_edges[i].b);
+    EXPECT_EQ(again.constrained_edges[i].segment, r.mesh.constrained_edges[i].segment);
+  }
 }
 
 TEST(FastEngine, SteinerBudgetStopsWithAValidCdt) {
