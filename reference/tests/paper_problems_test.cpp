@@ -1,0 +1,90 @@
+// The reference engine on the paper's four problems (Section 5.1): it
+// converges for theta = 20, 25, 30 with both methods, and its meshes keep the
+// input and meet the angle bound, checked exactly by mesh_checks.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+
+#include "lepp/io.h"
+#include "lepp/reference.h"
+#include "lepp/validate.h"
+#include "mesh_checks.h"
+
+namespace lepp::reference {
+namespace {
+
+using testing::check_ccw;
+using testing::check_input_vertices;
+using testing::check_locally_delaunay;
+using testing::check_min_angle;
+using testing::check_segment_chains;
+
+Pslg paper_problem(const std::string& name) {
+  std::vector<std::string> warnings;
+  return validate(read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/paper/" + name + ".poly"), warnings);
+}
+
+class PaperProblem : public ::testing::TestWithParam<std::tuple<std::string, double, Method>> {};
+
+TEST_P(PaperProblem, ConvergesWithEveryAngleAtLeastTheta) {
+  const auto& [name, theta, method] = GetParam();
+  Pslg input = paper_problem(name);
+  RefineOptions options;
+  options.min_angle_deg = theta;
+  options.method = method;
+  RefineResult result = refine(input, options);
+  EXPECT_EQ(result.outcome, Outcome::Converged) << result.stuck;
+  EXPECT_TRUE(result.unimprovable.empty());
+  EXPECT_GT(result.steiner_points, 0);
+  EXPECT_EQ(result.mesh.vertices.size(), input.vertices.size() + static_cast<std::size_t>(result.steiner_points));
+  EXPECT_EQ(result.lepp_searches, result.steiner_points);
+  EXPECT_GE(result.lepp_triangles, result.lepp_searches);
+  EXPECT_EQ(check_min_angle(result.mesh, theta), "");
+  EXPECT_EQ(check_input_vertices(result.mesh, input), "");
+  EXPECT_EQ(check_segment_chains(result.mesh, input), "");
+  EXPECT_EQ(check_ccw(result.mesh), "");
+  EXPECT_EQ(check_locally_delaunay(result.mesh), "");
+}
+
+INSTANTIATE_TEST_SUITE_P(Reference, PaperProblem,
+                         ::testing::Combine(::testing::Values("square400", "circles240", "rect162", "A"),
+                                            ::testing::Values(20.0, 25.0, 30.0),
+                                            ::testing::Values(Method::Centroid, Method::Midpoint)),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_" + std::to_string(static_cast<int>(std::get<1>(info.param))) +
+                                  "_" + to_string(std::get<2>(info.param));
+                         });
+
+// Before refinement: the CDT of the input, Delaunay on unconstrained edges.
+TEST(ReferenceCdt, PaperProblemsAreConstrainedDelaunay) {
+  for (const char* name : {"square400", "circles240", "rect162", "A"}) {
+    Pslg input = paper_problem(name);
+    Mesh cdt = build_cdt(input);
+    EXPECT_EQ(cdt.vertices.size(), input.vertices.size()) << name;
+    EXPECT_EQ(check_locally_delaunay(cdt), "") << name;
+    EXPECT_EQ(check_ccw(cdt), "") << name;
+    EXPECT_EQ(check_input_vertices(cdt, input), "") << name;
+    EXPECT_EQ(check_segment_chains(cdt, input), "") << name;
+  }
+}
+
+// Same input, same options: the same mesh, bit for bit.
+TEST(ReferenceRefine, IsDeterministic) {
+  Pslg input = paper_problem("A");
+  RefineOptions options;
+  options.trace = true;
+  RefineResult a = refine(input, options), b = refine(input, options);
+  EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  ASSERT_EQ(a.trace.size(), b.trace.size());
+  ASSERT_EQ(a.trace.size(), static_cast<std::size_t>(a.steiner_points));
+  for (std::size_t i = 0; i < a.trace.size(); ++i) {
+    EXPECT_EQ(a.trace[i].point, b.trace[i].point);
+    // The trace's points are the Steiner vertices, in insertion order.
+    EXPECT_EQ(a.trace[i].point, a.mesh.vertices[input.vertices.size() + i]);
+  }
+}
+
+}  // namespace
+}  // namespace lepp::reference
