@@ -78,9 +78,30 @@ Selection select_point(const Lepp& lepp, Method method) {
 
 namespace {
 
+// The faces around a new vertex v (made by the insertion, flags unset) are
+// all in the domain, except for a split constrained edge ab: counter-clockwise
+// around v from the edge v->b (the direction a->b) to v->a lies the left side
+// of ab, then the right side. Flips never cross a constrained edge and reuse
+// both faces on one side, so the flags set here stay right through them.
+void set_domain_flags(Triangulation& tr, VH v, VH a, VH b, bool left_in, bool right_in) {
+  Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+  if (a == VH()) {
+    do fc->info().in_domain = true; while (++fc != done);
+    return;
+  }
+  while (fc->vertex(Cdt::ccw(fc->index(v))) != b) ++fc;
+  done = fc;
+  bool in = left_in;
+  do {
+    fc->info().in_domain = in;
+    if (fc->vertex(Cdt::cw(fc->index(v))) == a) in = right_in;  // crossing v->a to the right side
+  } while (++fc != done);
+}
+
 // Lawson flips around the new vertex v, never across a constrained edge. An
-// edge is flipped only when the opposite vertex is strictly inside the
-// circumcircle; a cocircular quad is left as it is and counted.
+// edge is flipped only when the new vertex is strictly inside the circumcircle
+// of the triangle across it; a cocircular quad is left as it is and counted
+// (in the domain only: a boundary split also flips outside).
 void restore_delaunay(Triangulation& tr, VH v) {
   std::vector<FH> stack;
   Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
@@ -92,7 +113,7 @@ void restore_delaunay(Triangulation& tr, VH v) {
     FH n = f->neighbor(i);
     if (f->is_constrained(i) || tr.cdt.is_infinite(f) || tr.cdt.is_infinite(n)) continue;
     CGAL::Oriented_side side = tr.cdt.side_of_oriented_circle(n, v->point(), false);
-    if (side == CGAL::ON_ORIENTED_BOUNDARY) ++tr.cocircular_ties;
+    if (side == CGAL::ON_ORIENTED_BOUNDARY && f->info().in_domain) ++tr.cocircular_ties;
     if (side != CGAL::ON_POSITIVE_SIDE) continue;
     tr.cdt.flip(f, i);  // f and n now both have v as a vertex
     stack.push_back(f);
@@ -147,25 +168,15 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
     tr.segment_of_edge[edge_key(id(a), id(v))] = segments[0];
     tr.segment_of_edge[edge_key(id(v), id(b))] = segments[0];
   }
-  restore_delaunay(tr, v);
-
-  // New faces are all incident to v. Going counter-clockwise around v from
-  // the edge v->b (the direction a->b) sweeps the left side of ab until v->a.
+  // A midpoint half an ulp off its segment must still make positive triangles.
   Cdt::Face_circulator fc = cdt.incident_faces(v), done = fc;
-  if (split) {
-    while (fc->vertex(Cdt::ccw(fc->index(v))) != b) ++fc;
-    done = fc;
-  }
-  bool in = split ? left_in : true;
   do {
-    FH f = fc;
-    int i = f->index(v);
-    if (!cdt.is_infinite(f) &&
-        CGAL::orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) != CGAL::LEFT_TURN)
+    if (!cdt.is_infinite(fc) &&
+        CGAL::orientation(fc->vertex(0)->point(), fc->vertex(1)->point(), fc->vertex(2)->point()) != CGAL::LEFT_TURN)
       throw std::logic_error("reference: insertion made a triangle that is not counter-clockwise");
-    f->info().in_domain = in;
-    if (split && f->vertex(Cdt::cw(i)) == a) in = right_in;  // crossing v->a to the right side
   } while (++fc != done);
+  set_domain_flags(tr, v, split ? a : VH(), split ? b : VH(), left_in, right_in);
+  restore_delaunay(tr, v);
   return v;
 }
 
