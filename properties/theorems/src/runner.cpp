@@ -1,0 +1,124 @@
+// Runs a statement's property with fixed parameters (rc::detail::checkProperty,
+// the same engine RC_GTEST_PROP uses) and writes the certificate table.
+#include <rapidcheck.h>
+
+#include <chrono>
+#include <sstream>
+
+#include "lepp/theorems/statements.h"
+
+namespace lepp::theorems {
+
+RunOutcome run_statement(const Statement& s, int cases, int inputs, std::uint64_t seed) {
+  RunOutcome out;
+  auto t0 = std::chrono::steady_clock::now();
+  if (s.statistic) {
+    bool holds = false;
+    out.statistic = s.statistic(inputs, &holds);
+    out.passed = holds;
+    out.cases = inputs;
+    out.applicable = inputs;
+  } else {
+    rc::detail::TestParams params;
+    params.seed = seed;
+    params.maxSuccess = cases;
+    params.maxSize = 100;
+    params.maxDiscardRatio = 10;
+    rc::detail::TestMetadata metadata;
+    metadata.id = s.suite + "/" + s.name;
+    metadata.description = s.name;
+    auto result = rc::detail::checkProperty(rc::detail::toProperty(s.property), metadata, params);
+    if (result.is<rc::detail::SuccessResult>()) {
+      auto success = result.get<rc::detail::SuccessResult>();
+      out.passed = true;
+      out.cases = success.numSuccess;
+      out.applicable = success.numSuccess;
+      for (const auto& [tags, count] : success.distribution) {
+        std::string key;
+        for (const auto& t : tags) key += (key.empty() ? "" : ", ") + t;
+        out.classes[key] += count;
+        for (const auto& t : tags)
+          if (t == "hypothesis not met") out.applicable -= count;
+      }
+    } else if (result.is<rc::detail::FailureResult>()) {
+      auto failure = result.get<rc::detail::FailureResult>();
+      out.cases = failure.numSuccess + 1;
+      std::ostringstream ss;
+      // RC_FAIL's description is "file:line:\nRC_FAIL(v.detail)\n\n<message>": keep the message.
+      std::string d = failure.description;
+      auto cut = d.rfind("\n\n");
+      ss << (cut == std::string::npos ? d : d.substr(cut + 2));
+      for (const auto& [type, value] : failure.counterExample) ss << " | " << type << ": " << value;
+      out.counterexample = ss.str();
+    } else if (result.is<rc::detail::GaveUpResult>()) {
+      auto gave = result.get<rc::detail::GaveUpResult>();
+      out.gave_up = true;
+      out.cases = gave.numSuccess;
+      out.counterexample = "gave up: " + gave.description;
+    } else {
+      out.counterexample = "error: " + result.get<rc::detail::Error>().description;
+    }
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+namespace {
+const CertificateRow* row_of(const std::vector<CertificateRow>& rows, const std::string& id) {
+  for (const auto& r : rows)
+    if (r.statement->suite + "." + r.statement->name == id) return &r;
+  return nullptr;
+}
+// A row is fine when it holds, or when it is a documented finding whose
+// counterexample reproduced and whose narrowed statement holds.
+bool row_ok(const std::vector<CertificateRow>& rows, const CertificateRow& r) {
+  if (r.statement->finding.empty()) return r.outcome.passed;
+  const CertificateRow* n = row_of(rows, r.statement->narrowed);
+  return n && n->outcome.passed;
+}
+std::string escape(std::string s) {
+  for (auto& c : s)
+    if (c == '\n') c = ' ';
+  for (std::size_t i = 0; (i = s.find('|', i)) != std::string::npos; i += 2) s.replace(i, 1, "\\|");
+  return s;
+}
+}  // namespace
+
+bool certificate_ok(const std::vector<CertificateRow>& rows) {
+  for (const auto& r : rows)
+    if (!row_ok(rows, r)) return false;
+  return true;
+}
+
+std::string certificate_markdown(const std::vector<CertificateRow>& rows, bool long_run, int cases, int inputs) {
+  std::ostringstream md;
+  md << "| where | property | interpretation | cases: default / long | this run (" << (long_run ? "long" : "default")
+     << ") | result |\n|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    const Statement& s = *r.statement;
+    const RunOutcome& o = r.outcome;
+    std::string counts = s.statistic ? std::to_string(kDefaultInputs) + " / " + std::to_string(kLongInputs) + " PSLGs"
+                                     : std::to_string(kDefaultCases) + " / " + std::to_string(kLongCases);
+    std::string run = s.statistic ? std::to_string(o.cases) + " PSLGs"
+                                  : std::to_string(o.cases) + " cases, " + std::to_string(o.applicable) + " applicable";
+    std::string result;
+    if (s.statistic) {
+      result = (o.passed ? "**holds**: " : "**does not hold**: ") + o.statistic;
+    } else if (!s.finding.empty()) {
+      result = o.passed ? "**finding not reproduced in this run** (the corpus counterexample is still checked by ctest). "
+                        : "**counterexample** (documented finding): " + o.counterexample + ". ";
+      result += s.finding + " Counterexample kept in `" + s.corpus + "`; narrowed: `" + s.narrowed + "`.";
+    } else if (o.passed) {
+      result = "**holds**";
+    } else {
+      result = "**FAILS**: " + o.counterexample;
+    }
+    md << "| " << s.where << " | `" << s.suite << "." << s.name << "` | " << escape(s.interpretation) << " | " << counts
+       << " | " << run << " | " << escape(result) << " |\n";
+  }
+  (void)cases;
+  (void)inputs;
+  return md.str();
+}
+
+}  // namespace lepp::theorems

@@ -1,0 +1,74 @@
+#include "lepp/theorems/theorem_gen.h"
+
+namespace lepp::theorems::gen {
+
+namespace {
+rc::Gen<GridPoint> point(int lo, int hi) {
+  return rc::gen::apply([](std::int64_t x, std::int64_t y) { return GridPoint{x, y}; },
+                        rc::gen::inRange<std::int64_t>(lo, hi + 1), rc::gen::inRange<std::int64_t>(lo, hi + 1));
+}
+bool degenerate(const GridTriangle& t) {
+  return (t.p[1].x - t.p[0].x) * (t.p[2].y - t.p[0].y) - (t.p[1].y - t.p[0].y) * (t.p[2].x - t.p[0].x) == 0;
+}
+}  // namespace
+
+rc::Gen<GridTriangle> triangle(int range) {
+  auto any = rc::gen::apply([](GridPoint a, GridPoint b, GridPoint c) { return GridTriangle{{a, b, c}}; },
+                            point(-range, range), point(-range, range), point(-range, range));
+  // Isosceles triangles (apex on the perpendicular bisector of an even base), where ties live.
+  auto isosceles = rc::gen::exec([range] {
+    // Base a b = m -+ 4h, apex m + k perp(h): k < 4 gives the thin obtuse ones (BC = CA), k > 4 the tall ones.
+    GridPoint m = *point(-range / 2, range / 2);
+    GridPoint h = *point(-range / 8, range / 8);
+    std::int64_t k = *rc::gen::inRange<std::int64_t>(1, 13);
+    GridPoint a{m.x + 4 * h.x, m.y + 4 * h.y}, b{m.x - 4 * h.x, m.y - 4 * h.y}, c{m.x - k * h.y, m.y + k * h.x};
+    return GridTriangle{{a, b, c}};
+  });
+  return rc::gen::suchThat(rc::gen::weightedOneOf<GridTriangle>({{3, any}, {1, isosceles}}),
+                           [](const GridTriangle& t) { return !degenerate(t); });
+}
+
+rc::Gen<TerminalQuad> terminal_quad() {
+  auto raw = rc::gen::exec([] {
+    const std::int64_t n = *rc::gen::inRange<std::int64_t>(2, 17);
+    GridPoint dir = *rc::gen::suchThat(point(-6, 6), [](const GridPoint& d) { return d.x != 0 || d.y != 0; });
+    GridPoint origin = *point(-20, 20);
+    auto at = [&](std::int64_t i, std::int64_t j, GridPoint e) {
+      // origin + i (p, q) + j (-q, p) + e
+      return GridPoint{origin.x + i * dir.x - j * dir.y + e.x, origin.y + i * dir.y + j * dir.x + e.y};
+    };
+    const GridPoint zero{0, 0};
+    std::int64_t ci = *rc::gen::inRange<std::int64_t>(0, n + 1), cj = *rc::gen::inRange<std::int64_t>(1, n);
+    GridPoint ce = *rc::gen::weightedOneOf<GridPoint>({{2, rc::gen::just(zero)}, {1, point(-2, 2)}});
+    bool mirror = *rc::gen::weightedElement<bool>({{7, false}, {1, true}});
+    std::int64_t di = mirror ? ci : *rc::gen::inRange<std::int64_t>(0, n + 1);
+    std::int64_t dj = mirror ? cj : *rc::gen::inRange<std::int64_t>(1, n);
+    GridPoint de = mirror ? zero : *rc::gen::weightedOneOf<GridPoint>({{2, rc::gen::just(zero)}, {1, point(-2, 2)}});
+    return TerminalQuad{at(n, 0, zero), at(0, 0, zero), at(ci, cj, ce), at(di, -dj, de)};
+  });
+  return rc::gen::suchThat(raw, [](const TerminalQuad& q) { return is_delaunay_terminal_pair(q); });
+}
+
+rc::Gen<std::vector<GridPoint>> mesh_points() {
+  return rc::gen::exec([] {
+    const int count = *rc::gen::inRange(4, 41);
+    return *rc::gen::container<std::vector<GridPoint>>(count, point(0, 300));
+  });
+}
+
+rc::Gen<Theorem2EqualityInput> theorem2_equality() {
+  return rc::gen::exec([] {
+    Theorem2EqualityInput in;
+    in.A = *point(-20, 20);
+    in.B = *rc::gen::suchThat(point(-20, 20), [&](const GridPoint& b) { return b.x != in.A.x || b.y != in.A.y; });
+    in.s_den = *rc::gen::inRange<std::int64_t>(1, 20);
+    in.s_num = *rc::gen::inRange<std::int64_t>(-in.s_den + 1, in.s_den);
+    bool at_apex = *rc::gen::weightedElement<bool>({{7, false}, {1, true}});
+    in.d_den = *rc::gen::inRange<std::int64_t>(1, 100);
+    in.dx = at_apex ? 0 : *rc::gen::inRange<std::int64_t>(-3, 4);
+    in.dy = at_apex ? 0 : *rc::gen::inRange<std::int64_t>(-3, 4);
+    return in;
+  });
+}
+
+}  // namespace lepp::theorems::gen
