@@ -107,9 +107,9 @@ def main():
     out = sys.argv[2]
     os.makedirs(out, exist_ok=True)
     per_problem(runs, out, "fig10_min_area_quality.png", "Fig. 10: minimum area quality vs number of vertices",
-                ["centroid", "midpoint"], "vertices", "min_area_quality", "vertices", "minimum area quality q")
+                ["centroid", "midpoint"], "vertices", "min_area_quality", "vertices", "minimum area quality q", logx=True)
     per_problem(runs, out, "fig11_avg_min_angle.png", "Fig. 11: average smallest angle vs number of vertices",
-                ["centroid", "midpoint"], "vertices", "avg_min_angle", "vertices", "average smallest angle (°)")
+                ["centroid", "midpoint"], "vertices", "avg_min_angle", "vertices", "average smallest angle (°)", logx=True)
     fig12(runs, out)
     per_problem(runs, out, "fig14_min_angle.png", "Fig. 14: minimum angle vs number of vertices",
                 ["centroid", "triangle", "cgal"], "vertices", "min_angle", "vertices", "minimum angle (°)", logx=True)
