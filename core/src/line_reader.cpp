@@ -12,6 +12,24 @@
 #include "lepp/io.h"
 
 namespace lepp::detail {
+namespace {
+
+// A token as it may appear in a one-line message: control bytes (NUL, ...)
+// shown as \xNN, and at most 40 characters.
+std::string printable(std::string_view token) {
+  std::string out;
+  for (char c : token.substr(0, 40)) {
+    unsigned char u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f)
+      out += fmt::format("\\x{:02x}", u);
+    else
+      out += c;
+  }
+  if (token.size() > 40) out += "...";
+  return out;
+}
+
+}  // namespace
 
 LineReader::LineReader(std::string path) : path_(std::move(path)) {
   std::ifstream in(path_, std::ios::binary);
@@ -58,9 +76,9 @@ double LineReader::real(std::string_view token, const char* what) const {
   char* end = nullptr;
   errno = 0;
   double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0') fail(fmt::format("{} '{}' is not a number", what, s));
-  if (errno == ERANGE && std::isinf(v)) fail(fmt::format("{} '{}' is too large for a double (overflows)", what, s));
-  if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite (NaN or infinite)", what, s));
+  if (end == s.c_str() || end != s.c_str() + s.size()) fail(fmt::format("{} '{}' is not a number", what, printable(s)));
+  if (errno == ERANGE && std::isinf(v)) fail(fmt::format("{} '{}' is too large for a double (overflows)", what, printable(s)));
+  if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite (NaN or infinite)", what, printable(s)));
   return v;  // subnormals and underflow to zero are accepted as written
 }
 
@@ -69,8 +87,8 @@ std::int64_t LineReader::integer(std::string_view token, const char* what) const
   char* end = nullptr;
   errno = 0;
   long long v = std::strtoll(s.c_str(), &end, 10);
-  if (end == s.c_str() || *end != '\0') fail(fmt::format("{} '{}' is not an integer", what, s));
-  if (errno == ERANGE) fail(fmt::format("{} '{}' is out of range", what, s));
+  if (end == s.c_str() || end != s.c_str() + s.size()) fail(fmt::format("{} '{}' is not an integer", what, printable(s)));
+  if (errno == ERANGE) fail(fmt::format("{} '{}' is out of range", what, printable(s)));
   return v;
 }
 

@@ -1,6 +1,7 @@
 // PREFIX.node/.ele/.poly (and .unimprovable) in and out, as Triangle writes them.
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
 
 #include <fmt/format.h>
@@ -160,10 +161,16 @@ std::vector<UnimprovableTriangle> read_unimprovable(const std::string& prefix) {
     in.expect(t, "unimprovable triangle");
     in.fields(t, 7, 7, "unimprovable line (v1 v2 v3 apex segment1 segment2 angle)");
     UnimprovableTriangle u;
-    for (int k = 0; k < 3; ++k) u.triangle[k] = static_cast<int>(in.integer(t[k], "vertex id") - 1);
-    u.apex = static_cast<int>(in.integer(t[3], "apex") - 1);
-    u.segment1 = static_cast<int>(in.integer(t[4], "segment") - 1);
-    u.segment2 = static_cast<int>(in.integer(t[5], "segment") - 1);
+    // 1-based ids; checked against the mesh and input by the certifier, here only for range.
+    auto id = [&](std::string_view token, const char* what) {
+      std::int64_t v = in.integer(token, what);
+      if (v < 1 || v > std::numeric_limits<int>::max()) in.fail(fmt::format("{} {} out of range", what, v));
+      return static_cast<int>(v - 1);
+    };
+    for (int k = 0; k < 3; ++k) u.triangle[k] = id(t[k], "vertex id");
+    u.apex = id(t[3], "apex");
+    u.segment1 = id(t[4], "segment");
+    u.segment2 = id(t[5], "segment");
     u.input_angle_deg = in.real(t[6], "angle");
     list.push_back(u);
   }

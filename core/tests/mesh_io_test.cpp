@@ -130,3 +130,16 @@ TEST(MeshIo, BrokenEleIsAnInputError) {
 
 }  // namespace
 }  // namespace lepp
+
+namespace lepp {
+namespace {
+
+TEST(MeshIo, UnimprovableWithBadIdsIsAnInputError) {
+  const std::string prefix = temp_prefix("unimp_bad");
+  std::ofstream(prefix + ".unimprovable") << "1\n1 2 3 0 1 2 5.0\n";  // apex 0 in a 1-based file
+  EXPECT_THROW(read_unimprovable(prefix), InputError);
+  std::filesystem::remove(prefix + ".unimprovable");
+}
+
+}  // namespace
+}  // namespace lepp
