@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# `lepp certify` exit statuses on files: 0 certified, 1 violations (listed), 2 unreadable.
+# usage: certify_cli_test.sh LEPP_BINARY SOURCE_DIR
+set -u
+lepp=$1; src=$2
+dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+"$lepp" refine "$src/corpus/paper/A.poly" -o "$dir/a" --min-angle 30 -q > /dev/null || fail "refine"
+"$lepp" certify "$src/corpus/paper/A.poly" "$dir/a" --min-angle 30 > "$dir/out" ; s=$?
+[ $s -eq 0 ] || { cat "$dir/out"; fail "certified mesh: exit $s"; }
+grep -q '^CERTIFIED' "$dir/out" || fail "no CERTIFIED line"
+"$lepp" certify "$src/corpus/paper/A.poly" "$dir/a" --min-angle 30 --json | grep -q '"certified": true' || fail "json"
+# Clockwise: swap two corners of the first triangle (line 2 of the .ele).
+awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' "$dir/a.ele" > "$dir/b.ele"; cp "$dir/a.node" "$dir/b.node"; cp "$dir/a.poly" "$dir/b.poly"
+"$lepp" certify "$src/corpus/paper/A.poly" "$dir/b" > "$dir/out"; s=$?
+[ $s -eq 1 ] || fail "clockwise triangle: exit $s"
+grep -q '^not-counter-clockwise: triangle 0' "$dir/out" || { cat "$dir/out"; fail "violation not listed"; }
+"$lepp" certify "$src/corpus/paper/A.poly" "$dir/missing" > /dev/null 2>&1; s=$?
+[ $s -eq 2 ] || fail "missing mesh: exit $s"
+echo "OK"
