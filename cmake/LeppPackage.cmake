@@ -1,0 +1,38 @@
+# Install and export lepp as a CMake package: find_package(lepp) gives
+# lepp::core (data model, formats, validation), lepp::certify (the exact
+# certifier), lepp::gen (RapidCheck generators, when RapidCheck was found),
+# lepp::reference and lepp::impl (the two engines). examples/outside_project uses it;
+# scripts/ci.d/20-example.sh builds that against a temporary install prefix.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set_target_properties(lepp_core PROPERTIES EXPORT_NAME core)
+set_target_properties(lepp_reference PROPERTIES EXPORT_NAME reference)
+set_target_properties(lepp_impl PROPERTIES EXPORT_NAME impl)
+set(LEPP_EXPORTED_TARGETS lepp_core lepp_certify lepp_reference lepp_impl)
+set(LEPP_EXPORT_GEN OFF)
+if(TARGET lepp_gen)
+  list(APPEND LEPP_EXPORTED_TARGETS lepp_gen)
+  set(LEPP_EXPORT_GEN ON)
+endif()
+
+install(TARGETS ${LEPP_EXPORTED_TARGETS} EXPORT leppTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY
+    ${PROJECT_SOURCE_DIR}/core/include/lepp
+    ${PROJECT_SOURCE_DIR}/properties/certify/include/lepp
+    ${PROJECT_SOURCE_DIR}/reference/include/lepp
+    ${PROJECT_SOURCE_DIR}/impl/include/lepp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(LEPP_EXPORT_GEN)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/properties/gen/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
+
+set(LEPP_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/lepp)
+install(EXPORT leppTargets NAMESPACE lepp:: DESTINATION ${LEPP_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/leppConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/leppConfig.cmake INSTALL_DESTINATION ${LEPP_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/leppConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/leppConfig.cmake ${PROJECT_BINARY_DIR}/leppConfigVersion.cmake DESTINATION ${LEPP_CMAKE_DIR})
