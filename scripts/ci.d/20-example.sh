@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# lepp as a package: install build/ into a temporary prefix, then configure,
+# build and run examples/outside_project against it (find_package(lepp)).
+# LEPP_BUILD_DIR overrides the build directory (default build/, made by scripts/build.sh).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${LEPP_BUILD_DIR:-build}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+cmake -S examples/outside_project -B "$work/example" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix"
+cmake --build "$work/example"
+RC_PARAMS="${RC_PARAMS:-seed=20261122 max_success=100}" "$work/example/cdt_property"
