@@ -108,9 +108,8 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
   for (int ti = 0; ti < count; ++ti)
     if (!removed[static_cast<std::size_t>(ti)]) new_id[static_cast<std::size_t>(ti)] = kept++;
   TriMesh mesh;
-  mesh.pts.reserve(std::max(reserve_vertices, pslg.vertices.size()));
+  mesh.reserve(std::max(reserve_vertices, pslg.vertices.size()), std::max(reserve_triangles, static_cast<std::size_t>(kept)));
   mesh.pts = pslg.vertices;
-  mesh.tris.reserve(std::max(reserve_triangles, static_cast<std::size_t>(kept)));
   for (int ti = 0; ti < count; ++ti) {
     if (removed[static_cast<std::size_t>(ti)]) continue;
     FTri t = all.t(ti);
@@ -126,6 +125,7 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
     }
     mesh.tris.push_back(t);
   }
+  mesh.stamp.assign(mesh.tris.size(), 0);
   if (cocircular_ties) {
     *cocircular_ties = 0;
     for (int ti = 0; ti < mesh.size(); ++ti) {

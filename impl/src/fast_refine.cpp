@@ -24,38 +24,34 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A queued triangle: its key (sorted vertex ids) and where it was. Triangles
-// are rewritten in place and a destroyed triple never comes back (every
-// triangle an insertion makes has the new vertex), so "t remains in tau" iff
-// the slot still holds the same three vertices.
+// A queued triangle: its slot and the slot's stamp when it was queued. Slots
+// are rewritten in place and every rewrite destroys the triangle that was
+// there, so "t remains in tau" iff the stamp is unchanged.
 struct Item {
-  int k[3];
   int tri;
+  std::uint32_t stamp;
 };
 
-inline void sorted_key(const FTri& f, int k[3]) {
+// A triangle's key: its vertex ids sorted ascending.
+struct Keyed {
+  int k[3];
+  Item item;
+};
+
+inline Keyed keyed(const TriMesh& m, int ti) {
+  const FTri& f = m.t(ti);
   int a = f.v[0], b = f.v[1], c = f.v[2];
   if (a > b) std::swap(a, b);
   if (b > c) std::swap(b, c);
   if (a > b) std::swap(a, b);
-  k[0] = a, k[1] = b, k[2] = c;
+  return Keyed{{a, b, c}, Item{ti, m.stamp[static_cast<std::size_t>(ti)]}};
 }
-inline bool key_less(const Item& x, const Item& y) {
+inline bool key_less(const Keyed& x, const Keyed& y) {
   if (x.k[0] != y.k[0]) return x.k[0] < y.k[0];
   if (x.k[1] != y.k[1]) return x.k[1] < y.k[1];
   return x.k[2] < y.k[2];
 }
-inline Item make_item(const TriMesh& m, int ti) {
-  Item it;
-  sorted_key(m.t(ti), it.k);
-  it.tri = ti;
-  return it;
-}
-inline bool still_there(const TriMesh& m, const Item& it) {
-  int k[3];
-  sorted_key(m.t(it.tri), k);
-  return k[0] == it.k[0] && k[1] == it.k[1] && k[2] == it.k[2];
-}
+inline bool still_there(const TriMesh& m, const Item& it) { return m.stamp[static_cast<std::size_t>(it.tri)] == it.stamp; }
 
 // A triangle as the trace names it: counter-clockwise, smallest id first.
 Tri canonical(const FTri& f) {
@@ -65,7 +61,8 @@ Tri canonical(const FTri& f) {
 }
 
 std::string describe(const TriMesh& m, const Item& it, const Lepp& lepp) {
-  std::string s = fmt::format("triangle {} {} {}; Lepp", it.k[0], it.k[1], it.k[2]);
+  Tri bad = canonical(m.t(it.tri));
+  std::string s = fmt::format("triangle {} {} {}; Lepp", bad[0], bad[1], bad[2]);
   for (int ti : lepp.path) {
     Tri t = canonical(m.t(ti));
     s += fmt::format(" ({} {} {})", t[0], t[1], t[2]);
@@ -113,17 +110,19 @@ class Refiner {
 
     RefineResult result;
     std::deque<Item> queue;
+    std::vector<Keyed> fresh;
     for (int ti = 0; ti < mesh_.size(); ++ti)
-      if (quality_.processed(mesh_, ti)) queue.push_back(make_item(mesh_, ti));
-    std::sort(queue.begin(), queue.end(), key_less);
+      if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
+    std::sort(fresh.begin(), fresh.end(), key_less);
+    for (const Keyed& k : fresh) queue.push_back(k.item);
 
     Outcome outcome = Outcome::Converged;
     Lepp lepp;
-    std::vector<Item> fresh;
     std::int64_t steiner = 0;
     while (!queue.empty() && outcome == Outcome::Converged) {
       const Item item = queue.front();
       queue.pop_front();
+      prefetch_ahead(queue);
       while (still_there(mesh_, item)) {
         lepp_search(mesh_, item.tri, lepp);
         // Guards before the insertion (section 9).
@@ -160,13 +159,13 @@ class Refiner {
           if (floor > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v[1]), floor) ||
                             sqlen_below(mesh_.p(p), mesh_.p(f.v[2]), floor)))
             below_floor = true;
-          if (quality_.processed(mesh_, ti)) fresh.push_back(make_item(mesh_, ti));
+          if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
         });
         std::sort(fresh.begin(), fresh.end(), key_less);
         if (opt_.order == QueueOrder::Fifo) {
-          queue.insert(queue.end(), fresh.begin(), fresh.end());
+          for (const Keyed& k : fresh) queue.push_back(k.item);
         } else {
-          for (auto it = fresh.rbegin(); it != fresh.rend(); ++it) queue.push_front(*it);
+          for (auto it = fresh.rbegin(); it != fresh.rend(); ++it) queue.push_front(it->item);
         }
         if (opt_.on_insertion) {
           Mesh now = mesh_.to_mesh(n);
@@ -183,16 +182,16 @@ class Refiner {
     }
 
     // The unimprovable list, recomputed on the final mesh in key order (section 8).
-    std::vector<Item> left;
+    std::vector<Keyed> left;
     for (int ti = 0; ti < mesh_.size(); ++ti) {
       if (quality_.judge(mesh_, ti).skinny && quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr))
-        left.push_back(make_item(mesh_, ti));
+        left.push_back(keyed(mesh_, ti));
     }
     std::sort(left.begin(), left.end(), key_less);
-    for (const Item& it : left) {
+    for (const Keyed& k : left) {
       UnimprovableTriangle u;
-      quality_.unimprovable(mesh_, it.tri, quality_.shortest_edge(mesh_, it.tri), &u);
-      u.triangle = canonical(mesh_.t(it.tri));
+      quality_.unimprovable(mesh_, k.item.tri, quality_.shortest_edge(mesh_, k.item.tri), &u);
+      u.triangle = canonical(mesh_.t(k.item.tri));
       result.unimprovable.push_back(u);
     }
     if (outcome == Outcome::Converged && !result.unimprovable.empty()) outcome = Outcome::Unimprovable;
@@ -200,12 +199,23 @@ class Refiner {
     result.outcome = outcome;
     result.steiner_points = steiner;
     result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
-    result.mesh = mesh_.to_canonical_mesh(n);
+    result.mesh = mesh_.take_canonical_mesh(n);
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }
 
  private:
+  // The queue runs far behind the insertions (fifo): its triangles and their
+  // points are cold in cache. Fetch the next items' while this one is processed.
+  void prefetch_ahead(const std::deque<Item>& queue) const {
+    if (queue.size() > 4) __builtin_prefetch(&mesh_.stamp[static_cast<std::size_t>(queue[4].tri)]);
+    if (queue.size() > 2 && still_there(mesh_, queue[2])) __builtin_prefetch(&mesh_.t(queue[2].tri));
+    if (queue.size() > 1 && still_there(mesh_, queue[1])) {
+      const FTri& f = mesh_.t(queue[1].tri);
+      for (int i = 0; i < 3; ++i) __builtin_prefetch(&mesh_.p(f.v[i]));
+    }
+  }
+
   TraceStep trace_step(const Item& item, const Lepp& lepp, const Choice& choice) const {
     TraceStep s;
     s.bad = canonical(mesh_.t(item.tri));

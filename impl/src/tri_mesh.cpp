@@ -2,7 +2,13 @@
 #include "tri_mesh.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <tuple>
 #include <utility>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace lepp::fast {
 
@@ -26,6 +32,31 @@ SegmentMembership make_membership(const Pslg& pslg) {
   return m;
 }
 
+namespace {
+template <class T>
+void advise_huge_pages(const std::vector<T>& v) {
+#ifdef __linux__
+  const std::uintptr_t huge = std::uintptr_t{1} << 21;
+  auto begin = reinterpret_cast<std::uintptr_t>(v.data());
+  auto end = begin + v.capacity() * sizeof(T);
+  begin = (begin + huge - 1) & ~(huge - 1);
+  end &= ~(huge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)v;
+#endif
+}
+}  // namespace
+
+void TriMesh::reserve(std::size_t vertices, std::size_t triangles) {
+  pts.reserve(vertices);
+  tris.reserve(triangles);
+  stamp.reserve(triangles);
+  advise_huge_pages(pts);
+  advise_huge_pages(tris);
+  advise_huge_pages(stamp);
+}
+
 Mesh TriMesh::to_mesh(std::size_t input_vertices) const {
   Mesh mesh;
   mesh.vertices = pts;
@@ -44,44 +75,45 @@ Mesh TriMesh::to_mesh(std::size_t input_vertices) const {
   return mesh;
 }
 
-Mesh TriMesh::to_canonical_mesh(std::size_t input_vertices) const {
-  Mesh raw = to_mesh(input_vertices);
+Mesh TriMesh::take_canonical_mesh(std::size_t input_vertices) {
   Mesh mesh;
   mesh.input_vertices = input_vertices;
-  mesh.vertices = std::move(raw.vertices);
-  const std::size_t nv = mesh.vertices.size();
-  // Triangles: rotate to the smallest id, bucket by it, then order each (small) bucket.
-  for (Tri& t : raw.triangles)
+  const std::size_t nv = pts.size();
+  mesh.vertices = std::move(pts);
+  pts = {};
+  auto rotated = [](const FTri& f) {
+    Tri t{f.v[0], f.v[1], f.v[2]};
     while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
-  std::vector<std::size_t> start(nv + 1, 0);
-  for (const Tri& t : raw.triangles) ++start[static_cast<std::size_t>(t[0]) + 1];
+    return t;
+  };
+  // Triangles: bucket by the smallest id (counting sort), then order each small bucket.
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for (const FTri& f : tris) ++start[static_cast<std::size_t>(std::min({f.v[0], f.v[1], f.v[2]})) + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  mesh.triangles.resize(raw.triangles.size());
+  mesh.triangles.resize(tris.size());
+  std::vector<ConstrainedEdge> edges;
   {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (const Tri& t : raw.triangles) mesh.triangles[fill[static_cast<std::size_t>(t[0])]++] = t;
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (int ti = 0; ti < size(); ++ti) {
+      const FTri& f = t(ti);
+      Tri r = rotated(f);
+      mesh.triangles[fill[static_cast<std::size_t>(r[0])]++] = r;
+      for (int i = 0; i < 3; ++i) {
+        if (f.seg[i] < 0 || (f.nbr[i] >= 0 && nbr_tri(f.nbr[i]) < ti)) continue;
+        int a = f.v[next3(i)], b = f.v[prev3(i)];
+        edges.push_back({std::min(a, b), std::max(a, b), f.seg[i]});
+      }
+    }
   }
-  raw.triangles = {};
+  tris = {};
+  stamp = {};
   for (std::size_t v = 0; v < nv; ++v)
-    std::sort(mesh.triangles.begin() + static_cast<std::ptrdiff_t>(start[v]),
-              mesh.triangles.begin() + static_cast<std::ptrdiff_t>(start[v + 1]));
-  // Constrained edges: a < b, then the same bucket order by a.
-  for (ConstrainedEdge& e : raw.constrained_edges)
-    if (e.a > e.b) std::swap(e.a, e.b);
-  std::fill(start.begin(), start.end(), 0);
-  for (const ConstrainedEdge& e : raw.constrained_edges) ++start[static_cast<std::size_t>(e.a) + 1];
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  mesh.constrained_edges.resize(raw.constrained_edges.size());
-  {
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (const ConstrainedEdge& e : raw.constrained_edges) mesh.constrained_edges[fill[static_cast<std::size_t>(e.a)]++] = e;
-  }
-  for (std::size_t v = 0; v < nv; ++v)
-    std::sort(mesh.constrained_edges.begin() + static_cast<std::ptrdiff_t>(start[v]),
-              mesh.constrained_edges.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
-              [](const ConstrainedEdge& x, const ConstrainedEdge& y) {
-                return x.b != y.b ? x.b < y.b : x.segment < y.segment;
-              });
+    std::sort(mesh.triangles.begin() + start[v], mesh.triangles.begin() + start[v + 1]);
+  // Constrained edges: few; a plain sort in canonicalize's order.
+  std::sort(edges.begin(), edges.end(), [](const ConstrainedEdge& x, const ConstrainedEdge& y) {
+    return std::tie(x.a, x.b, x.segment) < std::tie(y.a, y.b, y.segment);
+  });
+  mesh.constrained_edges = std::move(edges);
   return mesh;
 }
 

@@ -57,11 +57,29 @@ SegmentMembership make_membership(const Pslg& pslg);
 struct TriMesh {
   std::vector<Point> pts;
   std::vector<FTri> tris;
+  // Bumped whenever a slot is rewritten: a queued triangle is still in the mesh
+  // iff its slot's stamp is unchanged (a rewrite always destroys the old triangle).
+  // A small array, so checking a stale queue entry costs no miss on tris.
+  std::vector<std::uint32_t> stamp;
 
   const Point& p(int v) const { return pts[static_cast<std::size_t>(v)]; }
   FTri& t(int i) { return tris[static_cast<std::size_t>(i)]; }
   const FTri& t(int i) const { return tris[static_cast<std::size_t>(i)]; }
   int size() const { return static_cast<int>(tris.size()); }
+
+  // Reserves room for a refinement of this size, asking for huge pages: the
+  // Lawson flips and the fifo queue touch triangles all over the arrays, and
+  // 2 MiB pages spare most TLB misses. Untouched capacity costs no memory.
+  void reserve(std::size_t vertices, std::size_t triangles);
+
+  void put(int ti, const FTri& f) {
+    t(ti) = f;
+    ++stamp[static_cast<std::size_t>(ti)];
+  }
+  void grow(std::size_t k) {
+    tris.resize(tris.size() + k);
+    stamp.resize(tris.size(), 0);
+  }
 
   // Points the neighbour across (t, i) back at `code`.
   void relink(int code_of_neighbour, int code) {
@@ -89,8 +107,9 @@ struct TriMesh {
 
   // Domain triangles as a Mesh (vertices in id order, not canonicalized).
   Mesh to_mesh(std::size_t input_vertices) const;
-  // The same in lepp::canonicalize's order, by bucket sorts (linear time).
-  Mesh to_canonical_mesh(std::size_t input_vertices) const;
+  // The mesh in lepp::canonicalize's order (a bucket sort: linear time), taking
+  // the arrays' memory as it goes: this TriMesh is empty afterwards.
+  Mesh take_canonical_mesh(std::size_t input_vertices);
 };
 
 template <class F>
@@ -118,11 +137,11 @@ inline void TriMesh::split_triangle(int ti, int p, int out[3]) {
   const FTri old = t(ti);
   const int a = old.v[0], b = old.v[1], c = old.v[2];
   const int t0 = ti, t1 = size(), t2 = size() + 1;
-  tris.resize(tris.size() + 2);
+  grow(2);
   // t0 = (p, b, c), t1 = (p, c, a), t2 = (p, a, b); edge 0 of each is an old edge.
-  t(t0) = FTri{{p, b, c}, {old.nbr[0], nbr_code(t1, 2), nbr_code(t2, 1)}, {old.seg[0], -1, -1}, -1};
-  t(t1) = FTri{{p, c, a}, {old.nbr[1], nbr_code(t2, 2), nbr_code(t0, 1)}, {old.seg[1], -1, -1}, -1};
-  t(t2) = FTri{{p, a, b}, {old.nbr[2], nbr_code(t0, 2), nbr_code(t1, 1)}, {old.seg[2], -1, -1}, -1};
+  put(t0, FTri{{p, b, c}, {old.nbr[0], nbr_code(t1, 2), nbr_code(t2, 1)}, {old.seg[0], -1, -1}, -1});
+  put(t1, FTri{{p, c, a}, {old.nbr[1], nbr_code(t2, 2), nbr_code(t0, 1)}, {old.seg[1], -1, -1}, -1});
+  put(t2, FTri{{p, a, b}, {old.nbr[2], nbr_code(t0, 2), nbr_code(t1, 1)}, {old.seg[2], -1, -1}, -1});
   relink(old.nbr[0], nbr_code(t0, 0));
   relink(old.nbr[1], nbr_code(t1, 0));
   relink(old.nbr[2], nbr_code(t2, 0));
@@ -137,9 +156,9 @@ inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
   const int across = old.nbr[i];
   const int t0 = ti, t1 = size();
   if (across < 0) {
-    tris.resize(tris.size() + 1);
-    t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), -1}, {sa, -1, segment}, -1};
-    t(t1) = FTri{{p, c, a}, {nb, -1, nbr_code(t0, 1)}, {sb, segment, -1}, -1};
+    grow(1);
+    put(t0, FTri{{p, b, c}, {na, nbr_code(t1, 2), -1}, {sa, -1, segment}, -1});
+    put(t1, FTri{{p, c, a}, {nb, -1, nbr_code(t0, 1)}, {sb, segment, -1}, -1});
     relink(na, nbr_code(t0, 0));
     relink(nb, nbr_code(t1, 0));
     out[0] = t0, out[1] = t1;
@@ -151,11 +170,11 @@ inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
   const int d = on.v[j];
   const int mb = on.nbr[next3(j)], smb = on.seg[next3(j)];  // edge (a, d), opposite b
   const int ma = on.nbr[prev3(j)], sma = on.seg[prev3(j)];  // edge (d, b), opposite a
-  tris.resize(tris.size() + 2);
-  t(t0) = FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(n1, 1)}, {sa, -1, segment}, -1};
-  t(t1) = FTri{{p, c, a}, {nb, nbr_code(n0, 2), nbr_code(t0, 1)}, {sb, segment, -1}, -1};
-  t(n0) = FTri{{p, a, d}, {mb, nbr_code(n1, 2), nbr_code(t1, 1)}, {smb, -1, segment}, -1};
-  t(n1) = FTri{{p, d, b}, {ma, nbr_code(t0, 2), nbr_code(n0, 1)}, {sma, segment, -1}, -1};
+  grow(2);
+  put(t0, FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(n1, 1)}, {sa, -1, segment}, -1});
+  put(t1, FTri{{p, c, a}, {nb, nbr_code(n0, 2), nbr_code(t0, 1)}, {sb, segment, -1}, -1});
+  put(n0, FTri{{p, a, d}, {mb, nbr_code(n1, 2), nbr_code(t1, 1)}, {smb, -1, segment}, -1});
+  put(n1, FTri{{p, d, b}, {ma, nbr_code(t0, 2), nbr_code(n0, 1)}, {sma, segment, -1}, -1});
   relink(na, nbr_code(t0, 0));
   relink(nb, nbr_code(t1, 0));
   relink(mb, nbr_code(n0, 0));
@@ -173,8 +192,8 @@ inline int TriMesh::flip_edge0(int ti) {
   const int m1 = on.nbr[next3(j)], s1 = on.seg[next3(j)];  // edge (a, d)
   const int m2 = on.nbr[prev3(j)], s2 = on.seg[prev3(j)];  // edge (d, b)
   // ti = (p, a, d), ni = (p, d, b).
-  t(ti) = FTri{{p, a, d}, {m1, nbr_code(ni, 2), old.nbr[2]}, {s1, -1, old.seg[2]}, -1};
-  t(ni) = FTri{{p, d, b}, {m2, old.nbr[1], nbr_code(ti, 1)}, {s2, old.seg[1], -1}, -1};
+  put(ti, FTri{{p, a, d}, {m1, nbr_code(ni, 2), old.nbr[2]}, {s1, -1, old.seg[2]}, -1});
+  put(ni, FTri{{p, d, b}, {m2, old.nbr[1], nbr_code(ti, 1)}, {s2, old.seg[1], -1}, -1});
   relink(m1, nbr_code(ti, 0));
   relink(m2, nbr_code(ni, 0));
   relink(old.nbr[1], nbr_code(ni, 1));
