@@ -139,6 +139,7 @@ class Refiner {
 
         ++result.lepp_searches;
         result.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
+        prefetch_around(lepp);
         const Choice choice = select_point(mesh_, lepp, opt_.method);
         TraceStep step;
         if (opt_.trace) step = trace_step(item, lepp, choice);
@@ -213,6 +214,17 @@ class Refiner {
     if (queue.size() > 1 && still_there(mesh_, queue[1])) {
       const FTri& f = mesh_.t(queue[1].tri);
       for (int i = 0; i < 3; ++i) __builtin_prefetch(&mesh_.p(f.v[i]));
+    }
+  }
+
+  // The insertion's flips will read the triangles around the terminal pair:
+  // start fetching them while the point is being selected.
+  void prefetch_around(const Lepp& lepp) const {
+    for (int t : {lepp.t1, lepp.t2}) {
+      if (t < 0) continue;
+      const FTri& f = mesh_.t(t);
+      for (int i = 0; i < 3; ++i)
+        if (f.nbr[i] >= 0) __builtin_prefetch(&mesh_.t(nbr_tri(f.nbr[i])));
     }
   }
 

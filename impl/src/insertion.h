@@ -45,7 +45,12 @@ class Inserter {
       }
     }
     mem.steiner.push_back(split_segment);
-    for (int k = 0; k < count; ++k) stack_.push_back(made[k]);
+    for (int k = 0; k < count; ++k) {
+      stack_.push_back(made[k]);
+      // The apex across each new link edge is the next thing the flips read.
+      const int code = m.t(made[k]).nbr[0];
+      if (code >= 0) __builtin_prefetch(&m.p(m.t(nbr_tri(code)).v[nbr_edge(code)]));
+    }
     restore_delaunay(m);
     return made[0];
   }
