@@ -122,4 +122,12 @@ std::string check_max_area(const Mesh& mesh, double max_area) {
   return "";
 }
 
+int orientation(const Point& a, const Point& b, const Point& c) { return sgn(cross(q(a), q(b), q(c))); }
+
+double twice_area(const Mesh& mesh) {
+  mpq_class sum = 0;
+  for (const Tri& t : mesh.triangles) sum += cross(q(mesh.vertices[t[0]]), q(mesh.vertices[t[1]]), q(mesh.vertices[t[2]]));
+  return sum.get_d();
+}
+
 }  // namespace lepp::reference::testing

@@ -28,4 +28,9 @@ std::string check_ccw(const Mesh& mesh);
 // Every triangle has area <= max_area (exactly: |cross| <= 2 max_area).
 std::string check_max_area(const Mesh& mesh, double max_area);
 
+// Sign of the exact orientation of a, b, c: 1 left turn, -1 right turn, 0 collinear.
+int orientation(const Point& a, const Point& b, const Point& c);
+// Twice the area of the mesh, exactly, as a double (for comparisons with small integers).
+double twice_area(const Mesh& mesh);
+
 }  // namespace lepp::reference::testing
