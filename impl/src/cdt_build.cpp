@@ -26,17 +26,6 @@ using Fb = CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Constrained_t
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 
-// The input segment joining vertices a and b (an edge of a validated PSLG's CDT
-// is constrained only if it is a whole segment).
-int segment_between(const Pslg& pslg, const SegmentMembership& m, int a, int b) {
-  for (int k = m.start[static_cast<std::size_t>(a)]; k < m.start[static_cast<std::size_t>(a) + 1]; ++k) {
-    int s = m.list[static_cast<std::size_t>(k)];
-    const Segment& seg = pslg.segments[static_cast<std::size_t>(s)];
-    if (seg.a == b || seg.b == b) return s;
-  }
-  throw std::logic_error("fast engine: a constrained CDT edge is no input segment");
-}
-
 }  // namespace
 
 TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership, std::size_t reserve_triangles,
@@ -68,9 +57,10 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
       t.v[i] = f->vertex(i)->info();
       auto g = f->neighbor(i);
       t.nbr[i] = g->info() < 0 ? -1 : nbr_code(g->info(), g->index(f));
-      t.seg[i] = f->is_constrained(i) ? segment_between(pslg, membership, f->vertex(Cdt::cw(i))->info(),
-                                                       f->vertex(Cdt::ccw(i))->info())
-                                      : -1;
+      t.seg[i] = f->is_constrained(i) ? 0 : -1;
+      if (f->is_constrained(i) &&
+          membership.segment_of(f->vertex(Cdt::cw(i))->info(), f->vertex(Cdt::ccw(i))->info()) < 0)
+        throw std::logic_error("fast engine: a constrained CDT edge is no input segment");
     }
   }
 

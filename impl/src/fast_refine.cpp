@@ -169,7 +169,7 @@ class Refiner {
           for (auto it = fresh.rbegin(); it != fresh.rend(); ++it) queue.push_front(it->item);
         }
         if (opt_.on_insertion) {
-          Mesh now = mesh_.to_mesh(n);
+          Mesh now = mesh_.to_mesh(mem_);
           canonicalize(now);
           opt_.on_insertion(now);
         }
@@ -200,7 +200,7 @@ class Refiner {
     result.outcome = outcome;
     result.steiner_points = steiner;
     result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
-    result.mesh = mesh_.take_canonical_mesh(n);
+    result.mesh = mesh_.take_canonical_mesh(mem_);
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }
@@ -256,7 +256,7 @@ bool available() { return true; }
 
 Mesh build_cdt(const Pslg& pslg) {
   SegmentMembership mem = make_membership(pslg);
-  Mesh mesh = build_initial_cdt(pslg, mem, 0, 0).to_mesh(pslg.vertices.size());
+  Mesh mesh = build_initial_cdt(pslg, mem, 0, 0).to_mesh(mem);
   canonicalize(mesh);
   return mesh;
 }

@@ -24,9 +24,9 @@ class Inserter {
     int made[4], count = 0;
     split_segment = -1;
     if (choice.edge >= 0) {
-      split_segment = m.t(choice.tri).seg[choice.edge];
+      split_segment = segment_of_edge(m, mem, choice.tri, choice.edge);
       m.pts.push_back(choice.point);
-      count = m.split_edge(choice.tri, choice.edge, p, split_segment, made);
+      count = m.split_edge(choice.tri, choice.edge, p, 0, made);
     } else {
       int where = choice.tri, edge = -1;
       if (!locate_in(m, where, choice.point, edge) && edge == -2 && choice.other >= 0) {
@@ -40,8 +40,9 @@ class Inserter {
         m.split_triangle(where, p, made);
         count = 3;
       } else {
-        split_segment = m.t(where).seg[edge];
-        count = m.split_edge(where, edge, p, split_segment, made);
+        const std::int8_t flag = m.t(where).seg[edge];
+        if (flag >= 0) split_segment = segment_of_edge(m, mem, where, edge);
+        count = m.split_edge(where, edge, p, flag, made);
       }
     }
     mem.steiner.push_back(split_segment);
@@ -56,6 +57,11 @@ class Inserter {
   }
 
  private:
+  static int segment_of_edge(const TriMesh& m, const SegmentMembership& mem, int ti, int i) {
+    const FTri& f = m.t(ti);
+    return mem.segment_of(f.v[next3(i)], f.v[prev3(i)]);
+  }
+
   // Where p lies in the closed triangle ti: edge = -1 strictly inside, 0..2 on
   // the interior of that edge, -2 outside, -3 on a vertex. Returns true if inside or on an edge.
   static bool locate_in(const TriMesh& m, int ti, const Point& p, int& edge) {

@@ -15,6 +15,7 @@ namespace lepp::fast {
 SegmentMembership make_membership(const Pslg& pslg) {
   SegmentMembership m;
   m.input_vertices = static_cast<int>(pslg.vertices.size());
+  m.segments = &pslg.segments;
   m.start.assign(pslg.vertices.size() + 1, 0);
   for (const Segment& s : pslg.segments) {
     ++m.start[static_cast<std::size_t>(s.a) + 1];
@@ -57,10 +58,10 @@ void TriMesh::reserve(std::size_t vertices, std::size_t triangles) {
   advise_huge_pages(stamp);
 }
 
-Mesh TriMesh::to_mesh(std::size_t input_vertices) const {
+Mesh TriMesh::to_mesh(const SegmentMembership& membership) const {
   Mesh mesh;
   mesh.vertices = pts;
-  mesh.input_vertices = input_vertices;
+  mesh.input_vertices = static_cast<std::size_t>(membership.input_vertices);
   mesh.triangles.reserve(tris.size());
   for (int ti = 0; ti < size(); ++ti) {
     const FTri& f = t(ti);
@@ -69,15 +70,16 @@ Mesh TriMesh::to_mesh(std::size_t input_vertices) const {
       if (f.seg[i] < 0) continue;
       // Each constrained edge once: from its only triangle, or from the lower id.
       if (f.nbr[i] >= 0 && nbr_tri(f.nbr[i]) < ti) continue;
-      mesh.constrained_edges.push_back({f.v[next3(i)], f.v[prev3(i)], f.seg[i]});
+      int a = f.v[next3(i)], b = f.v[prev3(i)];
+      mesh.constrained_edges.push_back({a, b, membership.segment_of(a, b)});
     }
   }
   return mesh;
 }
 
-Mesh TriMesh::take_canonical_mesh(std::size_t input_vertices) {
+Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   Mesh mesh;
-  mesh.input_vertices = input_vertices;
+  mesh.input_vertices = static_cast<std::size_t>(membership.input_vertices);
   const std::size_t nv = pts.size();
   mesh.vertices = std::move(pts);
   pts = {};
@@ -101,7 +103,7 @@ Mesh TriMesh::take_canonical_mesh(std::size_t input_vertices) {
       for (int i = 0; i < 3; ++i) {
         if (f.seg[i] < 0 || (f.nbr[i] >= 0 && nbr_tri(f.nbr[i]) < ti)) continue;
         int a = f.v[next3(i)], b = f.v[prev3(i)];
-        edges.push_back({std::min(a, b), std::max(a, b), f.seg[i]});
+        edges.push_back({std::min(a, b), std::max(a, b), membership.segment_of(a, b)});
       }
     }
   }

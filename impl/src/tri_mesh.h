@@ -3,7 +3,9 @@
 // Triangle t has vertices v[0..2] counter-clockwise; edge i is the edge
 // opposite v[i], from v[i+1] to v[i+2]. nbr[i] is the neighbour across edge i,
 // encoded as (triangle << 2) | (its index of that edge), or -1 on the domain
-// boundary; seg[i] is the input segment edge i lies on, or -1 (unconstrained).
+// boundary; seg[i] is 0 when edge i is constrained, -1 when not (which input
+// segment it lies on follows from its endpoints: SegmentMembership::segment_of).
+// 28 bytes a triangle: the flips are bound by memory traffic.
 // Triangles are rewritten in place by insertions and flips and never freed, so
 // the arrays only grow.
 #pragma once
@@ -18,8 +20,8 @@ namespace lepp::fast {
 struct FTri {
   int v[3];
   int nbr[3];
-  int seg[3];
-  int longest;  // index of the longest edge in the edge order, -1 until computed
+  std::int8_t seg[3];
+  std::int8_t longest;  // index of the longest edge in the edge order, -1 until computed
 };
 
 inline int next3(int i) { return i == 2 ? 0 : i + 1; }
@@ -35,6 +37,7 @@ struct SegmentMembership {
   std::vector<int> list;
   std::vector<int> steiner;   // Steiner point n + k: its segment or -1
   int input_vertices = 0;
+  const std::vector<Segment>* segments = nullptr;
 
   // Calls f(segment) for each segment vertex v lies on.
   template <class F>
@@ -45,6 +48,17 @@ struct SegmentMembership {
     } else if (int s = steiner[static_cast<std::size_t>(v - input_vertices)]; s >= 0) {
       f(s);
     }
+  }
+  // The input segment of the constrained edge ab: a Steiner endpoint's segment,
+  // else the segment joining the two input vertices.
+  int segment_of(int a, int b) const {
+    if (a >= input_vertices) return steiner[static_cast<std::size_t>(a - input_vertices)];
+    if (b >= input_vertices) return steiner[static_cast<std::size_t>(b - input_vertices)];
+    for (int k = start[static_cast<std::size_t>(a)]; k < start[static_cast<std::size_t>(a) + 1]; ++k) {
+      const Segment& s = (*segments)[static_cast<std::size_t>(list[static_cast<std::size_t>(k)])];
+      if (s.a == b || s.b == b) return list[static_cast<std::size_t>(k)];
+    }
+    return -1;
   }
   bool on_any(int v) const {
     return v < input_vertices ? start[static_cast<std::size_t>(v)] < start[static_cast<std::size_t>(v) + 1]
@@ -91,9 +105,9 @@ struct TriMesh {
   void split_triangle(int ti, int p, int out[3]);
 
   // Splits edge i of triangle ti at vertex p, and the neighbour across it if any;
-  // the two halves keep `segment` (-1 for an unconstrained edge). Every new triangle
-  // has p as v[0]. Writes the 2 or 4 ids to out, returns how many.
-  int split_edge(int ti, int i, int p, int segment, int out[4]);
+  // the two halves keep its flag `segment` (0 constrained, -1 not). Every new
+  // triangle has p as v[0]. Writes the 2 or 4 ids to out, returns how many.
+  int split_edge(int ti, int i, int p, std::int8_t segment, int out[4]);
 
   // Flips edge 0 of ti = (p, a, b) with the triangle (d, b, a) across it: ti
   // becomes (p, a, d) and the neighbour (p, d, b), both with p as v[0]. Returns
@@ -106,10 +120,10 @@ struct TriMesh {
   void for_each_in_star(int ti, F&& f) const;
 
   // Domain triangles as a Mesh (vertices in id order, not canonicalized).
-  Mesh to_mesh(std::size_t input_vertices) const;
+  Mesh to_mesh(const SegmentMembership& membership) const;
   // The mesh in lepp::canonicalize's order (a bucket sort: linear time), taking
   // the arrays' memory as it goes: this TriMesh is empty afterwards.
-  Mesh take_canonical_mesh(std::size_t input_vertices);
+  Mesh take_canonical_mesh(const SegmentMembership& membership);
 };
 
 template <class F>
@@ -148,11 +162,13 @@ inline void TriMesh::split_triangle(int ti, int p, int out[3]) {
   out[0] = t0, out[1] = t1, out[2] = t2;
 }
 
-inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
+inline int TriMesh::split_edge(int ti, int i, int p, std::int8_t segment, int out[4]) {
   const FTri old = t(ti);
   const int c = old.v[i], a = old.v[next3(i)], b = old.v[prev3(i)];
-  const int na = old.nbr[next3(i)], sa = old.seg[next3(i)];  // edge (b, c), opposite a
-  const int nb = old.nbr[prev3(i)], sb = old.seg[prev3(i)];  // edge (c, a), opposite b
+  const int na = old.nbr[next3(i)];
+  const std::int8_t sa = old.seg[next3(i)];  // edge (b, c), opposite a
+  const int nb = old.nbr[prev3(i)];
+  const std::int8_t sb = old.seg[prev3(i)];  // edge (c, a), opposite b
   const int across = old.nbr[i];
   const int t0 = ti, t1 = size();
   if (across < 0) {
@@ -168,8 +184,10 @@ inline int TriMesh::split_edge(int ti, int i, int p, int segment, int out[4]) {
   const int n0 = nbr_tri(across), j = nbr_edge(across), n1 = t1 + 1;
   const FTri on = t(n0);
   const int d = on.v[j];
-  const int mb = on.nbr[next3(j)], smb = on.seg[next3(j)];  // edge (a, d), opposite b
-  const int ma = on.nbr[prev3(j)], sma = on.seg[prev3(j)];  // edge (d, b), opposite a
+  const int mb = on.nbr[next3(j)];
+  const std::int8_t smb = on.seg[next3(j)];  // edge (a, d), opposite b
+  const int ma = on.nbr[prev3(j)];
+  const std::int8_t sma = on.seg[prev3(j)];  // edge (d, b), opposite a
   grow(2);
   put(t0, FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(n1, 1)}, {sa, -1, segment}, -1});
   put(t1, FTri{{p, c, a}, {nb, nbr_code(n0, 2), nbr_code(t0, 1)}, {sb, segment, -1}, -1});
@@ -189,8 +207,10 @@ inline int TriMesh::flip_edge0(int ti) {
   const int ni = nbr_tri(old.nbr[0]), j = nbr_edge(old.nbr[0]);
   const FTri on = t(ni);  // (d, b, a) from index j
   const int d = on.v[j];
-  const int m1 = on.nbr[next3(j)], s1 = on.seg[next3(j)];  // edge (a, d)
-  const int m2 = on.nbr[prev3(j)], s2 = on.seg[prev3(j)];  // edge (d, b)
+  const int m1 = on.nbr[next3(j)];
+  const std::int8_t s1 = on.seg[next3(j)];  // edge (a, d)
+  const int m2 = on.nbr[prev3(j)];
+  const std::int8_t s2 = on.seg[prev3(j)];  // edge (d, b)
   // ti = (p, a, d), ni = (p, d, b).
   put(ti, FTri{{p, a, d}, {m1, nbr_code(ni, 2), old.nbr[2]}, {s1, -1, old.seg[2]}, -1});
   put(ni, FTri{{p, d, b}, {m2, old.nbr[1], nbr_code(ti, 1)}, {s2, old.seg[1], -1}, -1});
