@@ -1,7 +1,7 @@
 // `lepp render MESH_PREFIX -o out.svg`: draws a mesh as SVG, triangles coloured
 // by quality or smallest angle, constrained edges bold, bad triangles marked.
-// Compact at 10^5 triangles: one <path> per colour bin, coordinates rounded to
-// a tenth of a pixel, relative moves.
+// Compact at 10^5 triangles (about 25 bytes each): one <path> per colour bin,
+// coordinates rounded to a tenth of a pixel, relative moves.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,14 +47,21 @@ std::string num(long tenths) {
   return fmt::format("{}{}.{}", tenths < 0 ? "-" : "", std::labs(tenths) / 10, std::labs(tenths) % 10);
 }
 
-// A closed triangle as "Mx y l dx dy l dx dy z", relative moves in tenths of pixels.
-void append_triangle(std::string& d, const Viewport& vp, const Point& a, const Point& b, const Point& c) {
-  long ax = tenth(vp.x(a.x)), ay = tenth(vp.y(a.y));
-  long bx = tenth(vp.x(b.x)), by = tenth(vp.y(b.y));
-  long cx = tenth(vp.x(c.x)), cy = tenth(vp.y(c.y));
-  d += "M" + num(ax) + " " + num(ay) + "l" + num(bx - ax) + " " + num(by - ay) + " " + num(cx - bx) + " " +
-       num(cy - by) + "z";
-}
+// The path data of one colour: closed triangles "m dx dy l dx dy dx dy z", each
+// move relative to where the previous triangle started (where "z" leaves the pen).
+struct PathData {
+  std::string d;
+  long x = 0, y = 0;  // pen position, tenths of pixels
+
+  void triangle(const Viewport& vp, const Point& a, const Point& b, const Point& c) {
+    long ax = tenth(vp.x(a.x)), ay = tenth(vp.y(a.y));
+    long bx = tenth(vp.x(b.x)), by = tenth(vp.y(b.y));
+    long cx = tenth(vp.x(c.x)), cy = tenth(vp.y(c.y));
+    d += (d.empty() ? "M" : "m") + num(ax - x) + " " + num(ay - y) + "l" + num(bx - ax) + " " + num(by - ay) + " " +
+         num(cx - bx) + " " + num(cy - by) + "z";
+    x = ax, y = ay;
+  }
+};
 
 int run_render(const RenderArgs& args) {
   Mesh mesh;
@@ -90,8 +97,9 @@ int run_render(const RenderArgs& args) {
   double legend_h = 46;
 
   const bool by_angle = args.color == "angle";
-  std::array<std::string, kPalette.size()> bins;
-  std::string bad_outlines, bad_marks;
+  std::array<PathData, kPalette.size()> bins;
+  PathData bad_outlines;
+  std::string bad_marks;
   std::size_t bad = 0;
   double worst_angle = 90;
   const double mark_r = 3;
@@ -103,11 +111,11 @@ int run_render(const RenderArgs& args) {
     worst_angle = std::min(worst_angle, angle);
     double value = by_angle ? angle / 60.0 : area_quality(a, b, c);
     auto bin = static_cast<std::size_t>(std::clamp(value, 0.0, 0.999999) * kPalette.size());
-    append_triangle(bins[bin], vp, a, b, c);
+    bins[bin].triangle(vp, a, b, c);
     if (angle < args.min_angle) {
       ++bad;
       if (args.highlight == "bad") {
-        append_triangle(bad_outlines, vp, a, b, c);
+        bad_outlines.triangle(vp, a, b, c);
         // A ring at the centroid, visible when the triangle itself is a hair.
         long gx = tenth(vp.x((a.x + b.x + c.x) / 3) - mark_r), gy = tenth(vp.y((a.y + b.y + c.y) / 3));
         bad_marks += "M" + num(gx) + " " + num(gy) + "a3 3 0 1 0 6 0a3 3 0 1 0 -6 0";
@@ -136,11 +144,11 @@ int run_render(const RenderArgs& args) {
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out << fmt::format("<g stroke=\"#222\" stroke-width=\"{:.2f}\" stroke-linejoin=\"round\">\n", edge_w);
   for (std::size_t i = 0; i < bins.size(); ++i)
-    if (!bins[i].empty()) out << "<path fill=\"" << kPalette[i] << "\" d=\"" << bins[i] << "\"/>\n";
+    if (!bins[i].d.empty()) out << "<path fill=\"" << kPalette[i] << "\" d=\"" << bins[i].d << "\"/>\n";
   out << "</g>\n";
   out << "<path fill=\"none\" stroke=\"black\" stroke-width=\"2\" stroke-linecap=\"round\" d=\"" << constrained << "\"/>\n";
-  if (!bad_outlines.empty()) {
-    out << "<path fill=\"#ff000040\" stroke=\"red\" stroke-width=\"1.2\" d=\"" << bad_outlines << "\"/>\n";
+  if (!bad_outlines.d.empty()) {
+    out << "<path fill=\"#ff000040\" stroke=\"red\" stroke-width=\"1.2\" d=\"" << bad_outlines.d << "\"/>\n";
     out << "<path fill=\"none\" stroke=\"red\" stroke-width=\"1\" d=\"" << bad_marks << "\"/>\n";
   }
 
