@@ -4,6 +4,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -77,6 +78,35 @@ std::string trace_difference(const std::vector<TraceStep>& a, const std::vector<
   }
   if (a.size() != b.size()) return fmt::format("{} vs {} steps", a.size(), b.size());
   return "";
+}
+
+// The comparisons themselves can fail: a result differs from a copy of itself
+// with one coordinate nudged, one triangle rotated away, or one trace rule changed.
+TEST(Differential, ComparisonsRejectBrokenResults) {
+  Pslg p = load("A");
+  RefineOptions o;
+  o.trace = true;
+  RefineResult r = fast::refine(p, o);
+  ASSERT_EQ(difference(r, r), "");
+  RefineResult moved = r;
+  moved.mesh.vertices.back().x = std::nextafter(moved.mesh.vertices.back().x, 10.0);
+  EXPECT_NE(difference(r, moved), "");
+  RefineResult flipped = r;
+  std::swap(flipped.mesh.triangles[0][1], flipped.mesh.triangles[0][2]);
+  EXPECT_NE(difference(r, flipped), "");
+  RefineResult resegmented = r;
+  resegmented.mesh.constrained_edges[0].segment += 1;
+  EXPECT_NE(difference(r, resegmented), "");
+  ASSERT_FALSE(r.trace.empty());
+  std::vector<TraceStep> other = r.trace;
+  other.back().rule = other.back().rule == Rule::QuadCentroid ? Rule::CentroidInOther : Rule::QuadCentroid;
+  EXPECT_NE(trace_difference(r.trace, other), "");
+  other = r.trace;
+  other.front().lepp.pop_back();
+  EXPECT_NE(trace_difference(r.trace, other), "");
+  // A different run (another angle) is told apart.
+  o.min_angle_deg = 25;
+  EXPECT_NE(difference(r, fast::refine(p, o)), "");
 }
 
 struct Case {
