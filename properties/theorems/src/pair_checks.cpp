@@ -270,7 +270,13 @@ P circumcentre(const P& A, const P& B, const P& C) {
 }
 }  // namespace
 
-Verdict check_lemma11(const TerminalQuad& q) {
+namespace {
+Verdict lemma11_impl(const TerminalQuad& q, bool strict_b_upper);
+}
+Verdict check_lemma11(const TerminalQuad& q) { return lemma11_impl(q, true); }
+Verdict check_lemma11_narrowed(const TerminalQuad& q) { return lemma11_impl(q, false); }
+namespace {
+Verdict lemma11_impl(const TerminalQuad& q, bool strict_b_upper) {
   Pair p = make_pair(q);
   Verdict v;
   v.detail = show(q);
@@ -289,7 +295,8 @@ Verdict check_lemma11(const TerminalQuad& q) {
     P Q = FT(0.25) * (t.A + t.B + C + D);
     FT aQ = le.a(Q), bQ = le.b(Q), bD = le.b(D), bC = le.b(C);
     bool a_lo = amin / FT(4) + le.l / FT(4) < aQ, a_hi = aQ < amax / FT(4) + le.l / FT(2);
-    bool b_lo = bD / FT(4) < bQ, b_hi = bQ < (bC + bmin) / FT(4);
+    bool b_lo = bD / FT(4) < bQ, b_hi = strict_b_upper ? bQ < (bC + bmin) / FT(4) : bQ <= (bC + bmin) / FT(4);
+    if (bD == bmin) v.label = "D at U or W";
     bool ok = a_lo && a_hi && b_lo && b_hi;
     v.label = le.b(U) == le.b(W) ? "obtuse" : "obtuse, b(U) != b(W)";
     if (!ok) {
@@ -303,6 +310,7 @@ Verdict check_lemma11(const TerminalQuad& q) {
   if (!any) v.label = "no obtuse triangle";
   return v;
 }
+}  // namespace
 
 namespace {
 bool strictly_inside(const P& q, const P& a, const P& b, const P& c) {

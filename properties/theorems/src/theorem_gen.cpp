@@ -49,6 +49,38 @@ rc::Gen<TerminalQuad> terminal_quad() {
   return rc::gen::suchThat(raw, [](const TerminalQuad& q) { return is_delaunay_terminal_pair(q); });
 }
 
+rc::Gen<TerminalQuad> lemma11_corner_quad() {
+  auto raw = rc::gen::exec([] {
+    using I = __int128;
+    const I L = *rc::gen::inRange<std::int64_t>(4, 13);
+    const I cx = *rc::gen::inRange<std::int64_t>(1, static_cast<std::int64_t>(L / 2) + 1);
+    const I cy = *rc::gen::inRange<std::int64_t>(1, static_cast<std::int64_t>(L));
+    // B = (0, 0), A = (L, 0), C = (cx, cy); circumcentre (L/2, p/q); U, the reflection of B across
+    // line AO, is (L (2Dn - N), 4 L^2 q p) / Dn with N = 2 L^2 q^2, Dn = L^2 q^2 + 4 p^2.
+    const I q = 2 * cy, p = cx * cx - L * cx + cy * cy;
+    const I N = 2 * L * L * q * q, Dn = L * L * q * q + 4 * p * p;
+    I ux = L * (2 * Dn - N), uy = 4 * L * L * q * p;
+    I ax = L * Dn, ccx = cx * Dn, ccy = cy * Dn;
+    bool at_w = *rc::gen::arbitrary<bool>();
+    if (at_w) ux = ax - ux;  // W, the mirror image of U across x = L/2
+    auto g = [](I a, I b) {
+      if (a < 0) a = -a;
+      if (b < 0) b = -b;
+      while (b) {
+        I t = a % b;
+        a = b;
+        b = t;
+      }
+      return a;
+    };
+    I k = g(g(g(ax, ccx), g(ccy, ux)), uy);
+    if (k == 0) k = 1;
+    auto v = [&](I x) { return static_cast<std::int64_t>(x / k); };
+    return TerminalQuad{{v(ax), 0}, {0, 0}, {v(ccx), v(ccy)}, {v(ux), v(uy)}};
+  });
+  return rc::gen::suchThat(raw, [](const TerminalQuad& q) { return is_delaunay_terminal_pair(q); });
+}
+
 rc::Gen<std::vector<GridPoint>> mesh_points() {
   return rc::gen::exec([] {
     const int count = *rc::gen::inRange(4, 41);

@@ -48,6 +48,7 @@ Verdict check_corpus(const CorpusInput& c) {
   using Mesh = std::function<Verdict(const TerminalInMesh&)>;
   static const std::map<std::string, Quad> quads = {
       {"Corollary12.CentroidInsideBetterTriangle", check_corollary12},
+      {"Lemma11.CentroidBoundsInLongestEdgeCoordinates", check_lemma11},
       {"Remark13.CentroidDistanceAtLeast075ShortestEdge", check_remark13},
       {"Theorem14.CentroidNotCollinearExceptRightIsosceles", check_theorem14},
   };

@@ -142,7 +142,12 @@ TEST(Lemma11Rejects, DInsideTheCircumcircle) {
 
 TEST(Remark13Rejects, NonDelaunayFlatNeighbour) {
   // ABD is the worse triangle (5.7 degrees, obtuse), D nearly on AB: d(Q)/BC = 0.18.
-  expect_rejected(check_remark13_case(quad(0, 0, 20, 0, 8, 4, 10, -1), Remark13Case::Obtuse, 0.75));
+  expect_rejected(check_remark13_case(quad(0, 0, 20, 0, 8, 4, 10, -1), Remark13Case::Obtuse, 0.69));
+}
+
+TEST(Remark13Rejects, NonTerminalKite) {
+  // |BC| > |AB|: a mirror kite whose worse triangles (29.05 degrees, non-obtuse) give d(Q)/BC = 0.588 < 0.61.
+  expect_rejected(check_remark13_case(quad(0, 0, 20, 0, 2, 10, 2, -10), Remark13Case::NonObtuse, 0.61));
 }
 
 TEST(Theorem14Rejects, TheKiteIsCollinearButNotRightIsosceles) {
@@ -164,4 +169,10 @@ TEST(Corollary12Rejects, TallerWorseTriangle) {
   EXPECT_TRUE(v.hypothesis);
   EXPECT_FALSE(v.conclusion);
   expect_rejected(check_corollary12_narrowed(q));
+}
+
+TEST(Theorem9Rejects, ChainFromATriangleWiderThan120) {
+  // Largest angle above 120 (no Delaunay terminal triangle looks like this), alpha0 = 17.42 < theta = 20:
+  // beta_2 = 36.33 < (3/2)^2 alpha0 = 39.2.
+  expect_rejected(check_theorem9_chain(tri(-9, 10, 8, -3, -3, 1), 20));
 }

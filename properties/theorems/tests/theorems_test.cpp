@@ -62,11 +62,27 @@ LEPP_STATEMENT(Lemma8, ObtuseBelow30DistanceAtLeastHalf)
 LEPP_STATEMENT(Lemma8, ObtuseAbove14BetaAbove28)
 LEPP_STATEMENT(Theorem9, BetaChainGrowsGeometrically)
 LEPP_STATEMENT(Theorem9, MidpointNotTooCloseToMeshVertices)
-LEPP_STATEMENT(Lemma11, CentroidBoundsInLongestEdgeCoordinates)
+LEPP_FINDING(Lemma11, CentroidBoundsInLongestEdgeCoordinates)
+LEPP_STATEMENT(Lemma11, CentroidBoundsWithCornerEquality)
 LEPP_FINDING(Corollary12, CentroidInsideBetterTriangle)
 LEPP_STATEMENT(Corollary12, CentroidInsideGoodTriangleWhenOtherIsBad)
 LEPP_FINDING(Remark13, CentroidDistanceAtLeast075ShortestEdge)
-LEPP_STATEMENT(Remark13, ObtuseCaseDistanceAtLeast075)
-LEPP_STATEMENT(Remark13, NonObtuseCaseDistanceAtLeastHalf)
+LEPP_STATEMENT(Remark13, ObtuseCaseDistanceAbove069)
+LEPP_STATEMENT(Remark13, NonObtuseCaseDistanceAbove061)
 LEPP_FINDING(Theorem14, CentroidNotCollinearExceptRightIsosceles)
 LEPP_STATEMENT(Theorem14, CentroidOnTerminalEdgeIffEqualHeights)
+
+// Section 5 and Remark 15: statistics over generated PSLGs (a share, not a per-input assertion).
+#define LEPP_STATISTIC(Suite, Name)                                                                          \
+  TEST(Suite, Name) {                                                                                        \
+    const auto* s = lepp::theorems::find_statement(#Suite "." #Name);                                        \
+    ASSERT_NE(s, nullptr);                                                                                   \
+    auto outcome = lepp::theorems::run_statement(*s, 0, lepp::theorems::kDefaultInputs, lepp::theorems::kSeed); \
+    std::cout << outcome.statistic << "\n";                                                                  \
+    EXPECT_TRUE(outcome.passed) << outcome.statistic;                                                        \
+  }
+
+LEPP_STATISTIC(Section5, CentroidAddsFewerPoints)
+LEPP_STATISTIC(Section5, CentroidHigherAverageSmallestAngle)
+LEPP_STATISTIC(Section5, CentroidLongerShortestEdge)
+LEPP_STATISTIC(Remark15, CentroidConvergesUpTo30Degrees)

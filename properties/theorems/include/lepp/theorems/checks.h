@@ -90,6 +90,8 @@ Verdict check_lemma7_Ic(const TerminalQuad& q);
 Verdict check_lemma7_Id(const TerminalQuad& q);
 Verdict check_lemma7_II(const TerminalQuad& q);
 Verdict check_lemma11(const TerminalQuad& q);
+// Narrowed: b_Q <= (b_C + b_min)/4, equality when D is U or W; the other three bounds strict.
+Verdict check_lemma11_narrowed(const TerminalQuad& q);
 Verdict check_corollary12(const TerminalQuad& q);
 // Narrowed: when the worse triangle is bad (< 30) and the better one good (>= 30), Q is strictly inside the better one.
 Verdict check_corollary12_narrowed(const TerminalQuad& q);

@@ -34,8 +34,8 @@ const Statement* find_statement(const std::string& suite_dot_name);
 constexpr std::uint64_t kSeed = 20260522;
 constexpr int kDefaultCases = 100;
 constexpr int kLongCases = 3000;
-constexpr int kDefaultInputs = 6;  // Section 5 statistics
-constexpr int kLongInputs = 40;
+constexpr int kDefaultInputs = 24;  // Section 5 statistics
+constexpr int kLongInputs = 200;
 
 struct RunOutcome {
   bool passed = false;      // the property found no counterexample

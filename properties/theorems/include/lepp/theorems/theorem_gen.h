@@ -33,6 +33,10 @@ rc::Gen<GridTriangle> triangle(int range = 40);
 // (D the reflection of C), where ties and collinear centroids live.
 rc::Gen<TerminalQuad> terminal_quad();
 
+// Lemma 11's corner cases: an obtuse ABC (B = (0, 0), A = (L, 0)) with D exactly at U or
+// W, where CC(ABC) meets the lens (|AD| = |AB| or |BD| = |AB|, D cocircular), scaled to integers.
+rc::Gen<TerminalQuad> lemma11_corner_quad();
+
 // Points for a Delaunay mesh: 4 to 40 points in [0, 300]^2.
 rc::Gen<std::vector<GridPoint>> mesh_points();
 
