@@ -21,7 +21,8 @@ if [[ ! -f $build/CMakeCache.txt ]]; then
   CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -G Ninja -DLEPP_BUILD_FUZZ=ON \
     -DLEPP_BUILD_TESTS=OFF -DLEPP_BUILD_BENCH=OFF >/dev/null
 fi
-ninja -C "$build" -j"${LEPP_BUILD_JOBS:-2}" "$target" >/dev/null
+# LEPP_FUZZ_NO_BUILD=1 runs the binary as built (several runs at once must not race one ninja).
+[[ ${LEPP_FUZZ_NO_BUILD:-0} == 1 ]] || ninja -C "$build" -j"${LEPP_BUILD_JOBS:-2}" "$target" >/dev/null
 
 mkdir -p "$work/corpus" "$work/findings"
 flags=(-max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 -malloc_limit_mb=1024
@@ -31,5 +32,9 @@ if [[ $jobs -gt 1 ]]; then
   flags+=(-fork="$jobs" -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
 fi
 cd "$work"
+status=0
 # shellcheck disable=SC2086
-exec "$build/fuzz/$target" "${flags[@]}" ${LEPP_FUZZ_FLAGS:-} "$work/corpus" "$root/corpus/fuzz/$target"
+"$build/fuzz/$target" "${flags[@]}" ${LEPP_FUZZ_FLAGS:-} "$work/corpus" "$root/corpus/fuzz/$target" || status=$?
+# CPU time of the run (user, system) for the findings table.
+times | tail -1 | sed 's/^/cpu (children user sys): /' >&2
+exit $status

@@ -1,0 +1,150 @@
+// The fuzz targets' own checkers must be able to fail: each test feeds one a
+// broken or loop-like input and expects it to say so.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/certify_result.h"
+#include "support/cgal_cdt.h"
+#include "support/finding.h"
+#include "support/fuzz_input.h"
+#include "support/loop_guard.h"
+
+using namespace lepp::fuzz;
+
+namespace {
+FuzzInput square_with_hole() {
+  FuzzInput in;
+  in.grid = 12;
+  in.theta_tenths = 281;
+  in.method = 1;
+  in.order = 1;
+  in.scale = 4;
+  in.vertices = {{0, 0}, {12, 0}, {12, 12}, {0, 12}, {4, 4}, {8, 4}, {8, 8}, {4, 8}};
+  in.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  in.holes = {{12, 12}};
+  return in;
+}
+}  // namespace
+
+TEST(FuzzInput, EncodeThenDecodeGivesTheSameInput) {
+  const FuzzInput in = square_with_hole();
+  const std::vector<std::uint8_t> bytes = encode(in);
+  const FuzzInput back = decode(bytes.data(), bytes.size());
+  EXPECT_EQ(describe(back), describe(in));
+}
+
+TEST(FuzzInput, MutationsStayDecodable) {
+  std::mt19937 rng(7);
+  FuzzInput in = square_with_hole();
+  for (int i = 0; i < 2000; ++i) {
+    mutate(in, rng);
+    const std::vector<std::uint8_t> bytes = encode(in);
+    ASSERT_EQ(describe(decode(bytes.data(), bytes.size())), describe(in)) << "after mutation " << i;
+  }
+}
+
+TEST(FuzzInput, ToPslgDropsCrossingAndThroughVertexSegments) {
+  FuzzInput in;
+  in.grid = 4;
+  in.vertices = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  in.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}, {2, 0}};  // (1,3) crosses (0,2); (2,0) repeats it
+  EXPECT_EQ(to_pslg(in).segments.size(), 5u);
+  in.vertices.push_back({2, 2});  // now (0,2) passes through vertex 4, and (1,3) is kept instead
+  EXPECT_EQ(to_pslg(in).segments.size(), 4u);
+}
+
+TEST(LoopGuard, BudgetAndFloorFollowTheLocalFeatureSize) {
+  lepp::Pslg pslg;
+  pslg.vertices = {{0, 0}, {8, 0}, {8, 8}, {0, 8}, {4, 0.5}};
+  pslg.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  const InputFeatures f = input_features(pslg);
+  EXPECT_DOUBLE_EQ(f.lfs_min, 0.5);  // vertex 4 to segment 0
+  EXPECT_NEAR(f.min_input_angle_deg, 90, 1e-9);
+  const LoopGuard g = loop_guard(pslg, 1 << 30);
+  EXPECT_EQ(g.steiner_budget, 64 * 9 + 16 * 64 * 4);
+  EXPECT_DOUBLE_EQ(g.edge_floor, 0.5 / 1024);
+  EXPECT_NEAR(alpha_limit_deg(), 22.24, 0.01);
+}
+
+TEST(LoopGuard, ClassifiesASelfSimilarMidpointSequenceAsTheSpecialLoop) {
+  // A fake traced run: the same bad triangle shape, halving, ten times.
+  lepp::Pslg pslg;
+  pslg.vertices = {{0, 0}, {100, 0}, {0, 100}};
+  pslg.segments = {{0, 1}, {1, 2}, {2, 0}};
+  lepp::RefineResult traced;
+  traced.mesh.vertices = pslg.vertices;
+  for (int k = 0; k < 10; ++k) {
+    const double s = std::ldexp(1.0, -k);
+    const int base = static_cast<int>(traced.mesh.vertices.size());
+    traced.mesh.vertices.push_back({10 + 20 * s, 10});
+    traced.mesh.vertices.push_back({10 + 40 * s, 10});
+    traced.mesh.vertices.push_back({10 + 25 * s, 10 + 6 * s});
+    lepp::TraceStep step;
+    step.bad = {base, base + 1, base + 2};
+    traced.trace.push_back(step);
+  }
+  traced.mesh.triangles = {{0, 1, 2}};
+  lepp::RefineOptions options;
+  options.method = lepp::Method::Midpoint;
+  options.min_angle_deg = 25;
+  EXPECT_EQ(classify_loop(pslg, options, traced), "midpoint-special-loop");
+  options.method = lepp::Method::Centroid;
+  EXPECT_EQ(classify_loop(pslg, options, traced), "self-similar-loop");
+  traced.trace.resize(2);  // too short to repeat
+  EXPECT_EQ(classify_loop(pslg, options, traced), "other");
+}
+
+TEST(LoopGuard, ClassifiesShortEdgesAtASmallInputAngleAsACascade) {
+  lepp::Pslg pslg;
+  pslg.vertices = {{0, 0}, {100, 0}, {100, 10}};  // about 5.7 degrees at vertex 0
+  pslg.segments = {{0, 1}, {1, 2}, {2, 0}};
+  lepp::RefineResult traced;
+  traced.mesh.vertices = pslg.vertices;
+  traced.mesh.vertices.push_back({1e-3, 0});
+  traced.mesh.vertices.push_back({1e-3, 1e-4});
+  traced.mesh.triangles = {{0, 3, 4}, {3, 1, 2}, {3, 2, 4}};
+  lepp::RefineOptions options;
+  EXPECT_EQ(classify_loop(pslg, options, traced), "small-angle-cascade");
+}
+
+TEST(Finding, ThrowsInReplayExpectMode) {
+  set_expect_findings(true);
+  EXPECT_THROW(report_finding("test", "some-class", "a message"), FindingReported);
+  set_expect_findings(false);
+}
+
+TEST(CgalCdt, SquareWithHoleHasEightTriangles) {
+  const CgalCdt cdt = cgal_cdt(to_pslg(square_with_hole()));
+  EXPECT_EQ(cdt.mesh.triangles.size(), 8u);
+  EXPECT_EQ(cdt.mesh.constrained_edges.size(), 8u);
+}
+
+class CertifyResult : public ::testing::Test {
+ protected:
+  lepp::Pslg pslg = to_pslg(square_with_hole());
+  lepp::Mesh mesh = cgal_cdt(pslg).mesh;
+};
+
+TEST_F(CertifyResult, AcceptsTheCdt) { EXPECT_EQ(certify_problems(pslg, mesh, 0, {}), ""); }
+
+TEST_F(CertifyResult, RejectsAVertexIdOutOfRange) {
+  mesh.triangles[0][1] = 99;
+  EXPECT_NE(certify_problems(pslg, mesh, 0, {}), "");
+}
+
+TEST_F(CertifyResult, RejectsAMovedInputVertex) {
+  mesh.vertices[4].x += 0.25;
+  EXPECT_NE(certify_problems(pslg, mesh, 0, {}), "");
+}
+
+TEST_F(CertifyResult, RejectsAMeshedHole) {
+  if (!have_certifier()) GTEST_SKIP() << "certifier not built";
+  mesh.triangles.push_back({4, 5, 6});
+  EXPECT_NE(certify_problems(pslg, mesh, 0, {}), "");
+}
+
+TEST_F(CertifyResult, RejectsAnAngleBelowTheta) {
+  if (!have_certifier()) GTEST_SKIP() << "certifier not built";
+  EXPECT_NE(certify_problems(pslg, mesh, 30, {}), "");  // the CDT has angles of about 26.6 degrees
+}
