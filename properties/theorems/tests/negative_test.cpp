@@ -116,6 +116,7 @@ TEST(Lemma8Rejects, AVertexInsideTheCircumcircleNextToM) {
   expect_rejected(check_lemma8(obtuse, Lemma8Part::b_ii));
   expect_rejected(check_lemma8(obtuse, Lemma8Part::b_iii));
   expect_rejected(check_theorem9_distances(obtuse, 20));
+  expect_rejected(check_prop6a_mesh(acute));  // d(M) = 1, not BM
   // Without the extra vertex the same pairs pass.
   EXPECT_TRUE(check_lemma8(TerminalInMesh{kAcute, {kAcute.A, kAcute.B, kAcute.C, kAcute.D}}, Lemma8Part::a_ii).holds());
 }
@@ -138,11 +139,13 @@ TEST(Lemma8Rejects, NonTerminalObtuseWithSmallBeta) {
 TEST(Lemma11Rejects, DInsideTheCircumcircle) {
   // ABC obtuse (135 degrees at C); D = (10, -1) inside CC(ABC): b_D > b_min.
   expect_rejected(check_lemma11(quad(0, 0, 20, 0, 8, 4, 10, -1)));
+  expect_rejected(check_lemma11_narrowed(quad(0, 0, 20, 0, 8, 4, 10, -1)));
 }
 
 TEST(Remark13Rejects, NonDelaunayFlatNeighbour) {
   // ABD is the worse triangle (5.7 degrees, obtuse), D nearly on AB: d(Q)/BC = 0.18.
   expect_rejected(check_remark13_case(quad(0, 0, 20, 0, 8, 4, 10, -1), Remark13Case::Obtuse, 0.69));
+  expect_rejected(check_remark13(quad(0, 0, 20, 0, 8, 4, 10, -1)));
 }
 
 TEST(Remark13Rejects, NonTerminalKite) {
