@@ -138,3 +138,44 @@ TEST(SelectRules, MidpointConstrainedSecondLongestOfT2) {
 
 }  // namespace
 }  // namespace lepp::reference
+
+namespace lepp::reference {
+namespace {
+
+// Edge order ties (ALGORITHM.md Section 3): in the skinny isosceles triangle
+// (0,0), (2,0), (1,5) the two long edges have the same length; the one whose
+// smaller endpoint id is smaller counts as longer, so the Lepp leaves across
+// the edge from vertex 0 to the apex. Swapping the ids of the two base
+// vertices mirrors the choice: the rule depends on ids, not on geometry.
+// D = (-2.7,3.2) and E = (4.7,3.2) are apexes of ears on the long edges.
+RefineResult isosceles(bool swap_base) {
+  Pslg p;
+  Point a{0, 0}, b{2, 0};
+  if (swap_base) std::swap(a, b);
+  p.vertices = {a, b, {1, 5}, {-2.7, 3.2}, {4.7, 3.2}};
+  // Around the pentagon (0,0), (2,0), E, apex, D, whatever the ids.
+  std::vector<int> cycle = swap_base ? std::vector<int>{1, 0, 4, 2, 3} : std::vector<int>{0, 1, 4, 2, 3};
+  for (std::size_t i = 0; i < cycle.size(); ++i) p.segments.push_back({cycle[i], cycle[(i + 1) % cycle.size()], 0});
+  RefineOptions options;
+  options.trace = true;
+  return refine(p, options);
+}
+
+TEST(EdgeOrder, TieGoesToTheEdgeWithTheOlderVertex) {
+  for (bool swap_base : {false, true}) {
+    RefineResult r = isosceles(swap_base);
+    ASSERT_FALSE(r.trace.empty());
+    const TraceStep& s = r.trace.front();
+    EXPECT_EQ(s.bad, swap_base ? (Tri{0, 2, 1}) : (Tri{0, 1, 2}));  // counter-clockwise
+    // The terminal edge is 0-2 in both cases; the triangle across it holds D
+    // (id 3) when vertex 0 is (0,0), E (id 4) when vertex 0 is (2,0).
+    EXPECT_EQ(std::min(s.terminal_edge[0], s.terminal_edge[1]), 0) << swap_base;
+    EXPECT_EQ(std::max(s.terminal_edge[0], s.terminal_edge[1]), 2) << swap_base;
+    int ear = swap_base ? 4 : 3;
+    EXPECT_TRUE(s.t2[0] == ear || s.t2[1] == ear || s.t2[2] == ear) << swap_base;
+    EXPECT_EQ(r.outcome, Outcome::Converged);
+  }
+}
+
+}  // namespace
+}  // namespace lepp::reference
