@@ -33,6 +33,7 @@ std::vector<TerminalInMesh> delaunay_terminal_pairs(const std::vector<GridPoint>
     }
   DT dt(pts.begin(), pts.end());
   std::vector<TerminalInMesh> out;
+  if (dt.dimension() < 2) return out;  // all points collinear: no triangles
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     DT::Face_handle f = e->first, g = f->neighbor(e->second);
     if (dt.is_infinite(f) || dt.is_infinite(g)) continue;

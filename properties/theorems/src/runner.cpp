@@ -2,6 +2,7 @@
 // the same engine RC_GTEST_PROP uses) and writes the certificate table.
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -114,6 +115,17 @@ std::string certificate_markdown(const std::vector<CertificateRow>& rows, bool l
                                      : std::to_string(kDefaultCases) + " / " + std::to_string(kLongCases);
     std::string run = s.statistic ? std::to_string(o.cases) + " PSLGs"
                                   : std::to_string(o.cases) + " cases, " + std::to_string(o.applicable) + " applicable";
+    if (o.passed && !s.statistic) {
+      // What the run exercised: the RC_CLASSIFY classes, most frequent first.
+      std::vector<std::pair<int, std::string>> by_count;
+      for (const auto& [k, n] : o.classes)
+        if (k != "hypothesis not met") by_count.push_back({n, k});
+      std::sort(by_count.rbegin(), by_count.rend());
+      if (by_count.size() > 4) by_count.resize(4);
+      std::string shown;
+      for (const auto& [n, k] : by_count) shown += (shown.empty() ? "" : "; ") + k + " " + std::to_string(n);
+      if (!shown.empty()) run += " (" + shown + ")";
+    }
     std::string result;
     if (s.statistic) {
       result = (o.passed ? "**holds**: " : "**does not hold**: ") + o.statistic;
