@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <deque>
 #include <string>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include "lepp_search.h"
 #include "point_selection.h"
 #include "quality.h"
+#include "ring_queue.h"
 #include "tri_mesh.h"
 
 namespace lepp::fast {
@@ -109,7 +109,7 @@ class Refiner {
     mem_.steiner.reserve(vertices_guess);
 
     RefineResult result;
-    std::deque<Item> queue;
+    RingQueue<Item> queue;
     std::vector<Keyed> fresh;
     for (int ti = 0; ti < mesh_.size(); ++ti)
       if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
@@ -208,7 +208,7 @@ class Refiner {
  private:
   // The queue runs far behind the insertions (fifo): its triangles and their
   // points are cold in cache. Fetch the next items' while this one is processed.
-  void prefetch_ahead(const std::deque<Item>& queue) const {
+  void prefetch_ahead(const RingQueue<Item>& queue) const {
     if (queue.size() > 4) __builtin_prefetch(&mesh_.stamp[static_cast<std::size_t>(queue[4].tri)]);
     if (queue.size() > 2 && still_there(mesh_, queue[2])) __builtin_prefetch(&mesh_.t(queue[2].tri));
     if (queue.size() > 1 && still_there(mesh_, queue[1])) {
