@@ -276,6 +276,18 @@ TEST(CertifyRejects, MeshedHole) {
   expect_rejected_for(run(p, bad), Reason::MeshOutsideDomain);
 }
 
+TEST(CertifyRejects, BadIdsAndNonFiniteCoordinates) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  bad.triangles.push_back({0, 1, 99});
+  bad.triangles.push_back({2, 2, 3});
+  bad.vertices.push_back({std::nan(""), 1});
+  bad.triangles.push_back({0, 1, static_cast<int>(bad.vertices.size()) - 1});
+  const auto r = run(p, bad);
+  expect_rejected_for(r, Reason::BadTriangle);
+  EXPECT_EQ(r.count(Reason::BadTriangle), 3u);
+}
+
 TEST(CertifyRejects, UnusedSteinerVertex) {
   const Pslg p = test::square_with_crack();
   Mesh bad = test::cgal_cdt(p);

@@ -118,6 +118,10 @@ class Certifier {
              {static_cast<int>(t)}, {}, {}, {}, -1});
         continue;
       }
+      if (!finite(P(x[0])) || !finite(P(x[1])) || !finite(P(x[2]))) {
+        add({Reason::BadTriangle, fmt::format("{} has a NaN or infinite coordinate", tri_text(t)), {static_cast<int>(t)}, {}, {}, {}, -1});
+        continue;
+      }
       tri_ok_[t] = 1;
       if (exact::orient(P(x[0]), P(x[1]), P(x[2])) <= 0)
         add({Reason::NotCounterClockwise, fmt::format("{} is not strictly counter-clockwise", tri_text(t)),
@@ -172,9 +176,12 @@ class Certifier {
     }
   }
 
+  static bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
   void check_duplicate_vertices() {
-    std::vector<int> order(mesh_.vertices.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::vector<int> order;
+    for (std::size_t i = 0; i < mesh_.vertices.size(); ++i)
+      if (finite(mesh_.vertices[i])) order.push_back(static_cast<int>(i));  // NaN breaks the sort's order
     auto less = [&](int a, int b) { return P(a).x < P(b).x || (P(a).x == P(b).x && P(a).y < P(b).y); };
     std::sort(order.begin(), order.end(), less);
     for (std::size_t i = 1; i < order.size(); ++i)

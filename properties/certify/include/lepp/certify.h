@@ -21,7 +21,7 @@ enum class Check { Topology, InputVertices, Constraints, Delaunay, MinAngle, The
 // Why a check failed: one value per distinct failure, so tests can assert the reason.
 enum class Reason {
   // Topology
-  BadTriangle,               // a vertex id out of range or repeated in one triangle
+  BadTriangle,               // a vertex id out of range or repeated in one triangle, or a non-finite coordinate
   NotCounterClockwise,       // orientation <= 0 (clockwise or degenerate)
   DuplicateMeshVertex,       // two mesh vertices with identical coordinates
   EdgeOverused,              // an edge in more than two triangles (overlap)
