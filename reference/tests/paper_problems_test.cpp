@@ -88,3 +88,39 @@ TEST(ReferenceRefine, IsDeterministic) {
 
 }  // namespace
 }  // namespace lepp::reference
+
+namespace lepp::reference {
+namespace {
+
+// The lifo discipline is an option, not the default: it converges on the
+// paper's problems at 30 degrees too, through a different sequence of insertions.
+TEST(QueueOrder, LifoConvergesThroughAnotherSequence) {
+  for (const char* name : {"square400", "circles240", "rect162", "A"}) {
+    Pslg input = paper_problem(name);
+    RefineOptions fifo, lifo;
+    fifo.trace = lifo.trace = true;
+    lifo.order = QueueOrder::Lifo;
+    RefineResult a = refine(input, fifo), b = refine(input, lifo);
+    EXPECT_EQ(b.outcome, Outcome::Converged) << name;
+    EXPECT_EQ(testing::check_min_angle(b.mesh, 30), "") << name;
+    EXPECT_EQ(testing::check_locally_delaunay(b.mesh), "") << name;
+    bool same = a.trace.size() == b.trace.size();
+    for (std::size_t i = 0; same && i < a.trace.size(); ++i) same = a.trace[i].point == b.trace[i].point;
+    EXPECT_FALSE(same) << name;
+  }
+}
+
+// Four cocircular points: the initial CDT's diagonal is a tie, counted once;
+// right isosceles triangles need no refinement at 30 degrees.
+TEST(CocircularTies, UnitSquareDiagonalIsOneTie) {
+  Pslg square;
+  square.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  square.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  RefineResult r = refine(square, RefineOptions{});
+  EXPECT_EQ(r.steiner_points, 0);
+  EXPECT_EQ(r.cocircular_ties, 1);
+  EXPECT_EQ(refine(paper_problem("circles240"), RefineOptions{}).cocircular_ties, 0);
+}
+
+}  // namespace
+}  // namespace lepp::reference
