@@ -77,6 +77,21 @@ TEST(CertifyAccepts, CgalCdtOfTestInputs) {
   for (const Pslg& p : {test::square_with_crack(), test::square_with_hole()}) expect_certified(run(p, test::cgal_cdt(p)));
 }
 
+TEST(CertifyAccepts, InputVertexInsideAHoleMayBeUnused) {
+  Pslg p = test::square_with_hole();
+  p.vertices.push_back({5.5, 4.5});  // inside the hole [4,6]^2, on no segment
+  p = test::validated(p);
+  const Mesh m = test::cgal_cdt(p);
+  const auto r = run(p, m);
+  expect_certified(r);
+  // Our engines keep it in the vertex list, unused: still fine.
+  EXPECT_EQ(m.vertices.size(), p.vertices.size());
+}
+
+TEST(CertifyAccepts, CgalRefinedMeshesAtTwentyDegrees) {
+  for (const Pslg& p : {test::square_with_crack(), test::square_with_hole()}) expect_certified(run(p, test::cgal_refined(p), 20));
+}
+
 TEST(CertifyRejects, FlippedNonDelaunayDiagonal) {
   const Pslg p = test::square_with_crack();
   const Mesh good = test::cgal_cdt(p);
