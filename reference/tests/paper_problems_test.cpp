@@ -56,6 +56,18 @@ INSTANTIATE_TEST_SUITE_P(Reference, PaperProblem,
                                   "_" + to_string(std::get<2>(info.param));
                          });
 
+// The paper's Table 1 has the centroid method converging up to 36 degrees. Up
+// to 35 each run here takes well under a second (fifo order); at 36 the point
+// counts depend on the order by orders of magnitude (DESIGN.md, item 7), so
+// 36 is measured (lepp paper, the report), not asserted.
+INSTANTIATE_TEST_SUITE_P(ReferenceHighAngle, PaperProblem,
+                         ::testing::Combine(::testing::Values("square400", "circles240", "rect162", "A"),
+                                            ::testing::Values(32.0, 34.0, 35.0), ::testing::Values(Method::Centroid)),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_" + std::to_string(static_cast<int>(std::get<1>(info.param))) +
+                                  "_" + to_string(std::get<2>(info.param));
+                         });
+
 // Before refinement: the CDT of the input, Delaunay on unconstrained edges.
 TEST(ReferenceCdt, PaperProblemsAreConstrainedDelaunay) {
   for (const char* name : {"square400", "circles240", "rect162", "A"}) {
