@@ -163,8 +163,11 @@ RC_GTEST_PROP(Differential, SameMeshAsTheReferenceOnGeneralPosition, ()) {
   o.min_angle_deg = *rc::gen::inRange(15, 35);
   o.method = *rc::gen::element(Method::Centroid, Method::Midpoint);
   o.order = *rc::gen::element(QueueOrder::Fifo, QueueOrder::Lifo);
+  // Sometimes a size bound too (the domain lies in [-1, 1]^2): a few hundred triangles.
+  if (*rc::gen::inRange(0, 3) == 0) o.max_area = 4.0 / *rc::gen::inRange(20, 400);
   o.max_steiner = 1500;
   RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+  RC_CLASSIFY(o.max_area > 0, "size bound");
   RC_CLASSIFY(f.outcome == Outcome::Converged, "converged");
   RC_CLASSIFY(f.outcome == Outcome::Unimprovable, "unimprovable");
   RC_CLASSIFY(f.outcome == Outcome::SteinerBudget, "budget");
