@@ -2,9 +2,12 @@
 // point sets, small input angles, clustered boundaries) at several theta and
 // both methods, encoded as fuzz_refine, fuzz_differential and fuzz_cdt read them.
 //   fuzz_make_seeds OUT_DIR
+//   fuzz_make_seeds --bake IN OUT   re-encodes a finding with the environment's
+//     LEPP_FUZZ_METHOD / LEPP_FUZZ_THETA applied, so it replays without them
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -62,7 +65,19 @@ std::vector<std::pair<std::string, FuzzInput>> shapes() {
 
 }  // namespace
 
+int bake(const char* in_path, const char* out_path) {
+  std::ifstream in(in_path, std::ios::binary);
+  const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  FuzzInput input = lepp::fuzz::decode(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  lepp::fuzz::apply_environment(input);
+  const std::vector<std::uint8_t> out = lepp::fuzz::encode(input);
+  std::ofstream(out_path, std::ios::binary).write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
+  std::printf("%s\n", lepp::fuzz::describe(input).c_str());
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--bake") return bake(argv[2], argv[3]);
   if (argc != 2) {
     std::fprintf(stderr, "usage: fuzz_make_seeds OUT_DIR\n");
     return 2;
