@@ -13,6 +13,7 @@
 
 #include "lepp/certify.h"
 #include "lepp/fast.h"
+#include "lepp/gen.h"
 #include "lepp/io.h"
 #include "lepp/reference.h"
 #include "lepp/validate.h"
@@ -174,6 +175,30 @@ RC_GTEST_PROP(Differential, SameMeshAsTheReferenceOnGeneralPosition, ()) {
   RC_PRE(f.cocircular_ties == 0 && r.cocircular_ties == 0);
   std::string diff = difference(f, r);
   RC_ASSERT(diff == "");
+}
+
+// properties/gen's families (lattice points: holes, cracks, near-degenerate,
+// small input angles): the fast mesh certifies; identical to the reference
+// where neither met a cocircular tie, else only counted.
+RC_GTEST_PROP(Differential, GeneratedFamiliesCertifyAndAgreeWithoutTies, ()) {
+  const Pslg p = *gen::anyPslg();
+  RefineOptions o;
+  o.min_angle_deg = *rc::gen::inRange(15, 35);
+  o.method = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  o.max_steiner = 1500;
+  RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+  RC_CLASSIFY(true, p.source);
+  const bool ties = f.cocircular_ties > 0 || r.cocircular_ties > 0;
+  RC_CLASSIFY(ties, "cocircular ties");
+  certify::Options co;
+  co.min_angle_deg = f.outcome == Outcome::Converged || f.outcome == Outcome::Unimprovable ? o.min_angle_deg : 0;
+  co.unimprovable = f.unimprovable;
+  certify::Report report = certify::certify(p, f.mesh, co);
+  if (!report.certified()) RC_FAIL(certify::format_report(report));
+  const bool same = difference(f, r).empty();
+  RC_CLASSIFY(ties && same, "ties, same mesh anyway");
+  RC_CLASSIFY(ties && !same, "ties, meshes differ");
+  if (!ties) RC_ASSERT(same);
 }
 
 RC_GTEST_PROP(Differential, TraceReplaysStepByStep, ()) {
