@@ -46,6 +46,28 @@ edge of both (ties allowed) and D not strictly inside the circumcircle of ABC;
 for a terminal triangle, B is the endpoint of the terminal edge nearer the apex.
 alpha_limit = arctan((sqrt 15 - sqrt 3)/(3 + sqrt 5)) = 22.24 degrees.
 
+Readings where the text is ambiguous or the figures are needed:
+- Theorem 1 (iii): "quasi-equilateral" is read through the theorem's own
+  parenthesis, a class whose bisection closure has at most 4 classes.
+- Proposition 6 (b): "smallest edge alpha0" is read as smallest *angle* alpha0.
+- Proposition 6 (a) and Lemma 8 say "the previous vertices in the mesh": both
+  that reading (every vertex of a Delaunay mesh) and the proof's (the
+  triangle's own vertices) are checked; only the latter holds.
+- Lemma 7 (I)(c) is a limit; it is checked as two finite facts (see its row).
+- Lemma 8 (c): beta_2 is not defined in the text; read as beta of t's bisection.
+- Lemma 8 (a)(i): the proof bounds MB/BC from above ("< 1.32") where a lower
+  bound is needed; the isosceles worst case gives 1.2967 < 1.3.
+- Theorem 9: "the sequence t_Bj" is read as repeated longest-edge bisection of
+  the son t_B (the one keeping edge CB), beta_j its angle at the new midpoint.
+- Lemma 11: U, W are where CC(ABC) meets the arcs of the lens (circles of
+  radius |AB| about A and B); they share b_min by symmetry about x = |AB|/2.
+- Remark 13 (2): "right triangles of smallest angle pi/3" is read as the
+  30-60-90 triangle (its mirror pair gives the stated 0.75).
+- Theorem 14: "aligned with the vertices of the terminal edge" is read as Q on
+  line AB.
+- Section 5 (and Remark 15) are measured on generated inputs of the paper's
+  class, not on the paper's four problems (`lepp paper` reproduces those).
+
 "cases" counts generated inputs; "applicable" those where the statement's
 hypothesis held (the others are classified, not discarded). A finding is a
 statement that fails as written: its shrunk counterexample is kept in

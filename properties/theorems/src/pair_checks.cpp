@@ -333,14 +333,16 @@ Verdict check_corollary12(const TerminalQuad& q) {
   return v;
 }
 
-// Narrowed: when the worse triangle is bad (smallest angle < 30) and the better
-// one is good (>= 30), Q is strictly inside the better one.
+// Narrowed to the exact condition: b_Q = (b_C + b_D)/4, so Q is inside the
+// triangle whose apex is farther from AB. When the better triangle is also the
+// taller one (strictly), Q lies strictly inside it.
 Verdict check_corollary12_narrowed(const TerminalQuad& q) {
   Verdict v = check_corollary12(q);
   Pair p = make_pair(q);
   FT mc = min_angle_cos(p.A, p.B, p.C), md = min_angle_cos(p.A, p.B, p.D);
-  FT worse = std::max(mc, md), better = std::min(mc, md);
-  v.hypothesis = v.hypothesis && worse > cos_deg30() && better <= cos_deg30();
+  FT hc = CGAL::abs(cross(p.B - p.A, p.C - p.A)), hd = CGAL::abs(cross(p.B - p.A, p.D - p.A));
+  bool better_is_taller = (mc < md && hc > hd) || (md < mc && hd > hc) || (mc == md && hc != hd);
+  v.hypothesis = v.hypothesis && better_is_taller;
   return v;
 }
 

@@ -245,11 +245,14 @@ const std::vector<Statement>& statements() {
                             props::corollary12),
                         "Q is inside ABC exactly when C is farther from AB than D (b_Q = (b_C + b_D)/4), which is "
                         "not the better-angled triangle in general: ABC better (29.74 against 29.60 degrees) with "
-                        "Q inside ABD was found; for a mirror kite Q lies on AB, inside neither.",
-                        "corpus/theorems/corollary12_kite.txt", "Corollary12.CentroidInsideGoodTriangleWhenOtherIsBad"));
-    v.push_back(row("Corollary 12 (narrowed)", "Corollary12", "CentroidInsideGoodTriangleWhenOtherIsBad",
-                    "When the worse triangle is bad (smallest angle < 30) and the better one good (>= 30), Q "
-                    "lies strictly inside the better one.",
+                        "Q inside ABD was found; for a mirror kite Q lies on AB, inside neither. Requiring the worse "
+                        "triangle bad (< 30) and the better good (>= 30) does not save it (ABC 35.04, ABD 28.50, Q "
+                        "inside ABD was found).",
+                        "corpus/theorems/corollary12_kite.txt", "Corollary12.CentroidInsideBetterTriangleWhenItIsTaller"));
+    v.push_back(row("Corollary 12 (narrowed)", "Corollary12", "CentroidInsideBetterTriangleWhenItIsTaller",
+                    "The exact condition: when the better triangle's apex is strictly farther from AB than the "
+                    "other apex, Q lies strictly inside the better triangle (b_Q = (b_C + b_D)/4 puts Q on the "
+                    "side of the farther apex).",
                     props::corollary12_narrowed));
     v.push_back(finding(row("Remark 13", "Remark13", "CentroidDistanceAtLeast075ShortestEdge",
                             "Delaunay terminal pairs whose worse triangle (smaller smallest angle) is bad, alpha0 "

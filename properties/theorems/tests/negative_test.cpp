@@ -166,12 +166,15 @@ TEST(Theorem14Rejects, TheKiteIsCollinearButNotRightIsosceles) {
 
 TEST(Corollary12Rejects, TallerWorseTriangle) {
   // Delaunay terminal pair: ABC better (29.74 > 29.60) but Q inside ABD: the finding;
-  // both are bad, so the narrowed statement does not apply.
+  // ABD is the taller, so the narrowed statement does not apply.
   const TerminalQuad q = quad(-28, -32, -20, -20, -16, -26, -27, -18);
   Verdict v = check_corollary12(q);
   EXPECT_TRUE(v.hypothesis);
   EXPECT_FALSE(v.conclusion);
   expect_rejected(check_corollary12_narrowed(q));
+  // Not terminal: ABC (smallest angle 19.4) is better than ABD (0.5) and taller, yet Q = (5, 7.25)
+  // lies outside it, beyond edge AC: the quad is not convex.
+  expect_rejected(check_corollary12_narrowed(quad(0, 0, 20, 0, 40, 30, -40, -1)));
 }
 
 TEST(Theorem9Rejects, ChainFromATriangleWiderThan120) {

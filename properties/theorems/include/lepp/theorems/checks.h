@@ -93,7 +93,8 @@ Verdict check_lemma11(const TerminalQuad& q);
 // Narrowed: b_Q <= (b_C + b_min)/4, equality when D is U or W; the other three bounds strict.
 Verdict check_lemma11_narrowed(const TerminalQuad& q);
 Verdict check_corollary12(const TerminalQuad& q);
-// Narrowed: when the worse triangle is bad (< 30) and the better one good (>= 30), Q is strictly inside the better one.
+// Narrowed to the exact condition: when the better triangle's apex is strictly farther from AB
+// than the other's, Q is strictly inside the better triangle.
 Verdict check_corollary12_narrowed(const TerminalQuad& q);
 Verdict check_remark13(const TerminalQuad& q);
 // Remark 13 restricted to one case, with the constant c: d(Q) >= c |BC|.
