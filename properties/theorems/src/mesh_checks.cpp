@@ -98,10 +98,7 @@ Verdict over_pair(const TerminalInMesh& m, F one, bool own_triangle = false) {
       v.detail += " [" + r.why + "]";
     }
     Verdict w = one(r);
-    if (!w.conclusion) {
-      v.conclusion_everywhere = false;
-      if (!w.hypothesis) v.detail += "; (hypothesis dropped) " + w.detail;
-    }
+    if (!w.conclusion) v.conclusion_everywhere = false;
     if (!w.hypothesis) continue;
     if (!w.conclusion) {
       v.conclusion = false;

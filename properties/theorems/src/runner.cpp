@@ -48,11 +48,16 @@ RunOutcome run_statement(const Statement& s, int cases, int inputs, std::uint64_
       out.cases = success.numSuccess;
       out.applicable = success.numSuccess;
       for (const auto& [tags, count] : success.distribution) {
+        // RC_CLASSIFY quotes string tags: "\"hypothesis not met\"".
+        auto unquote = [](std::string t) {
+          if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
+          return t;
+        };
         std::string key;
-        for (const auto& t : tags) key += (key.empty() ? "" : ", ") + t;
+        for (const auto& t : tags) key += (key.empty() ? "" : ", ") + unquote(t);
         out.classes[key] += count;
         for (const auto& t : tags)
-          if (t == "hypothesis not met") out.applicable -= count;
+          if (unquote(t) == "hypothesis not met") out.applicable -= count;
       }
     } else if (result.is<rc::detail::FailureResult>()) {
       auto failure = result.get<rc::detail::FailureResult>();
