@@ -478,8 +478,8 @@ void write_page(const PaperArgs& args, const Results& res, const std::vector<dou
   // Per problem: every method and angle, with the paper's column and the difference.
   md << "## Every method, per problem\n\n";
   md << "Points added; *Δ* is ours minus the paper's; min∠ is the smallest angle of the mesh; † marks a run that "
-        "ended by its own rule with a smallest angle below θ (CGAL's mesher leaves triangles near small input "
-        "angles alone; ours reports such triangles as unimprovable).\n\n";
+        "ended by its own rule with a smallest angle below θ (CGAL's mesher keeps no angle bound near acute input "
+        "angles, its \"clusters\"; ours would report such triangles as unimprovable).\n\n";
   for (const auto& p : paper_problems()) {
     md << "### " << p.name << "\n\n";
     md << "| θ (°) | centroid | paper | Δ | min∠ | midpoint | min∠ | Triangle | paper | Δ | min∠ | CGAL | min∠ |\n";
