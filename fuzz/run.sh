@@ -33,8 +33,7 @@ if [[ $jobs -gt 1 ]]; then
 fi
 cd "$work"
 status=0
+TIMEFORMAT='cpu: real %R s, user %U s, sys %S s'  # CPU time of the run, for the findings table
 # shellcheck disable=SC2086
-"$build/fuzz/$target" "${flags[@]}" ${LEPP_FUZZ_FLAGS:-} "$work/corpus" "$root/corpus/fuzz/$target" || status=$?
-# CPU time of the run (user, system) for the findings table.
-times | tail -1 | sed 's/^/cpu (children user sys): /' >&2
+time "$build/fuzz/$target" "${flags[@]}" ${LEPP_FUZZ_FLAGS:-} "$work/corpus" "$root/corpus/fuzz/$target" || status=$?
 exit $status
