@@ -1,8 +1,9 @@
 // Exact signs of small polynomials in double coordinates: an interval filter,
-// then exact rationals when the interval straddles zero. Private to the certifier.
+// then exact arithmetic (CGAL::Mpzf: exact +, -, * on doubles, no expression
+// templates) when the interval straddles zero. Private to the certifier.
 #pragma once
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Interval_nt.h>
 
 #include "lepp/pslg.h"
@@ -10,9 +11,10 @@
 namespace lepp::certify::exact {
 
 // f is a generic callable taking a number-type tag (a value of type NT) and
-// returning an NT: evaluated on intervals first, exactly only if needed. Declare
-// the return type (-> decltype(z)): Boost's rationals return expression templates
-// that would outlive the lambda's locals.
+// returning an NT: evaluated on intervals first, exactly only if needed. The
+// polynomials use only +, - and *, which Mpzf computes exactly. (Boost's
+// expression-template rationals were used here before; g++ -O3 turned a path
+// through them into a null dereference, caught by fuzz_support_test.)
 template <class F>
 int sign(const F& f) {
   {
@@ -22,7 +24,7 @@ int sign(const F& f) {
     if (r.sup() < 0) return -1;
     if (r.inf() == 0 && r.sup() == 0) return 0;
   }
-  return static_cast<int>(CGAL::sign(f(CGAL::Exact_rational(0))));
+  return static_cast<int>(CGAL::sign(f(CGAL::Mpzf(0))));
 }
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
