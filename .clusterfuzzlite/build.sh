@@ -1,4 +1,5 @@
 #!/bin/bash -eu
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ClusterFuzzLite / OSS-Fuzz build: the project's own CMake with the
 # infrastructure's $CC, $CXX, $CXXFLAGS (sanitizers, coverage) and
 # $LIB_FUZZING_ENGINE; the targets and <target>_seed_corpus.zip go to $OUT.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // impl vs reference vs CGAL's mesher, in the same run (docs/BENCHMARKS.md).
 //   lepp_bench [--benchmark_filter=...]         paper corpus at 30 degrees, generated 1e4..1e6 triangles
 //   LEPP_BENCH_HUGE=1 lepp_bench                 adds the 1e7-triangle problem (fast engine only)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Peak resident memory of a stretch of code, from /proc/self (Linux): writing 5
 // to clear_refs resets VmHWM to the current resident size.
 #pragma once

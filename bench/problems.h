@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark inputs: the paper's corpus and generated problems of a chosen output size.
 #pragma once
 #include <string>

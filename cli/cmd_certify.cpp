@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp certify IN.poly MESH_PREFIX`: the exact certificate of any mesher's
 // Triangle-format output (docs/CERTIFIER.md): exit 0 certified, 1 violations, 2 bad input.
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp paper`: reproduces the paper's empirical study (Section 5 and 6: Table 1,
 // Figs. 10 to 14) with Lepp-centroid, Lepp-midpoint, CGAL's mesher and Triangle,
 // and writes docs/PAPER.md, docs/paper/results.json and the figures.

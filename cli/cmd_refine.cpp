@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp refine IN.poly -o PREFIX`: read, validate, refine, write, report.
 #include <chrono>
 #include <cmath>

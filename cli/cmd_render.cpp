@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp render MESH_PREFIX -o out.svg`: draws a mesh as SVG, triangles coloured
 // by quality or smallest angle, constrained edges bold, bad triangles marked.
 // Compact at 10^5 triangles (about 25 bytes each): one <path> per colour bin,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp theorems [--long] [--out docs/THEOREMS.md] [--only Suite.Name]`: re-runs
 // the paper's statements as RapidCheck properties (properties/theorems) and
 // prints the certificate table; exit 0 when every row holds or is a documented

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Each `lepp` subcommand lives in its own file and registers itself here.
 // A subcommand's callback stores its exit status in `status`:
 // 0 success, 1 internal error or violations found, 2 bad input, 3 stopped/unimprovable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // lepp: quality triangulation by the Lepp-centroid method, and the tools to prove it right.
 #include <cstdio>
 #include <exception>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Install and export lepp as a CMake package: find_package(lepp) gives
 # lepp::core (data model, formats, validation), lepp::certify (the exact
 # certifier), lepp::gen (RapidCheck generators, when RapidCheck was found),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fuzz_cdt: the fast engine's CDT build (lepp::fast::build_cdt) on point sets
 // and segments, certified (no angle check), and compared with CGAL's CDT of the
 // same input with the same domain rule (support/cgal_cdt.h): with no cocircular

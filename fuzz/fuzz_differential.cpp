@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fuzz_differential: the same input through lepp::fast and lepp::reference.
 // Findings: one engine throws or is not certified where the other is fine; on
 // input where neither met a cocircular tie, any difference in outcome, Steiner

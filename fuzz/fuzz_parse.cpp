@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fuzz_parse: bytes into the .poly reader and validation. Every input either
 // parses or is rejected with lepp::InputError; nothing else may escape, and a
 // lying header may not make the reader allocate (run with -malloc_limit_mb).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fuzz_refine: a structure-aware hunt for loops. The input is a PSLG on a small
 // grid plus theta, method, engine and queue order (support/fuzz_input.h). The
 // run gets a loop guard justified by the input (support/loop_guard.h); a run

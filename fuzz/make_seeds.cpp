@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writes the structured fuzz seeds: small PSLGs of each kind (polygons, holes,
 // point sets, small input angles, clustered boundaries) at several theta and
 // both methods, encoded as fuzz_refine, fuzz_differential and fuzz_cdt read them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The replay driver: a fuzz target's source compiled with g++ and this main()
 // instead of libFuzzer's, so ctest replays the corpus in the default build.
 //   <target>_replay [--expect-finding] PATH...

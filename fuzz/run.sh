@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the fuzz targets with clang-14 (libFuzzer, ASan, UBSan) and runs one.
 #   fuzz/run.sh TARGET SECONDS [JOBS]
 # The corpus grows in $LEPP_FUZZ_WORK/TARGET/corpus (default out/fuzz), seeded

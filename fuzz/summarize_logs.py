@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Summarizes fuzz/run.sh logs into the rows of docs/FUZZING.md's findings table.
 
 usage: fuzz/summarize_logs.py LOG...

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL::refine_Delaunay_mesh_2 on a lepp::Pslg, with a point budget and a time limit.
 #include "cgal_mesher.h"
 

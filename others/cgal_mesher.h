@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL's own quality mesher (CGAL::refine_Delaunay_mesh_2), wrapped for comparisons.
 #pragma once
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CGAL mesher wrapper: domain, holes, angle bound, and the budget that stops it.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Checks an SVG written by `lepp render`: well-formed XML, an <svg> root, and,
 with --ele, one closed triangle per line of the mesh's .ele file.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes paper/readings/*.poly: other plausible readings of Circles240 and
 Rectangle162, whose exact geometry the paper does not give (Fig. 9 only shows
 them). `lepp paper` runs Triangle and Lepp-centroid on each and reports which

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The figures of the paper's empirical study, from the runs `lepp paper` made.
 
     /usr/bin/python3 paper/plots.py docs/paper/results.json docs/paper

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs everything lepp needs on Debian 12 (run as root). Debian packages only,
 # plus Node.js's npm from Debian when the machine has no npm yet.
 set -euo pipefail

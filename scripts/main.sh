@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The main job: install, build, then reproduce the paper's empirical study with
 # `lepp paper`: the four paper problems refined by Lepp-centroid, Lepp-midpoint,
 # CGAL's mesher and Triangle at 10 to 36 degrees and above. Prints the table of

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The test job: install, build, run every test (ctest), then each extra check in
 # scripts/ci.d/ (sanitizer build, the example outside project, ...), in name order.
 set -euo pipefail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Splits a Triangle-format text file into lines of whitespace-separated tokens,
 // dropping comments (# to end of line) and blank lines, and converts tokens to
 // numbers with errors that name the file and line.

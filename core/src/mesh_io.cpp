@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PREFIX.node/.ele/.poly (and .unimprovable) in and out, as Triangle writes them.
 #include <cstdio>
 #include <fstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangle's .poly and .node readers: syntax only (geometry is validate()'s job).
 #include <algorithm>
 #include <fstream>

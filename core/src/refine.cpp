@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Names of the shared enums and the loop guards' defaults (ALGORITHM.md, "Termination").
 #include "lepp/refine.h"
 

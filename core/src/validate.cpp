@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // validate(): the checks a parsed PSLG needs before an engine sees it. This
 // file does the plain ones (finite numbers, ids in range, duplicate vertices,
 // zero-length segments); validate_geometry.cpp the ones needing exact

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The geometric checks of validate(), on a CGAL constrained triangulation
 // with exact predicates (Epick): vertices on segments, overlaps,
 // crossings, collinear input, hole points, the empty domain. O(n log n): the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The geometric half of validate(): what needs exact predicates and a
 // triangulation (CGAL, kept out of every header). Internal to lepp_core.
 #pragma once

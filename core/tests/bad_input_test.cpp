@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every file in corpus/bad/ is rejected with an InputError naming the file,
 // the line marked "<- error" in it (or no line when none is marked), and a
 // message containing the text on its first line ("# expect: ..."). An error

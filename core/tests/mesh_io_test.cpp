@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writers round-trip through the readers: write_mesh then read_mesh gives the
 // same mesh with bit-identical coordinates; write_poly then read_poly the same
 // PSLG; and the mesh reader rejects a broken file.

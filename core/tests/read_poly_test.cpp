@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The .poly/.node reader on good files: numbering, comments, attributes,
 // markers, holes, regions, CRLF, a .poly taking its vertices from the .node.
 #include <gtest/gtest.h>

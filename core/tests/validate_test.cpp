@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // validate() on PSLGs built in code: each repair does what validate.h says,
 // each error names what is wrong, and exact predicates decide.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One property, written the way another mesher's CI would: for every generated
 // PSLG, the mesh under test (here lepp's reference CDT; put yours instead)
 // certifies exactly as a constrained Delaunay triangulation, Theorem 2 included.

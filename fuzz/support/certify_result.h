@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The certifier as the fuzz targets use it: an empty string when the mesh is
 // certified, else the first violations, one line. When the certifier library is
 // not built (LEPP_FUZZ_HAVE_CERTIFIER undefined) only cheap structural checks run.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An independent CDT for fuzz_cdt to compare against: CGAL's constrained
 // Delaunay triangulation (exact predicates) of the same PSLG, with the domain
 // flooded as docs/ALGORITHM.md section 2 says. Plain-double interface: CGAL

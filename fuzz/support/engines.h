@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The two engines behind one switch, and whether each is implemented yet
 // (the placeholders throw std::logic_error; a fuzz target then skips them).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // How a fuzz target reports a finding (a crash-worthy fact: a loop, a mismatch,
 // an uncaught exception). Under libFuzzer it prints one line naming the class
 // and aborts, so the input is saved; under the replay driver's --expect-finding

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The structured input of fuzz_refine, fuzz_differential and fuzz_cdt: a PSLG
 // on a small integer grid (scaled to doubles), a threshold angle, a method, an
 // engine and a queue order. Bytes decode through FuzzedDataProvider, so every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What counts as a loop in a fuzzed refinement, and what kind of loop it is.
 //
 // A run is a loop when it needs more Steiner points than the input's size and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The LLVMFuzzerCustomMutator shared by the structure-aware targets: decode the
 // bytes to a FuzzInput, apply one to three structural edits (or, now and then,
 // libFuzzer's own byte mutation), and encode the result back.

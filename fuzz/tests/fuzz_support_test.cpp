@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fuzz targets' own checkers must be able to fail: each test feeds one a
 // broken or loop-like input and expects it to say so.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Initial CDT: CGAL's Constrained_Delaunay_triangulation_2 on Epick (bulk point
 // insertion, which sorts spatially, then the segments), copied into flat arrays
 // and flooded from the outside and from hole points without crossing a segment.

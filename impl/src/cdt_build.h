@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The initial constrained Delaunay triangulation of a validated PSLG, with the
 // exterior and holes flooded away (ALGORITHM.md section 2), as a TriMesh.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The total edge order of ALGORITHM.md section 3: (squared length, -min id,
 // -max id), squared lengths compared exactly.
 #pragma once

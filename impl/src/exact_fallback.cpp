@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact path of the filtered predicates (predicates.h): the same
 // polynomials in CGAL::Mpzf, which is exact for +, - and * on doubles.
 #include <CGAL/Mpzf.h>

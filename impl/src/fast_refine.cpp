@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast engine's refinement loop (ALGORITHM.md sections 7 to 9): the queue
 // of bad triangles, guards, trace and statistics around Lepp search, point
 // selection and insertion.

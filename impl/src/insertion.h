@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Inserting a Steiner point without point location (ALGORITHM.md section 6):
 // split the constrained edge, the triangle or the terminal edge it lies on,
 // then restore the constrained Delaunay property by Lawson flips that never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lepp(t): the longest-edge propagating path to a terminal edge (ALGORITHM.md section 3).
 #pragma once
 #include <vector>

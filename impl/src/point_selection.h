@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Select Point (midpoint method) and New Select Point (centroid method), as
 // ALGORITHM.md section 5 fixes them, with its exact double formulas.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Filtered exact predicates on double coordinates (docs/ALGORITHM.md, "Exact").
 //
 // Each predicate evaluates its polynomial in double together with the same

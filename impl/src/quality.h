@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which triangles are bad, and which bad ones are left alone (ALGORITHM.md
 // sections 4 and 8): skinny and too-big tests, and the unimprovable rule.
 #pragma once

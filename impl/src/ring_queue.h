@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A double-ended queue in one ring buffer: push at either end, pop at the
 // front, index from the front. Grows by doubling, never shrinks, so a
 // refinement in steady state allocates nothing (std::deque allocates a block

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cold parts of the flat mesh: segment membership and conversion to Mesh.
 #include "tri_mesh.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast engine's triangle mesh: flat arrays, integer ids, no pointers.
 //
 // Triangle t has vertices v[0..2] counter-clockwise; edge i is the edge

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The invariant checker of impl's tests rejects broken meshes: each check can fail.
 #include <gtest/gtest.h>
 

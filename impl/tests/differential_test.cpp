@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // impl against the reference (docs/ALGORITHM.md: identical meshes on inputs with
 // no cocircular ties): the paper corpus, generated PSLGs, and trace replay.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast engine on the paper's problems and hand-made cases: its own
 // invariants (mesh_invariants.h), guards, trace, size bound, unimprovable rule.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Properties of the fast engine on generated PSLGs in general position.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast engine's own invariants, checked independently of its code (CGAL's
 // exact predicates and rationals): used by impl's tests next to the certifier.
 #pragma once

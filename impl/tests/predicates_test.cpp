@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The filtered predicates agree with exact arithmetic (CGAL Epick predicates,
 // CGAL::Exact_rational) on near-degenerate, tiny and huge inputs, where the
 // double filter must hand over to the exact path.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PSLGs in general position for impl's properties: a star-shaped simple polygon
 // (random angles and radii around the origin) as the boundary, random points
 // in its box, sometimes a crack (an interior segment). Coordinates come from

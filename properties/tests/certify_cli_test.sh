@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `lepp certify` exit statuses on files: 0 certified, 1 violations (listed), 2 unreadable.
 # usage: certify_cli_test.sh LEPP_BINARY SOURCE_DIR
 set -u

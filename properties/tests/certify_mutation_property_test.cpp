@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The certifier cannot be fooled by one random mutation of a correct mesh: on
 // generated PSLGs, the reference engine's refined mesh (certified first) is broken
 // in one random way, and the certifier must reject it for the right reason.

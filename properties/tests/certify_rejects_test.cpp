@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every check of the certifier must be able to fail: a correct mesh is broken in
 // one way and the certifier must reject it for that reason (and accept the
 // unbroken mesh, so the rejection is the mutation's doing).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Meshes made by CGAL, independently of our engines, for the certifier's tests:
 // the constrained Delaunay triangulation of a PSLG, and CGAL's Mesh_2 refinement
 // of it (Steiner points on segments, rounded by CGAL's own formulas).

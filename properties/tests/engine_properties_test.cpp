@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The core properties of the engines (issue 3), on generated PSLGs, for the
 // reference engine and the fast engine, both methods, checked by the certifier:
 //  1. the CDT an engine builds certifies, and Theorem 2 holds on it;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The generators keep their promises: every PSLG validates untouched, triangles
 // are counter-clockwise, terminal pairs are Delaunay terminal pairs (checked by
 // the certifier, an independent implementation of the same conditions).

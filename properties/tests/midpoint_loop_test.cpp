@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A finding, kept as a regression: on a well-shaped input (a box, two interior
 // points, every input angle 90 degrees) Lepp-midpoint at 30 degrees does not
 // terminate (the paper's loop case above alpha_limit ~ 22 degrees), while

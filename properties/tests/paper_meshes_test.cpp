@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The certifier on the paper's four problems: it accepts the meshes our engines
 // make (both methods, at the angles the paper reports them converging) and the
 // meshes another program makes: Shewchuk's Triangle (triangle-wasm under Node,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small hand-made PSLGs for the certifier's tests (integer coordinates: every
 // double predicate on them is exact, so the tests can reason about them).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CDT of the input and its domain (ALGORITHM.md, Sections 1 and 2), and
 // the conversion back to the plain Mesh.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact decisions of ALGORITHM.md on one triangle: edge order (Section 3),
 // bad triangles (Section 4), the unimprovable rule (Section 8), and Lepp(t).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The refinement loop (ALGORITHM.md Sections 7 to 9): queue of bad triangles
 // in key order, "while t remains", guards, trace, result.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Point selection (ALGORITHM.md Section 5: the paper's Select Point and New
 // Select Point with Remark 10) and insertion (Section 6).
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Private to the reference engine: the CGAL types and the bookkeeping around
 // them. CGAL stays in reference/src; the public header speaks plain doubles.
 #pragma once

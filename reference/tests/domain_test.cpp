@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The domain (ALGORITHM.md Section 2, Triangle's -p) and the split of a
 // constrained edge by a rounded midpoint that is not on it (Section 6).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every run ends (ALGORITHM.md Sections 8 and 9): the Steiner budget, the edge
 // floor and the time limit stop a run with their outcome and name the triangle
 // being processed; small input angles give outcome unimprovable with the

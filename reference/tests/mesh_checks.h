@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Simple exact checks of a refined mesh, for the reference engine's tests.
 // Independent of the engine's code (the full certifier lives in
 // properties/certify): rationals from GMP, every angle tested, not only the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The test checks reject broken meshes: a check that cannot fail proves nothing.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The reference engine on the paper's four problems (Section 5.1): it
 // converges for theta = 20, 25, 30 with both methods, and its meshes keep the
 // input and meet the angle bound, checked exactly by mesh_checks.

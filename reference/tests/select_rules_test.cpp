@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The first trace step on hand-made configurations names the branch of the
 // paper's Select Point (midpoint method) or New Select Point with Remark 10
 // (centroid method) that the configuration calls for, and inserts its point.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The test suite again under AddressSanitizer and UndefinedBehaviorSanitizer
 # (gcc, LEPP_SANITIZE=ON), in build-asan/, without benchmarks or fuzz targets.
 # Every registered test runs except those labelled "slow-under-asan" (none of

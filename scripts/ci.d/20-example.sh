@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # lepp as a package: install build/ into a temporary prefix, then configure,
 # build and run examples/outside_project against it (find_package(lepp)).
 # LEPP_BUILD_DIR overrides the build directory (default build/, made by scripts/build.sh).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Checks that the ClusterFuzzLite build.sh works outside Docker, with the
 # variables the infrastructure would set, and that its output runs.
 # Only fuzz_parse (core only, quick); LEPP_FUZZ_TARGETS="..." for more.

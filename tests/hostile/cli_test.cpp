@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `lepp refine` command's answers: exit 2 and one line naming file and
 // line for every file in corpus/bad/; exit 3 with the mesh still written (a
 // certified CDT) for each loop guard and for unimprovable triangles.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the hostile-input tests: run the engines that exist on a validated
 // PSLG and certify what they give.
 #pragma once

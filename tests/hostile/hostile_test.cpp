@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile and awkward input (issue 7): each case is either rejected with a
 // clear message or validated, meshed by every engine that exists, and
 // certified; none may crash, hang or exhaust memory. The small cases are files

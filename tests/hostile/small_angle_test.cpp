@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small input angles (issue 7): on PSLGs with input angles down to 1 degree,
 // refinement at theta <= 30 terminates on its own (converged or unimprovable,
 // never a guard stop), and every triangle not listed unimprovable reaches theta

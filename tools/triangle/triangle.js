@@ -1,4 +1,5 @@
 #!/usr/bin/env node
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs Shewchuk's Triangle (the triangle-wasm 1.0.0 build) on a .poly file, the
 // way the native `triangle` command does, for lepp's comparisons.
 //

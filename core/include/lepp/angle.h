@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The angle threshold theta as exact arithmetic sees it.
 #pragma once
 

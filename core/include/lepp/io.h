@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangle's file formats: .poly/.node in, PREFIX.node/.ele/.poly out.
 // docs/FORMATS.md describes what is accepted and what is written.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The output: a triangle mesh of the domain, as written to PREFIX.node/.ele/.poly.
 #pragma once
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The input: a planar straight line graph, as read from a Triangle .poly file.
 #pragma once
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What both engines take and give: options, outcome, trace, result.
 // The decisions behind each field are in docs/ALGORITHM.md.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The statistics `lepp refine` prints and the paper plots, in double precision
 // (for display; decisions about angles are made exactly elsewhere).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Geometric checks and repairs of a parsed PSLG, before any engine sees it.
 #pragma once
 #include <string>

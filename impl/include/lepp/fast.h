@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fast engine: same decisions as the reference (docs/ALGORITHM.md), its own
 // flat-array mesh, filtered exact predicates, no point location.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The certifier's speed on large meshes: Circles240 refined by the fast engine at
 // 30 degrees with a size bound chosen for about N triangles, then certified in full
 // (topology, coverage, chains, Delaunay, min angle, Theorem 2, statistics).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The checks, in the order docs/CERTIFIER.md lists them. Every decision is an
 // exact sign (exact.h); doubles appear only in messages and statistics.
 #include "lepp/certify.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact signs of small polynomials in double coordinates: an interval filter,
 // then exact arithmetic (CGAL::Mpzf: exact +, -, * on doubles, no expression
 // templates) when the interval straddles zero. Private to the certifier.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The domain a correct mesh of a PSLG must cover, computed independently of any
 // engine: the CDT of the input (CGAL, exact predicates) flooded from the exterior
 // and the hole points without crossing a segment (ALGORITHM.md section 2).

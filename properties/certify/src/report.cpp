@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Names of checks and reasons, the verdict, and the human-readable report.
 #include <fmt/format.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Delaunay triangulation of grid points (CGAL, exact predicates: integer
 // coordinates are exact in double) and its interior terminal pairs, for the
 // statements that measure d(M) to every vertex of a Delaunay mesh.

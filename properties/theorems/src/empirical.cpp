@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Section 5 and Remark 15: the empirical claims, over generated PSLGs of the
 // paper's class (fine, equidistributed boundary sampling, so the initial
 // Delaunay triangulation has its shortest edges on the boundary). Statistical:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact plane geometry for the theorem checks: CORE::Expr numbers (exact
 // +, -, *, /, sqrt with exact sign decisions), so that cos 30 = sqrt(3)/2,
 // half angles and longest-edge coordinates stay exact. Angles against

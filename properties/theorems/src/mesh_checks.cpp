@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Statements that measure d(M), the distance from the terminal edge's midpoint
 // to the nearest vertex of the whole mesh: Proposition 6 (a) read in a mesh,
 // Lemma 8, Theorem 9 (a)(b). Distances are exact integers: 4|V - M|^2 = |2V - A - B|^2.

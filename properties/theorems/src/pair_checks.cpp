@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Statements about a pair of Delaunay terminal triangles ABC, ABD sharing the
 // unconstrained terminal edge AB: Theorem 2, Proposition 6, Lemma 7, Lemma 11,
 // Corollary 12, Remark 13, Theorem 14.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The registry: one RapidCheck property per statement of the paper, with the
 // reading chosen. The property bodies are plain functions so that the gtest
 // binary (RC_GTEST_PROP) and `lepp theorems` (rc::detail::checkProperty) run

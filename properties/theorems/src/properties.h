@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Internal to lepp_theorems: helpers shared by the registry's translation units.
 #pragma once
 #include <vector>

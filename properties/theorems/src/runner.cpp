@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs a statement's property with fixed parameters (rc::detail::checkProperty,
 // the same engine RC_GTEST_PROP uses) and writes the certificate table.
 #include <rapidcheck.h>

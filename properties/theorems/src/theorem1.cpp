@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Theorem 1: iterated longest-edge bisection. A triangle's shape is its triple
 // of squared side lengths up to scale, so the whole iteration runs on exact
 // rational triples: bisecting the side of squared length c by the median gives

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Statements about one triangle and its longest-edge bisection (Fig. 3):
 // Proposition 3, Lemma 4, and the chain of Theorem 9.
 #include <cmath>

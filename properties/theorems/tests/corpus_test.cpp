@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The findings' shrunk counterexamples (corpus/theorems/*.txt) still violate the
 // statement as written: each file names its statement and holds one input,
 // `triangle x y x y x y`, `quad Ax Ay Bx By Cx Cy Dx Dy` or `mesh x y x y ...`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every check can fail: for each statement, a configuration that drops one of
 // its hypotheses and violates its conclusion, rejected by the very check
 // function the property calls (hypothesis false, conclusion false).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One RapidCheck property per statement of the paper, run by ctest (label
 // `theorems`) with the fixed seed of the certificate (RC_PARAMS set by CMake).
 // The bodies live in lepp_theorems so that `lepp theorems` runs the same code.

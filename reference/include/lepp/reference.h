@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact engine: CGAL's constrained Delaunay triangulation on the Epeck
 // kernel, refined by the paper's Lepp-centroid or Lepp-midpoint method.
 // Written for clarity, not speed: the oracle the fast engine is checked against.

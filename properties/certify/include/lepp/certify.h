@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The exact certifier: decides whether a mesh is a correct (constrained)
 // Delaunay quality triangulation of a PSLG, with exact predicates on the double
 // coordinates. Works on any mesher's output (Triangle format), not only ours.

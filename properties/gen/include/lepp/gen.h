@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RapidCheck generators of PSLGs, triangles and Delaunay terminal pairs, for
 // property tests here and in other projects (find_package(lepp): lepp::gen).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's statements as named check functions on integer-grid inputs.
 // Each check returns a Verdict: whether the statement's hypothesis holds for
 // the input and whether its conclusion does, both decided exactly. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's statements, one row each: where the paper states it, the
 // RapidCheck property that checks it (Suite.Name, as the gtest is named), the
 // reading chosen, and, for a statement that fails as written, the finding and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RapidCheck generators of the inputs the paper's statements talk about:
 // integer-grid triangles, pairs of Delaunay terminal triangles, point sets for
 // Delaunay meshes, and Theorem 2's equality configurations. Small integer
