@@ -13,6 +13,7 @@
 #include "lepp/io.h"
 #include "lepp/reference.h"
 #include "lepp/stats.h"
+#include "lepp/trace_io.h"
 #include "lepp/validate.h"
 
 namespace lepp::cli {
@@ -29,6 +30,7 @@ struct RefineArgs {
   double time_limit = 0;
   bool json = false;
   bool quiet = false;
+  bool trace = false;
 };
 
 int run_refine(const RefineArgs& args) {
@@ -49,6 +51,7 @@ int run_refine(const RefineArgs& args) {
   options.max_steiner = args.max_steiner;
   options.max_area = args.max_area;
   options.time_limit_seconds = args.time_limit;
+  options.trace = args.trace;
   if (!args.quiet && !args.json) {
     options.on_progress = [](std::int64_t n) { std::fprintf(stderr, "\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
   }
@@ -67,6 +70,12 @@ int run_refine(const RefineArgs& args) {
   try {
     write_mesh(args.output, result.mesh);
     write_unimprovable(args.output, result.unimprovable);
+    if (args.trace) {
+      std::vector<Point> points;
+      points.reserve(result.trace.size());
+      for (const TraceStep& step : result.trace) points.push_back(step.point);
+      write_trace(args.output + ".trace", points);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lepp refine: %s\n", e.what());
     return 1;
@@ -145,6 +154,7 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds (outcome time-limit, exit 3)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print the statistics as JSON");
+  cmd->add_flag("--trace", args->trace, "Also write PREFIX.trace: the Steiner points in insertion order (docs/FORMATS.md)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
   cmd->footer(
       "Exit status: 0 converged; 3 stopped by a guard (budget, edge floor, time limit) or triangles left\n"
