@@ -1,0 +1,520 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// lepp_test_mesher: an independent Lepp-centroid / Lepp-midpoint mesher, written
+// the way an outside user would write one, with switchable seeded bugs. It is the
+// program under audit in tests/audit: it never calls lepp's engines. Only lepp's
+// .poly reader and input validation are borrowed (file syntax, not the algorithm).
+//
+//   lepp_test_mesher IN.poly OUTPREFIX THETA METHOD [--bug NAME] [--zero-based]
+//
+// Writes OUTPREFIX.node, OUTPREFIX.ele (Triangle's formats, 1-based unless
+// --zero-based) and OUTPREFIX.trace (one "x y" line per Steiner point, %.17g).
+// Its own choices, all left open by the paper (Lepp-centroid paper, Section 4 and
+// Remark 10): a plain stack as processing order, ties between equal edge lengths
+// broken by the endpoints' coordinates, centroid computed as (A+B+C+D)/4 left to
+// right, and "a constrained second longest edge" taken from t2 when both are.
+//
+// Seeded bugs (--bug): non-delaunay, drop-segment, skinny, loop, crash, garbage,
+// triangle-centroid, no-remark10, shortest-edge. Each is described at its use.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include "lepp/io.h"
+#include "lepp/validate.h"
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P2 = K::Point_2;
+
+struct VInfo {
+  int id = -1;
+  std::vector<int> segments;  // input segments this vertex lies on
+};
+struct FInfo {
+  bool in_domain = false;
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VInfo, K>;
+using Fb0 = CGAL::Constrained_triangulation_face_base_2<K>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<FInfo, K, Fb0>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
+using Face = Cdt::Face_handle;
+using Vertex = Cdt::Vertex_handle;
+
+enum class Bug {
+  none, non_delaunay, drop_segment, skinny, loop, crash, garbage,
+  triangle_centroid, no_remark10, shortest_edge
+};
+
+struct Options {
+  std::string in, out;
+  double theta = 0;
+  bool centroid = true;
+  Bug bug = Bug::none;
+  bool zero_based = false;
+};
+
+[[noreturn]] void usage(const std::string& why) {
+  std::fprintf(stderr,
+               "lepp_test_mesher: %s\nusage: lepp_test_mesher IN.poly OUTPREFIX THETA centroid|midpoint "
+               "[--bug NAME] [--zero-based]\n",
+               why.c_str());
+  std::exit(2);
+}
+
+Bug parse_bug(const std::string& s) {
+  static const std::map<std::string, Bug> names = {
+      {"none", Bug::none}, {"non-delaunay", Bug::non_delaunay}, {"drop-segment", Bug::drop_segment},
+      {"skinny", Bug::skinny}, {"loop", Bug::loop}, {"crash", Bug::crash}, {"garbage", Bug::garbage},
+      {"triangle-centroid", Bug::triangle_centroid}, {"no-remark10", Bug::no_remark10},
+      {"shortest-edge", Bug::shortest_edge}};
+  auto it = names.find(s);
+  if (it == names.end()) usage("unknown bug '" + s + "'");
+  return it->second;
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  std::vector<std::string> pos;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--bug") {
+      if (i + 1 >= argc) usage("--bug needs a name");
+      o.bug = parse_bug(argv[++i]);
+    } else if (a == "--zero-based") {
+      o.zero_based = true;
+    } else {
+      pos.push_back(a);
+    }
+  }
+  if (pos.size() != 4) usage("expected 4 positional arguments");
+  o.in = pos[0];
+  o.out = pos[1];
+  char* end = nullptr;
+  o.theta = std::strtod(pos[2].c_str(), &end);
+  if (*end != '\0' || !(o.theta > 0 && o.theta < 60)) usage("THETA must be a number of degrees in (0, 60)");
+  if (pos[3] == "centroid") o.centroid = true;
+  else if (pos[3] == "midpoint") o.centroid = false;
+  else usage("METHOD must be centroid or midpoint");
+  return o;
+}
+
+// Smallest angle of a triangle in degrees, in doubles (what a user would write).
+double angle_at(const P2& a, const P2& b, const P2& c) {
+  double ux = b.x() - a.x(), uy = b.y() - a.y(), vx = c.x() - a.x(), vy = c.y() - a.y();
+  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 / M_PI;
+}
+double min_angle(const P2& a, const P2& b, const P2& c) {
+  return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
+}
+
+class Mesher {
+ public:
+  Mesher(const lepp::Pslg& pslg, const Options& opt) : pslg_(pslg), opt_(opt) {}
+
+  // Meshes; stops after max_insertions Steiner points (the skinny bug's rerun).
+  // Returns 0 converged, 3 loop guard.
+  int run(long max_insertions);
+
+  void write(const std::string& prefix) const;
+  long insertions() const { return static_cast<long>(steiner_.size()); }
+
+ private:
+  const lepp::Pslg& pslg_;
+  const Options& opt_;
+  Cdt cdt_;
+  std::vector<Vertex> vertex_of_id_;
+  std::map<std::pair<int, int>, int> segment_of_edge_;  // constrained edge (ids sorted) -> input segment
+  std::vector<P2> steiner_;
+  std::set<std::array<int, 3>> given_up_;  // bad triangles whose point could not be inserted
+
+  static std::pair<int, int> key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+  int id(Vertex v) const { return v->info().id; }
+  bool in_domain(Face f) const { return !cdt_.is_infinite(f) && f->info().in_domain; }
+  // An edge the Lepp may not cross: a constraint, or the domain's border.
+  bool blocked(Face f, int i) const { return f->is_constrained(i) || !in_domain(f->neighbor(i)); }
+
+  // Edge order: squared length (exact), ties by the endpoints' coordinates.
+  bool edge_less(Face f, int i, Face g, int j) const;
+  // Edge indices of f sorted shortest .. longest.
+  std::array<int, 3> edges_sorted(Face f) const;
+  bool bad(Face f) const { return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + 1e-9; }
+  bool skipped(Face f) const;  // small input angle: left as it is
+  const P2& p(Face f, int i) const { return f->vertex(i)->point(); }
+
+  void build();
+  void mark_domain();
+  void flood_out(Face start);
+  bool process(Face f);  // one Lepp search + insertion; false if nothing can be done
+  Vertex insert_point(const P2& q, Face hint);
+  Vertex split_constrained(Face f, int i);
+  void set_domain_around(Vertex v, Vertex c, bool c_side, bool other_side);
+  void collect_bad(std::vector<std::array<int, 3>>& stack) const;
+  std::array<int, 3> face_key(Face f) const {
+    std::array<int, 3> k = {id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))};
+    std::sort(k.begin(), k.end());
+    return k;
+  }
+};
+
+bool Mesher::edge_less(Face f, int i, Face g, int j) const {
+  const P2 &a = p(f, Cdt::ccw(i)), &b = p(f, Cdt::cw(i)), &c = p(g, Cdt::ccw(j)), &d = p(g, Cdt::cw(j));
+  CGAL::Comparison_result r = K().compare_distance_2_object()(a, b, c, d);
+  if (r != CGAL::EQUAL) return r == CGAL::SMALLER;
+  P2 lo1 = std::min(a, b), hi1 = std::max(a, b), lo2 = std::min(c, d), hi2 = std::max(c, d);
+  // Ties: the edge with the lexicographically larger endpoints counts as longer.
+  return std::make_pair(lo1, hi1) < std::make_pair(lo2, hi2);
+}
+
+std::array<int, 3> Mesher::edges_sorted(Face f) const {
+  std::array<int, 3> e = {0, 1, 2};
+  std::sort(e.begin(), e.end(), [&](int i, int j) { return edge_less(f, i, f, j); });
+  return e;
+}
+
+void Mesher::build() {
+  vertex_of_id_.resize(pslg_.vertices.size());
+  for (std::size_t i = 0; i < pslg_.vertices.size(); ++i) {
+    Vertex v = cdt_.insert(P2(pslg_.vertices[i].x, pslg_.vertices[i].y));
+    v->info().id = static_cast<int>(i);
+    vertex_of_id_[i] = v;
+  }
+  for (std::size_t s = 0; s < pslg_.segments.size(); ++s) {
+    int a = pslg_.segments[s].a, b = pslg_.segments[s].b;
+    cdt_.insert_constraint(vertex_of_id_[a], vertex_of_id_[b]);
+    segment_of_edge_[key(a, b)] = static_cast<int>(s);
+    vertex_of_id_[a]->info().segments.push_back(static_cast<int>(s));
+    vertex_of_id_[b]->info().segments.push_back(static_cast<int>(s));
+  }
+}
+
+void Mesher::flood_out(Face start) {
+  std::vector<Face> todo = {start};
+  while (!todo.empty()) {
+    Face f = todo.back();
+    todo.pop_back();
+    if (cdt_.is_infinite(f) || !f->info().in_domain) continue;
+    f->info().in_domain = false;
+    for (int i = 0; i < 3; ++i)
+      if (!f->is_constrained(i)) todo.push_back(f->neighbor(i));
+  }
+}
+
+// Triangle's -p: eat from the convex hull and from each hole, never across a segment.
+void Mesher::mark_domain() {
+  for (auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f) f->info().in_domain = true;
+  for (auto f = cdt_.all_faces_begin(); f != cdt_.all_faces_end(); ++f) {
+    if (!cdt_.is_infinite(f)) continue;
+    for (int i = 0; i < 3; ++i)
+      if (!cdt_.is_infinite(f->neighbor(i)) && !f->is_constrained(i)) flood_out(f->neighbor(i));
+  }
+  for (const lepp::Point& h : pslg_.holes) {
+    Cdt::Locate_type lt;
+    int li;
+    Face f = cdt_.locate(P2(h.x, h.y), lt, li);
+    if (lt == Cdt::FACE) flood_out(f);
+    else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
+      flood_out(f);
+      flood_out(f->neighbor(li));
+    }
+  }
+}
+
+// Small input angles: a skinny triangle whose shortest edge joins two different
+// segments meeting at a vertex v (not on that edge) at an angle below theta cannot be
+// fixed by any insertion; it is left alone (Lepp refinement would cascade toward v).
+bool Mesher::skipped(Face f) const {
+  int e = edges_sorted(f)[0];
+  Vertex a = f->vertex(Cdt::ccw(e)), b = f->vertex(Cdt::cw(e));
+  for (int s1 : a->info().segments)
+    for (int s2 : b->info().segments) {
+      if (s1 == s2) continue;
+      const lepp::Segment &x = pslg_.segments[s1], &y = pslg_.segments[s2];
+      int v = -1, u = -1, w = -1;
+      if (x.a == y.a) v = x.a, u = x.b, w = y.b;
+      else if (x.a == y.b) v = x.a, u = x.b, w = y.a;
+      else if (x.b == y.a) v = x.b, u = x.a, w = y.b;
+      else if (x.b == y.b) v = x.b, u = x.a, w = y.a;
+      if (v < 0 || v == id(a) || v == id(b)) continue;
+      const lepp::Point &pv = pslg_.vertices[v], &pu = pslg_.vertices[u], &pw = pslg_.vertices[w];
+      if (angle_at(P2(pv.x, pv.y), P2(pu.x, pu.y), P2(pw.x, pw.y)) < opt_.theta + 1e-9) return true;
+    }
+  return false;
+}
+
+// After inserting v on a constrained edge, faces around v on the side of c
+// (a vertex that was the apex there) take c_side, the others other_side.
+void Mesher::set_domain_around(Vertex v, Vertex c, bool c_side, bool other_side) {
+  Cdt::Face_circulator fc = cdt_.incident_faces(v), done = fc;
+  for (int n = 0; !fc->has_vertex(c); ++n, ++fc)
+    if (n > 1000000) return;  // cannot happen: the edge v-c exists after the split
+  done = fc;
+  bool side = c_side;
+  do {
+    int k = fc->index(v);
+    if (!cdt_.is_infinite(fc)) fc->info().in_domain = side;
+    if (fc->is_constrained(Cdt::ccw(k))) side = (side == c_side) ? other_side : c_side;
+    ++fc;
+  } while (fc != done);
+}
+
+Vertex Mesher::split_constrained(Face f, int i) {
+  Vertex a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));
+  Face g = f->neighbor(i);
+  Vertex c = f->vertex(i);
+  bool f_in = in_domain(f), g_in = in_domain(g);
+  P2 m((a->point().x() + b->point().x()) / 2, (a->point().y() + b->point().y()) / 2);
+  int seg = segment_of_edge_.at(key(id(a), id(b)));
+  Vertex v = cdt_.insert(m, Cdt::EDGE, f, i);
+  v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
+  v->info().segments = {seg};
+  steiner_.push_back(m);
+  vertex_of_id_.push_back(v);
+  segment_of_edge_.erase(key(id(a), id(b)));
+  segment_of_edge_[key(id(a), id(v))] = seg;
+  segment_of_edge_[key(id(v), id(b))] = seg;
+  set_domain_around(v, c, f_in, g_in);
+  return v;
+}
+
+Vertex Mesher::insert_point(const P2& q, Face hint) {
+  Cdt::Locate_type lt;
+  int li;
+  Face loc = cdt_.locate(q, lt, li, hint);
+  if (lt == Cdt::VERTEX || lt == Cdt::OUTSIDE_CONVEX_HULL || lt == Cdt::OUTSIDE_AFFINE_HULL || !in_domain(loc))
+    return Vertex();
+  if (lt == Cdt::EDGE && loc->is_constrained(li)) return Vertex();
+  Vertex v = cdt_.insert(q, lt, loc, li);
+  v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
+  steiner_.push_back(q);
+  vertex_of_id_.push_back(v);
+  Cdt::Face_circulator fc = cdt_.incident_faces(v), done = fc;
+  do {
+    fc->info().in_domain = true;
+  } while (++fc != done);
+  return v;
+}
+
+// Lepp(f), then the paper's (New) Select Point, then the insertion.
+bool Mesher::process(Face f) {
+  // The Lepp: follow longest edges (the shortest-edge bug follows shortest ones).
+  auto lepp_edge = [&](Face t) {
+    std::array<int, 3> e = edges_sorted(t);
+    return opt_.bug == Bug::shortest_edge ? e[0] : e[2];
+  };
+  Face t1 = f, t2;
+  int l = lepp_edge(t1);
+  for (int steps = 0;; ++steps) {
+    if (steps > 1000000) return false;
+    if (blocked(t1, l)) break;
+    Face n = t1->neighbor(l);
+    int ln = lepp_edge(n);
+    if (n->neighbor(ln) == t1) {
+      t2 = n;
+      break;
+    }
+    t1 = n;
+    l = ln;
+  }
+  Vertex v;
+  if (t2 == Face()) {
+    v = split_constrained(t1, l);  // constrained terminal edge: its midpoint
+  } else {
+    int l2 = t2->index(t1);
+    int s1 = edges_sorted(t1)[1], s2 = edges_sorted(t2)[1];
+    bool c1 = blocked(t1, s1), c2 = blocked(t2, s2);
+    const P2 &A = p(t1, Cdt::ccw(l)), &B = p(t1, Cdt::cw(l)), &C = p(t1, l), &D = p(t2, l2);
+    P2 quad((A.x() + B.x() + C.x() + D.x()) / 4, (A.y() + B.y() + C.y() + D.y()) / 4);
+    if (!opt_.centroid) {
+      // Select Point: midpoint of l, or of the first constrained second-longest edge.
+      if (c1) v = split_constrained(t1, s1);
+      else if (c2) v = split_constrained(t2, s2);
+      else v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
+    } else if (!c1 && !c2) {
+      if (opt_.bug == Bug::triangle_centroid)  // the terminal triangle's centroid, not the quad's
+        v = insert_point(P2((A.x() + B.x() + C.x()) / 3, (A.y() + B.y() + C.y()) / 3), t1);
+      else
+        v = insert_point(quad, t1);
+    } else if (c1 && c2) {
+      v = split_constrained(t2, s2);  // "a constrained second longest edge": t2's
+    } else {
+      // Remark 10: the centroid if it lies strictly inside the other triangle,
+      // else the midpoint of the constrained second-longest edge.
+      Face star = c1 ? t1 : t2, other = c1 ? t2 : t1;
+      int ls = c1 ? s1 : s2;
+      bool inside = true;
+      for (int i = 0; i < 3; ++i)
+        if (CGAL::orientation(p(other, Cdt::ccw(i)), p(other, Cdt::cw(i)), quad) != CGAL::LEFT_TURN) inside = false;
+      if (inside || opt_.bug == Bug::no_remark10) v = insert_point(quad, other);
+      else v = split_constrained(star, ls);
+    }
+  }
+  if (v == Vertex()) return false;
+  if (opt_.bug == Bug::crash && steiner_.size() >= 2) std::raise(SIGSEGV);  // dies mid-run
+  return true;
+}
+
+void Mesher::collect_bad(std::vector<std::array<int, 3>>& stack) const {
+  for (auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f)
+    if (f->info().in_domain && bad(f) && !skipped(f) && !given_up_.count(face_key(f))) stack.push_back(face_key(f));
+}
+
+int Mesher::run(long max_insertions) {
+  build();
+  mark_domain();
+  if (opt_.bug == Bug::drop_segment) {
+    // Forgets the constraint of one interior segment once the domain is known.
+    for (auto e = cdt_.finite_edges_begin(); e != cdt_.finite_edges_end(); ++e) {
+      Face f = e->first;
+      int i = e->second;
+      if (f->is_constrained(i) && in_domain(f) && in_domain(f->neighbor(i))) {
+        segment_of_edge_.erase(key(id(f->vertex(Cdt::ccw(i))), id(f->vertex(Cdt::cw(i)))));
+        cdt_.remove_constrained_edge(f, i);  // its flips stay inside the domain
+        break;
+      }
+    }
+  }
+  long budget = 20000 + 200 * static_cast<long>(pslg_.vertices.size() + pslg_.segments.size());
+  // Processing order: a plain stack, refilled by a full sweep until nothing is bad.
+  std::vector<std::array<int, 3>> stack;
+  collect_bad(stack);
+  while (!stack.empty()) {
+    std::array<int, 3> k = stack.back();
+    stack.pop_back();
+    for (;;) {  // while t remains in the mesh
+      Face f;
+      if (!cdt_.is_face(vertex_of_id_[k[0]], vertex_of_id_[k[1]], vertex_of_id_[k[2]], f)) break;
+      if (!in_domain(f) || !bad(f) || skipped(f) || given_up_.count(k)) break;
+      if (insertions() >= max_insertions) return 0;
+      if (insertions() >= budget) {
+        std::fprintf(stderr, "lepp_test_mesher: loop guard: %ld Steiner points, giving up\n", insertions());
+        return 3;
+      }
+      if (!process(f)) {
+        given_up_.insert(k);
+        break;
+      }
+      Vertex v = vertex_of_id_.back();
+      Cdt::Face_circulator fc = cdt_.incident_faces(v), done = fc;
+      do {
+        if (in_domain(fc) && bad(fc) && !skipped(fc)) stack.push_back(face_key(fc));
+      } while (++fc != done);
+    }
+    if (stack.empty()) collect_bad(stack);
+  }
+  if (!given_up_.empty())
+    std::fprintf(stderr, "lepp_test_mesher: %zu bad triangles could not be refined\n", given_up_.size());
+  return 0;
+}
+
+void write_trace(const std::string& path, const std::vector<P2>& pts) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) return;
+  std::fprintf(f, "# lepp_test_mesher: Steiner points in insertion order\n");
+  for (const P2& q : pts) std::fprintf(f, "%.17g %.17g\n", q.x(), q.y());
+  std::fclose(f);
+}
+
+void Mesher::write(const std::string& prefix) const {
+  const int base = opt_.zero_based ? 0 : 1;
+  std::vector<std::array<int, 3>> tris;
+  std::set<std::pair<int, int>> constrained;
+  for (auto f = cdt_.finite_faces_begin(); f != cdt_.finite_faces_end(); ++f) {
+    if (!f->info().in_domain) continue;
+    tris.push_back({id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))});
+    for (int i = 0; i < 3; ++i)
+      if (f->is_constrained(i)) constrained.insert(key(id(f->vertex(Cdt::ccw(i))), id(f->vertex(Cdt::cw(i)))));
+  }
+  if (opt_.bug == Bug::non_delaunay) {
+    // Flips one unconstrained edge whose quad is strictly convex and not cocircular:
+    // the new edge is not Delaunay.
+    std::map<std::pair<int, int>, std::pair<int, int>> owner;  // directed edge -> (triangle, apex)
+    for (std::size_t t = 0; t < tris.size(); ++t)
+      for (int i = 0; i < 3; ++i) owner[{tris[t][i], tris[t][(i + 1) % 3]}] = {static_cast<int>(t), tris[t][(i + 2) % 3]};
+    auto pt = [&](int i) { return vertex_of_id_[i]->point(); };
+    for (const auto& [e, tc] : owner) {
+      auto it = owner.find({e.second, e.first});
+      if (it == owner.end() || constrained.count(key(e.first, e.second))) continue;
+      int a = e.first, b = e.second, c = tc.second, d = it->second.second;
+      // (a, b, c) and (b, a, d) counter-clockwise; the quad is a, d, b, c.
+      if (CGAL::orientation(pt(a), pt(d), pt(c)) != CGAL::LEFT_TURN ||
+          CGAL::orientation(pt(d), pt(b), pt(c)) != CGAL::LEFT_TURN)
+        continue;
+      if (CGAL::side_of_oriented_circle(pt(a), pt(b), pt(c), pt(d)) != CGAL::ON_NEGATIVE_SIDE) continue;
+      tris[static_cast<std::size_t>(tc.first)] = {a, d, c};
+      tris[static_cast<std::size_t>(it->second.first)] = {d, b, c};
+      break;
+    }
+  }
+  FILE* node = std::fopen((prefix + ".node").c_str(), "w");
+  FILE* ele = std::fopen((prefix + ".ele").c_str(), "w");
+  if (!node || !ele) {
+    std::fprintf(stderr, "lepp_test_mesher: cannot write %s.node/.ele\n", prefix.c_str());
+    std::exit(1);
+  }
+  if (opt_.bug == Bug::garbage) {
+    std::fprintf(node, "this is not a node file\n");
+    std::fprintf(ele, "%zu 3 0\n1 2 3\n@@@\n", tris.size() + 7);
+  } else {
+    std::fprintf(node, "%zu 2 0 0\n", vertex_of_id_.size());
+    for (std::size_t i = 0; i < vertex_of_id_.size(); ++i)
+      std::fprintf(node, "%zu %.17g %.17g\n", i + base, vertex_of_id_[i]->point().x(), vertex_of_id_[i]->point().y());
+    std::fprintf(ele, "%zu 3 0\n", tris.size());
+    for (std::size_t t = 0; t < tris.size(); ++t)
+      std::fprintf(ele, "%zu %d %d %d\n", t + base, tris[t][0] + base, tris[t][1] + base, tris[t][2] + base);
+  }
+  std::fclose(node);
+  std::fclose(ele);
+  write_trace(prefix + ".trace", steiner_);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt = parse(argc, argv);
+  lepp::Pslg pslg;
+  try {
+    std::vector<std::string> warnings;
+    pslg = lepp::validate(lepp::read_poly(opt.in), warnings);
+  } catch (const lepp::InputError& e) {
+    std::fprintf(stderr, "lepp_test_mesher: %s\n", e.what());
+    return 2;
+  }
+  int status;
+  if (opt.bug == Bug::skinny) {
+    // Stops one insertion early: the triangle the last point was for stays bad.
+    long total;
+    {
+      Mesher probe(pslg, opt);
+      probe.run(-1 + (1L << 62));
+      total = probe.insertions();
+    }
+    Mesher m(pslg, opt);
+    status = m.run(std::max(0L, total - 1));
+    m.write(opt.out);
+  } else {
+    Mesher m(pslg, opt);
+    status = m.run(1L << 62);
+    if (opt.bug == Bug::loop && m.insertions() > 0)
+      for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // never ends
+    m.write(opt.out);
+  }
+  return status;
+}
