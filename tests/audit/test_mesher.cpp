@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -143,7 +144,16 @@ class Mesher {
   std::vector<Vertex> vertex_of_id_;
   std::map<std::pair<int, int>, int> segment_of_edge_;  // constrained edge (ids sorted) -> input segment
   std::vector<P2> steiner_;
-  std::set<std::array<int, 3>> given_up_;  // bad triangles whose point could not be inserted
+  std::set<std::array<int, 3>> given_up_;
+  double floor_ = 0;  // loop guard: no edge shorter than this (a millionth of the shortest segment)
+  bool too_close(Vertex v) const {
+    Cdt::Vertex_circulator vc = cdt_.incident_vertices(v), done = vc;
+    do {
+      if (!cdt_.is_infinite(vc) && std::hypot(vc->point().x() - v->point().x(), vc->point().y() - v->point().y()) < floor_)
+        return true;
+    } while (++vc != done);
+    return false;
+  }  // bad triangles whose point could not be inserted
 
   static std::pair<int, int> key(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
   int id(Vertex v) const { return v->info().id; }
@@ -391,6 +401,11 @@ int Mesher::run(long max_insertions) {
       }
     }
   }
+  floor_ = std::numeric_limits<double>::infinity();
+  for (const lepp::Segment& sg : pslg_.segments) {
+    const lepp::Point &a = pslg_.vertices[sg.a], &b = pslg_.vertices[sg.b];
+    floor_ = std::min(floor_, std::hypot(a.x - b.x, a.y - b.y) * 1e-6);
+  }
   long budget = 20000 + 200 * static_cast<long>(pslg_.vertices.size() + pslg_.segments.size());
   // Processing order: a plain stack, refilled by a full sweep until nothing is bad.
   std::vector<std::array<int, 3>> stack;
@@ -412,6 +427,11 @@ int Mesher::run(long max_insertions) {
         break;
       }
       Vertex v = vertex_of_id_.back();
+      if (too_close(v)) {
+        std::fprintf(stderr, "lepp_test_mesher: loop guard: an edge shorter than %g after %ld Steiner points, giving up\n",
+                     floor_, insertions());
+        return 3;
+      }
       Cdt::Face_circulator fc = cdt_.incident_faces(v), done = fc;
       do {
         if (in_domain(fc) && bad(fc) && !skipped(fc)) stack.push_back(face_key(fc));
