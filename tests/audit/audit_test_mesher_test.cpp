@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `lepp audit --cmd` against lepp_test_mesher (an independent Lepp-centroid
+// program, tests/audit/test_mesher.cpp): every seeded bug is caught by the row
+// it belongs to and shrunk to an input no larger than the one it was found on,
+// saved with a reproduce command; the program without bugs audits clean, with
+// conformance checked on every run; lepp's own engines audit clean through --cmd.
+// Everything is read from the JSON report (`lepp audit --json`).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "lepp/io.h"
+#include "lepp/validate.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kLepp = LEPP_CLI;
+const std::string kMesher = LEPP_TEST_MESHER;
+const std::string kInputs = LEPP_AUDIT_INPUTS;  // tests/audit/inputs: small hand-made .poly files
+const std::string kSource = LEPP_SOURCE_DIR;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct AuditRun {
+  int status = -1;
+  json report;
+  std::string err;
+  fs::path out;  // --out
+  double seconds = 0;
+};
+
+// Runs `lepp audit --cmd TEMPLATE ARGS --json --out DIR`; DIR is fresh per name.
+AuditRun audit(const std::string& name, const std::string& command_template, const std::string& args) {
+  const fs::path dir = fs::temp_directory_path() / ("lepp_audit_test_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  AuditRun r;
+  r.out = dir / "findings";
+  const std::string cmd = kLepp + " audit --cmd '" + command_template + "' " + args + " --root " + kSource +
+                          " --compare none --json --out " + r.out.string() + " > " + (dir / "report.json").string() +
+                          " 2> " + (dir / "stderr").string();
+  const auto start = std::chrono::steady_clock::now();
+  const int raw = std::system(cmd.c_str());
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.err = slurp(dir / "stderr");
+  const std::string text = slurp(dir / "report.json");
+  r.report = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  std::cout << "[audit " << name << "] exit " << r.status << " in " << r.seconds << " s\n  " << cmd << "\n";
+  return r;
+}
+
+const json& row(const json& report, const std::string& key) {
+  static const json none;
+  for (const json& r : report.at("rows"))
+    if (r.at("check") == key) return r;
+  ADD_FAILURE() << "no row " << key << " in the report";
+  return none;
+}
+
+std::string mesher(const std::string& extra = "") {
+  return kMesher + " {in} {out} {theta} {method}" + (extra.empty() ? "" : " " + extra);
+}
+
+// Every row holds; every run ended ok; conformance was decided on every run.
+void expect_clean(const AuditRun& r) {
+  ASSERT_FALSE(r.report.is_discarded()) << "no JSON report; stderr:\n" << r.err;
+  EXPECT_EQ(r.status, 0) << r.report.dump(2) << "\n" << r.err;
+  EXPECT_TRUE(r.report.value("holds", false));
+  const std::size_t runs = r.report.at("runs");
+  EXPECT_GT(runs, 0u);
+  EXPECT_EQ(r.report.at("run_status").value("ok", 0u), runs) << r.report.at("run_status").dump();
+  for (const json& row : r.report.at("rows")) {
+    EXPECT_TRUE(row.at("holds").get<bool>()) << row.at("check") << ": " << row.at("first");
+    EXPECT_EQ(row.at("failed"), 0u) << row.at("check") << ": " << row.at("first");
+  }
+  const json& conf = row(r.report, "conformance");
+  EXPECT_EQ(conf.at("not_checked"), 0u) << "conformance not checked: " << conf.at("first");
+  EXPECT_EQ(conf.at("held"), runs) << "conformance held on " << conf.at("held") << " of " << runs << " runs";
+}
+
+struct Sizes {
+  std::size_t vertices = 0, segments = 0, holes = 0;
+  std::size_t total() const { return vertices + segments + holes; }
+};
+Sizes sizes_of(const std::string& path) {
+  std::vector<std::string> warnings;
+  lepp::Pslg p = lepp::validate(lepp::read_poly(path), warnings);
+  return {p.vertices.size(), p.segments.size(), p.holes.size()};
+}
+
+// The bug is caught by `row_key`, the first detail names `detail` (when given),
+// and each saved counterexample is shrunk from the file it was found on,
+// saved as input.poly with its reproduce command.
+void expect_caught(const AuditRun& r, const std::string& bug, const std::string& row_key, const std::string& detail) {
+  ASSERT_FALSE(r.report.is_discarded()) << "no JSON report; stderr:\n" << r.err;
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_FALSE(r.report.value("holds", true));
+  const json& caught = row(r.report, row_key);
+  ASSERT_TRUE(caught.is_object());
+  EXPECT_GE(caught.at("failed").get<std::size_t>(), 1u) << "--bug " << bug << " not caught by the " << row_key
+                                                         << " row:\n" << r.report.dump(2);
+  if (!detail.empty())
+    EXPECT_NE(caught.at("first").get<std::string>().find(detail), std::string::npos)
+        << row_key << " row's first failure does not name " << detail << ": " << caught.at("first");
+  const json& cxs = caught.at("counterexamples");
+  ASSERT_GE(cxs.size(), 1u) << "no saved counterexample for the " << row_key << " row";
+  for (const json& cx : cxs) {
+    const fs::path dir = cx.at("dir").get<std::string>();
+    const fs::path shrunk = dir / "input.poly";
+    ASSERT_TRUE(fs::exists(shrunk)) << shrunk;
+    EXPECT_TRUE(fs::exists(dir / "reproduce.sh")) << dir;
+    const std::string reproduce = cx.at("reproduce");
+    EXPECT_NE(reproduce.find("--bug " + bug), std::string::npos) << "reproduce command: " << reproduce;
+    EXPECT_NE(slurp(dir / "reproduce.sh").find("--bug " + bug), std::string::npos);
+    const Sizes after = sizes_of(shrunk.string());
+    EXPECT_EQ(after.vertices, cx.at("vertices").get<std::size_t>());
+    EXPECT_EQ(after.segments, cx.at("segments").get<std::size_t>());
+    const std::string origin = cx.at("input");
+    const std::string origin_path = fs::exists(origin) ? origin : (fs::path(kInputs) / fs::path(origin).filename()).string();
+    ASSERT_TRUE(fs::exists(origin_path)) << "counterexample origin is not one of the input files: " << origin;
+    const Sizes before = sizes_of(origin_path);
+    EXPECT_LE(after.vertices, before.vertices);
+    EXPECT_LE(after.segments, before.segments);
+    EXPECT_LE(after.holes, before.holes);
+    std::cout << "[shrunk --bug " << bug << " / " << row_key << "] " << fs::path(origin).filename().string() << " theta "
+              << cx.at("theta") << ": " << before.vertices << " vertices, " << before.segments << " segments -> "
+              << after.vertices << " vertices, " << after.segments << " segments (" << cx.at("shrink_steps")
+              << " steps, " << cx.at("shrink_runs") << " runs): " << cx.at("detail") << "\n";
+  }
+}
+
+const std::string kOwnInputs = " --inputs " + kInputs;
+
+// --- the program without bugs, and lepp's own engines, audit clean ---------
+
+TEST(AuditClean, TestMesherCentroid) {
+  expect_clean(audit("clean-centroid", mesher(), kOwnInputs + " --method centroid --theta 20,25,30 --cases 15"));
+}
+
+TEST(AuditClean, TestMesherMidpoint) {
+  expect_clean(audit("clean-midpoint", mesher(), kOwnInputs + " --method midpoint --theta 20,22 --cases 10"));
+}
+
+TEST(AuditClean, TestMesherZeroBasedOutput) {
+  expect_clean(audit("clean-zero-based", mesher("--zero-based"), kOwnInputs + " --method centroid --theta 30 --cases 5"));
+}
+
+TEST(AuditClean, TestMesherOnGeneratedInputs) {
+  expect_clean(audit("clean-generated", mesher(), " --sources gen --seed 3 --method centroid --theta 25,30 --cases 24"));
+}
+
+TEST(AuditClean, LeppEnginesThroughCmd) {
+  const std::string lepp = kLepp + " refine {in} -o {out} --min-angle {theta} --method {method} --trace -q";
+  expect_clean(audit("lepp-fast-centroid", lepp, kOwnInputs + " --method centroid --theta 20,30 --cases 10"));
+  expect_clean(audit("lepp-fast-midpoint", lepp, kOwnInputs + " --method midpoint --theta 20 --cases 5"));
+  expect_clean(audit("lepp-reference-centroid", lepp + " --engine reference",
+                     kOwnInputs + " --method centroid --theta 30 --cases 5"));
+}
+
+// --- each seeded bug is caught by its row and shrunk -----------------------
+
+struct BugCase {
+  std::string bug, row, detail, args;
+};
+
+class AuditCatches : public ::testing::TestWithParam<BugCase> {};
+
+TEST_P(AuditCatches, BugInItsRowShrunk) {
+  const BugCase& c = GetParam();
+  const AuditRun r = audit("bug-" + c.bug, mesher("--bug " + c.bug),
+                           kOwnInputs + " --method centroid --max-findings 1 " + c.args);
+  expect_caught(r, c.bug, c.row, c.detail);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SeededBugs, AuditCatches,
+    ::testing::Values(BugCase{"non-delaunay", "certificate", "delaunay", "--theta 30 --cases 5"},
+                      BugCase{"drop-segment", "certificate", "segment", "--theta 30 --cases 5"},
+                      BugCase{"skinny", "min-angle", "", "--theta 30 --cases 5"},
+                      BugCase{"loop", "termination", "", "--theta 30 --cases 5 --timeout 0.5 --shrink-seconds 8"},
+                      BugCase{"crash", "certificate", "crash", "--theta 30 --cases 5"},
+                      BugCase{"garbage", "certificate", "unreadable", "--theta 30 --cases 5"},
+                      BugCase{"triangle-centroid", "conformance", "", "--theta 30 --cases 5"},
+                      BugCase{"no-remark10", "conformance", "", "--theta 20,25,30 --cases 12"},
+                      BugCase{"shortest-edge", "conformance", "", "--theta 30 --cases 5"}),
+    [](const ::testing::TestParamInfo<BugCase>& info) {
+      std::string name = info.param.bug;
+      for (char& ch : name)
+        if (ch == '-') ch = '_';
+      return name;
+    });
+
+}  // namespace
