@@ -13,6 +13,9 @@
 // broken by the endpoints' coordinates, centroid computed as (A+B+C+D)/4 left to
 // right, and "a constrained second longest edge" taken from t2 when both are.
 //
+// Like Triangle, it exits 0 when its loop guard stops it (a warning on stderr, the
+// mesh as it is written): the audit then judges the output, not the exit status.
+//
 // Seeded bugs (--bug): non-delaunay, drop-segment, skinny, loop, crash, garbage,
 // triangle-centroid, no-remark10, shortest-edge. Each is described at its use.
 #include <algorithm>
@@ -131,7 +134,7 @@ class Mesher {
   Mesher(const lepp::Pslg& pslg, const Options& opt) : pslg_(pslg), opt_(opt) {}
 
   // Meshes; stops after max_insertions Steiner points (the skinny bug's rerun).
-  // Returns 0 converged, 3 loop guard.
+  // Returns 0 converged, 3 stopped by the loop guard.
   int run(long max_insertions);
 
   void write(const std::string& prefix) const;
@@ -536,5 +539,6 @@ int main(int argc, char** argv) {
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // never ends
     m.write(opt.out);
   }
-  return status;
+  (void)status;  // 3 (guard) is reported on stderr only
+  return 0;
 }
