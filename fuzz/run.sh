@@ -4,9 +4,14 @@
 #   fuzz/run.sh TARGET SECONDS [JOBS]
 # The corpus grows in $LEPP_FUZZ_WORK/TARGET/corpus (default out/fuzz), seeded
 # from corpus/fuzz/TARGET; crashes, loops and mismatches land in
-# $LEPP_FUZZ_WORK/TARGET/findings. JOBS > 1 uses libFuzzer's -fork mode.
+# $LEPP_FUZZ_WORK/TARGET/findings; one example of each known loop class and
+# theta band (outside the paper's claims; the run goes on) in
+# $LEPP_FUZZ_WORK/TARGET/findings/known (LEPP_FUZZ_KNOWN_DIR). JOBS > 1 uses
+# libFuzzer's -fork mode. fuzz_engine needs LEPP_ENGINE_CMD (docs/FUZZING.md)
+# and starts from fuzz_refine's seeds.
 # Extra libFuzzer flags: LEPP_FUZZ_FLAGS. The target's own environment
-# (LEPP_FUZZ_METHOD, LEPP_FUZZ_THETA, LEPP_FUZZ_MIN_INPUT_ANGLE, LEPP_FUZZ_IGNORE)
+# (LEPP_FUZZ_METHOD, LEPP_FUZZ_THETA, LEPP_FUZZ_MIN_INPUT_ANGLE, LEPP_FUZZ_IGNORE,
+# LEPP_ENGINE_CMD, LEPP_ENGINE_TIMEOUT, ...)
 # passes through. The last lines of the log give executions, exec/s and cov:.
 set -euo pipefail
 if [[ $# -lt 2 ]]; then
@@ -26,6 +31,9 @@ fi
 [[ ${LEPP_FUZZ_NO_BUILD:-0} == 1 ]] || ninja -C "$build" -j"${LEPP_BUILD_JOBS:-2}" "$target" >/dev/null
 
 mkdir -p "$work/corpus" "$work/findings"
+export LEPP_FUZZ_KNOWN_DIR=${LEPP_FUZZ_KNOWN_DIR:-$work/findings/known}
+seeds=$root/corpus/fuzz/$target
+[[ -d $seeds ]] || seeds=$root/corpus/fuzz/fuzz_refine  # fuzz_engine: the same structured input
 flags=(-max_total_time="$seconds" -timeout=60 -rss_limit_mb=4096 -malloc_limit_mb=1024
        -artifact_prefix="$work/findings/" -print_final_stats=1)
 [[ -f $root/fuzz/$target.dict ]] && flags+=(-dict="$root/fuzz/$target.dict")
@@ -36,5 +44,5 @@ cd "$work"
 status=0
 TIMEFORMAT='cpu: real %R s, user %U s, sys %S s'  # CPU time of the run, for the findings table
 # shellcheck disable=SC2086
-time "$build/fuzz/$target" "${flags[@]}" ${LEPP_FUZZ_FLAGS:-} "$work/corpus" "$root/corpus/fuzz/$target" || status=$?
+time "$build/fuzz/$target" "${flags[@]}" ${LEPP_FUZZ_FLAGS:-} "$work/corpus" "$seeds" || status=$?
 exit $status

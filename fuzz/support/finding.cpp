@@ -22,6 +22,7 @@ bool ignored(const std::string& finding_class) {
 }  // namespace
 
 void set_expect_findings(bool on) { expect_findings = on; }
+bool expecting_findings() { return expect_findings; }
 
 void report_finding(const char* target, const std::string& finding_class, const std::string& message) {
   std::fprintf(stderr, "LEPP-FINDING target=%s class=%s : %s\n", target, finding_class.c_str(), message.c_str());

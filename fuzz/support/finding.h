@@ -23,5 +23,6 @@ void report_finding(const char* target, const std::string& finding_class, const 
 
 // Set by the replay driver: findings throw instead of aborting.
 void set_expect_findings(bool on);
+bool expecting_findings();
 
 }  // namespace lepp::fuzz

@@ -4,11 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "support/certify_result.h"
 #include "support/cgal_cdt.h"
 #include "support/finding.h"
 #include "support/fuzz_input.h"
+#include "support/known_loops.h"
 #include "support/loop_guard.h"
 
 using namespace lepp::fuzz;
@@ -113,6 +118,88 @@ TEST(Finding, ThrowsInReplayExpectMode) {
   set_expect_findings(true);
   EXPECT_THROW(report_finding("test", "some-class", "a message"), FindingReported);
   set_expect_findings(false);
+}
+
+// Which loops stop a run: those inside the bands the paper proves.
+TEST(KnownLoops, LoopsInsideTheProvenBandsStillStopTheRun) {
+  using lepp::Method;
+  EXPECT_EQ(unclaimed_loop_reason(Method::Centroid, 30.0, "self-similar-loop"), "");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Centroid, 20.0, "other"), "");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Midpoint, 22.2, "other"), "");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Midpoint, 10.0, "self-similar-loop"), "");
+}
+
+TEST(KnownLoops, LoopsOutsideThePapersClaimsAreKnown) {
+  using lepp::Method;
+  EXPECT_EQ(unclaimed_loop_reason(Method::Centroid, 30.1, "self-similar-loop"), "centroid-above-30");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Centroid, 36.0, "other"), "centroid-above-30");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Midpoint, 22.3, "midpoint-special-loop"), "midpoint-above-alpha-limit");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Midpoint, 29.9, "other"), "midpoint-above-alpha-limit");
+  // A cascade at a small input angle is outside every claim, at any theta.
+  EXPECT_EQ(unclaimed_loop_reason(Method::Centroid, 15.0, "small-angle-cascade"), "small-input-angle");
+  EXPECT_EQ(unclaimed_loop_reason(Method::Midpoint, 15.0, "small-angle-cascade"), "small-input-angle");
+}
+
+TEST(KnownLoops, BandsAndKeysNameMethodClassAndBand) {
+  EXPECT_EQ(band_label(20.7), "10-20.7");
+  EXPECT_EQ(band_label(22.2), "20.8-22.2");
+  EXPECT_EQ(band_label(30.0), "22.3-30");
+  EXPECT_EQ(band_label(30.1), "30.1-36");
+  EXPECT_EQ(known_finding_key("fuzz_refine", "loop-other", lepp::Method::Midpoint, 33.0),
+            "fuzz_refine-loop-other-midpoint-theta30.1-36");
+}
+
+namespace {
+std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+TEST(KnownLoops, KeepsOneExamplePerKey) {
+  const auto dir = fresh_dir("lepp-known-keep");
+  const std::uint8_t first[] = {1, 2, 3}, second[] = {9, 9};
+  const std::string kept = keep_known_example(dir.string(), "k", first, sizeof first, "first message");
+  EXPECT_EQ(kept, (dir / "k.bin").string());
+  EXPECT_EQ(slurp(dir / "k.bin"), std::string("\1\2\3", 3));
+  EXPECT_EQ(slurp(dir / "k.txt"), "first message\n");
+  EXPECT_EQ(keep_known_example(dir.string(), "k", second, sizeof second, "second"), "");  // not overwritten
+  EXPECT_EQ(slurp(dir / "k.bin"), std::string("\1\2\3", 3));
+  EXPECT_NE(keep_known_example(dir.string(), "other-key", second, sizeof second, "x"), "");
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 4u);  // two .bin, two .txt, no temporary left over
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KnownLoops, AKnownFindingReturnsAndKeepsTheInput) {
+  const auto dir = fresh_dir("lepp-known-report");
+  ::setenv("LEPP_FUZZ_KNOWN_DIR", dir.c_str(), 1);
+  const std::uint8_t data[] = {7, 7, 7};
+  set_expect_findings(false);  // as under libFuzzer: report_finding would abort here
+  report_known_finding("fuzz_refine", "loop-other", "centroid-above-30", "key", "msg", data, sizeof data);
+  report_known_finding("fuzz_refine", "loop-other", "centroid-above-30", "key", "msg", data, sizeof data);
+  EXPECT_TRUE(std::filesystem::exists(dir / "key.bin"));
+  ::unsetenv("LEPP_FUZZ_KNOWN_DIR");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KnownLoops, AKnownFindingStillCountsWhenReplayingOpenRegressions) {
+  set_expect_findings(true);
+  const std::uint8_t data[] = {1};
+  EXPECT_THROW(report_known_finding("fuzz_refine", "loop-other", "centroid-above-30", "key", "msg", data, 1),
+               FindingReported);
+  set_expect_findings(false);
+}
+
+TEST(KnownLoops, AnUnknownFindingStillStopsTheRun) {
+  set_expect_findings(false);
+  EXPECT_DEATH(report_finding("fuzz_refine", "loop-self-similar-loop", "a loop at theta 25"), "LEPP-FINDING");
 }
 
 TEST(CgalCdt, SquareWithHoleHasEightTriangles) {
