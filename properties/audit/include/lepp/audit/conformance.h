@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Conformance: does a trace of Steiner points follow the paper's algorithm?
+// Each point is replayed on the exact reference and must be the paper's
+// choice (New Select Point with Remark 10 for centroid, Select Point with
+// the constrained-edge rule for midpoint) for the Lepp of some bad triangle
+// of the mesh at that moment. docs/AUDIT.md, "Conformance", says exactly what
+// is accepted and why.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+#include "lepp/refine.h"
+
+namespace lepp::audit {
+
+struct ConformanceOptions {
+  Method method = Method::Centroid;
+  double min_angle_deg = 30;
+  // A triangle whose smallest angle is within this many degrees above theta
+  // may still count as bad (below theta it is bad anyway: conformance only asks
+  // that each inserted point be allowed, not that every bad triangle be fixed).
+  double angle_tolerance_deg = 1e-3;
+  // In units of DBL_EPSILON times the largest |coordinate| of the vertices
+  // that define the choice, per coordinate.
+  double point_tolerance_ulps = 8;
+  double max_area = 0;  // > 0: triangles larger than this are bad too
+};
+
+// One choice the paper allows, as reported for a failing step.
+struct ConformanceCandidate {
+  Tri bad{{-1, -1, -1}};          // the bad triangle whose Lepp leads here
+  std::vector<Tri> lepp;          // bad first, terminal triangle(s) last
+  std::array<int, 2> terminal_edge{{-1, -1}};
+  Rule rule = Rule::QuadCentroid;
+  Point point;                    // the exact choice, rounded
+  double distance = 0;            // max(|dx|, |dy|) to the trace's point
+  double tolerance = 0;           // the point tolerance for this choice
+};
+
+struct ConformanceFailure {
+  std::size_t step = 0;           // 0-based index in the trace
+  Point point;                    // the trace's point
+  std::string reason;             // one line
+  std::vector<ConformanceCandidate> candidates;  // nearest first, capped
+  std::size_t candidates_total = 0;              // before the cap
+  double nearest_distance = -1;   // -1: the mesh had no bad triangle
+  Mesh mesh;                      // the mesh just before the step (vertex ids as in the replay)
+};
+
+struct ConformanceReport {
+  bool conforms = true;
+  std::size_t steps = 0;          // points in the trace
+  std::size_t steps_checked = 0;  // points found to be a choice (all of them when conforms)
+  std::int64_t cocircular_ties = 0;  // cocircular quads the replay met (its flips are one of two)
+  std::optional<ConformanceFailure> failure;
+  double seconds = 0;
+};
+
+// validated: the input after lepp::validate (ids as the implementation's
+// output may use them do not matter: only coordinates are compared).
+ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
+                                    const ConformanceOptions& options);
+
+// A few lines for a person: conforms, or the failing step with its nearest candidates.
+std::string describe(const ConformanceReport& report, std::size_t max_candidates = 5);
+
+}  // namespace lepp::audit

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The conformance check: the trace replayed on lepp::reference::Replay.
+#include "lepp/audit/conformance.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "lepp/reference_replay.h"
+
+namespace lepp::audit {
+
+namespace {
+
+ConformanceCandidate candidate(const reference::ReplayChoice& c) {
+  ConformanceCandidate out;
+  out.bad = c.bad;
+  out.lepp = c.lepp;
+  out.terminal_edge = c.terminal_edge;
+  out.rule = c.rule;
+  out.point = c.point;
+  out.distance = c.distance;
+  out.tolerance = c.tolerance;
+  return out;
+}
+
+std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
+
+}  // namespace
+
+ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
+                                    const ConformanceOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  reference::ReplayRules rules;
+  rules.method = options.method;
+  rules.min_angle_deg = options.min_angle_deg;
+  rules.angle_tolerance_deg = options.angle_tolerance_deg;
+  rules.point_tolerance_ulps = options.point_tolerance_ulps;
+  rules.max_area = options.max_area;
+  reference::Replay replay(validated, rules);
+
+  ConformanceReport report;
+  report.steps = trace.size();
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    const Point& p = trace[i];
+    reference::ReplayChoice choice;
+    std::string reason;
+    if (replay.match(p, choice)) {
+      try {
+        replay.insert(p, choice);
+        ++report.steps_checked;
+        continue;
+      } catch (const std::runtime_error& e) {
+        reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());
+      }
+    }
+    ConformanceFailure failure;
+    failure.step = i;
+    failure.point = p;
+    failure.mesh = replay.mesh();
+    std::vector<reference::ReplayChoice> all = replay.all_choices(p, 20, failure.candidates_total);
+    for (const auto& c : all) failure.candidates.push_back(candidate(c));
+    if (!all.empty()) failure.nearest_distance = all.front().distance;
+    if (reason.empty()) {
+      if (all.empty())
+        reason = "the mesh has no bad triangle: no point should be inserted";
+      else
+        reason = fmt::format("not the paper's choice for any bad triangle's Lepp (nearest choice {:.3g} away, tolerance {:.3g})",
+                             all.front().distance, all.front().tolerance);
+    }
+    failure.reason = reason;
+    report.conforms = false;
+    report.failure = std::move(failure);
+    break;
+  }
+  report.cocircular_ties = replay.cocircular_ties();
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
+  if (r.conforms) return fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
+  const ConformanceFailure& f = *r.failure;
+  std::string s = fmt::format("step {} of {}: point ({:.17g}, {:.17g}): {}\n", f.step, r.steps, f.point.x, f.point.y, f.reason);
+  std::size_t n = std::min(max_candidates, f.candidates.size());
+  if (n) s += fmt::format("nearest of {} choices at this step:\n", f.candidates_total);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ConformanceCandidate& c = f.candidates[i];
+    std::string lepp;
+    for (const Tri& t : c.lepp) lepp += " " + tri(t);
+    s += fmt::format("  ({:.17g}, {:.17g}) {} distance {:.3g}: bad {}, Lepp{}, terminal edge ({},{})\n", c.point.x, c.point.y,
+                     to_string(c.rule), c.distance, tri(c.bad), lepp, c.terminal_edge[0], c.terminal_edge[1]);
+  }
+  if (r.cocircular_ties > 0)
+    s += fmt::format("note: the replay met {} cocircular quads before this step (it does not flip them; a mesher that "
+                     "does builds another Delaunay mesh)\n",
+                     r.cocircular_ties);
+  return s;
+}
+
+}  // namespace lepp::audit

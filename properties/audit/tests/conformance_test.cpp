@@ -1,0 +1,459 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The conformance check (lepp/audit/conformance.h) and the trace format
+// (lepp/trace_io.h): lepp's own traces conform, in every order and method;
+// exactly rounded choices conform; points moved too far, the triangle's
+// centroid, ignoring Remark 10 and a Lepp along shortest edges do not; both
+// resolutions of a tie do.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "lepp/audit/conformance.h"
+#include "lepp/fast.h"
+#include "lepp/gen.h"
+#include "lepp/io.h"
+#include "lepp/reference.h"
+#include "lepp/reference_replay.h"
+#include "lepp/trace_io.h"
+#include "lepp/validate.h"
+
+namespace lepp::audit {
+namespace {
+
+Pslg paper(const std::string& name) {
+  std::vector<std::string> warnings;
+  return validate(read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/paper/" + name + ".poly"), warnings);
+}
+
+Pslg polygon(const std::vector<Point>& pts) {
+  Pslg p;
+  p.vertices = pts;
+  for (std::size_t i = 0; i < pts.size(); ++i) p.segments.push_back({int(i), int((i + 1) % pts.size()), 0});
+  std::vector<std::string> warnings;
+  return validate(p, warnings);
+}
+
+std::vector<Point> points_of(const RefineResult& r) {
+  std::vector<Point> out;
+  for (const TraceStep& s : r.trace) out.push_back(s.point);
+  return out;
+}
+
+RefineResult run(const Pslg& p, bool fast_engine, Method m, QueueOrder q, double theta, std::int64_t max_steiner = 3000) {
+  RefineOptions o;
+  o.min_angle_deg = theta;
+  o.method = m;
+  o.order = q;
+  o.trace = true;
+  o.max_steiner = max_steiner;
+  return fast_engine ? fast::refine(p, o) : reference::refine(p, o);
+}
+
+ConformanceOptions options(Method m, double theta) {
+  ConformanceOptions c;
+  c.method = m;
+  c.min_angle_deg = theta;
+  return c;
+}
+
+// ---- the trace format ----
+
+std::string temp_file(const std::string& name, const std::string& text) {
+  std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(TraceIo, RoundTripsEveryDouble) {
+  std::vector<Point> pts{{0.1, -0.2}, {1e-300, 5e-324}, {1.0 / 3.0, 123456789.123456789}, {-0.0, 0}};
+  std::string path = ::testing::TempDir() + "round.trace";
+  write_trace(path, pts);
+  std::vector<Point> back = read_trace(path);
+  ASSERT_EQ(back.size(), pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(back[i], pts[i]) << i;
+}
+
+TEST(TraceIo, CommentsBlankLinesAndExtraFields) {
+  std::string path = temp_file("extra.trace", "# header\n\n1 2 # comment\n  3.5 -4 7 rule=centroid\r\n");
+  std::vector<Point> back = read_trace(path);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1], (Point{3.5, -4}));
+}
+
+TEST(TraceIo, ErrorsNameFileAndLine) {
+  std::string one = temp_file("one.trace", "1 2\n3\n");
+  try {
+    read_trace(one);
+    FAIL() << "a line with one field was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_NE(std::string(e.what()).find("one.trace"), std::string::npos) << e.what();
+  }
+  std::string nan = temp_file("nan.trace", "# c\n1 2\nnan 3\n");
+  try {
+    read_trace(nan);
+    FAIL() << "NaN was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+  }
+  EXPECT_THROW(read_trace(::testing::TempDir() + "no-such.trace"), InputError);
+}
+
+// ---- lepp's own traces conform ----
+
+struct Case {
+  const char* problem;
+  bool fast_engine;
+  Method method;
+  QueueOrder order;
+  double theta;
+};
+
+class OwnTraces : public ::testing::TestWithParam<Case> {};
+
+TEST_P(OwnTraces, Conform) {
+  const Case& c = GetParam();
+  Pslg p = paper(c.problem);
+  RefineResult r = run(p, c.fast_engine, c.method, c.order, c.theta);
+  ASSERT_FALSE(r.trace.empty());
+  ConformanceReport report = check_conformance(p, points_of(r), options(c.method, c.theta));
+  EXPECT_TRUE(report.conforms) << describe(report);
+  EXPECT_EQ(report.steps_checked, r.trace.size());
+}
+
+std::vector<Case> own_cases() {
+  std::vector<Case> out;
+  for (const char* problem : {"A", "rect162", "square400", "circles240"})
+    for (bool fast_engine : {true, false})
+      for (QueueOrder q : {QueueOrder::Fifo, QueueOrder::Lifo}) {
+        // The reference engine is slow: the small problems only.
+        if (!fast_engine && std::string(problem) != "A" && std::string(problem) != "rect162") continue;
+        out.push_back({problem, fast_engine, Method::Centroid, q, 30});
+        out.push_back({problem, fast_engine, Method::Midpoint, q, 20});
+        if (std::string(problem) == "A" || std::string(problem) == "rect162") {
+          out.push_back({problem, fast_engine, Method::Centroid, q, 20});
+          out.push_back({problem, fast_engine, Method::Midpoint, q, 25});
+        }
+      }
+  return out;
+}
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  const Case& c = info.param;
+  return std::string(c.problem) + (c.fast_engine ? "_fast_" : "_reference_") + to_string(c.method) + "_" +
+         to_string(c.order) + "_" + std::to_string(int(c.theta));
+}
+
+INSTANTIATE_TEST_SUITE_P(Paper, OwnTraces, ::testing::ValuesIn(own_cases()), case_name);
+
+// Generated PSLGs (every family, with ties, holes, cracks, small input angles).
+RC_GTEST_PROP(Conformance, OwnTracesOnGeneratedPslgs, ()) {
+  const Pslg p = *gen::anyPslg();
+  double theta = *rc::gen::inRange(20, 31);
+  Method m = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  QueueOrder q = *rc::gen::element(QueueOrder::Fifo, QueueOrder::Lifo);
+  bool fast_engine = *rc::gen::arbitrary<bool>();
+  RC_CLASSIFY(true, p.source);
+  RefineResult r = run(p, fast_engine, m, q, theta, 600);
+  ConformanceReport report = check_conformance(p, points_of(r), options(m, theta));
+  RC_CLASSIFY(report.cocircular_ties > 0, "cocircular ties");
+  if (!report.conforms)
+    RC_FAIL(std::string(fast_engine ? "fast" : "reference") + " " + to_string(m) + " " + to_string(q) + " theta " +
+            std::to_string(theta) + ": " + describe(report));
+}
+
+// ---- exactly rounded choices conform ----
+
+// A toy implementation on the replay: at every step, one of the paper's
+// choices (the one nearest a fixed point: an arbitrary processing order),
+// rounded to the nearest double from the exact rational.
+std::vector<Point> exactly_rounded_trace(const Pslg& p, Method m, double theta, std::size_t max_steps) {
+  reference::ReplayRules rules;
+  rules.method = m;
+  rules.min_angle_deg = theta;
+  reference::Replay replay(p, rules);
+  std::vector<Point> trace;
+  for (std::size_t i = 0; i < max_steps; ++i) {
+    std::size_t total = 0;
+    std::vector<reference::ReplayChoice> c = replay.all_choices({0.123, 0.456}, 1, total);
+    if (c.empty()) break;
+    replay.insert(c[0].point, c[0]);
+    trace.push_back(c[0].point);
+  }
+  return trace;
+}
+
+TEST(Conformance, AcceptsExactlyRoundedChoices) {
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    Pslg p = paper("A");
+    std::vector<Point> trace = exactly_rounded_trace(p, m, 25, 400);
+    ASSERT_GT(trace.size(), 10u);
+    ConformanceReport report = check_conformance(p, trace, options(m, 25));
+    EXPECT_TRUE(report.conforms) << describe(report);
+  }
+}
+
+// ---- moved points ----
+
+TEST(Conformance, PointToleranceIsMeasuredInUlps) {
+  Pslg p = paper("A");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
+  std::vector<Point> trace = points_of(r);
+  ASSERT_GT(trace.size(), 20u);
+  std::size_t k = trace.size() / 2;
+
+  std::vector<Point> near = trace;  // two ulps: within the default 8
+  near[k].x = std::nextafter(std::nextafter(near[k].x, 1e300), 1e300);
+  ConformanceReport ok = check_conformance(p, near, options(Method::Centroid, 30));
+  EXPECT_TRUE(ok.conforms) << describe(ok);
+
+  std::vector<Point> far = trace;  // a millionth of the coordinate: far beyond it
+  far[k].x += std::abs(far[k].x) * 1e-6 + 1e-9;
+  ConformanceReport bad = check_conformance(p, far, options(Method::Centroid, 30));
+  ASSERT_FALSE(bad.conforms);
+  EXPECT_EQ(bad.failure->step, k) << describe(bad);
+  EXPECT_FALSE(bad.failure->candidates.empty());
+  EXPECT_GT(bad.failure->nearest_distance, 0);
+  EXPECT_FALSE(bad.failure->mesh.triangles.empty());
+
+  // With tolerance 0 only exact rationals pass: the moved point at the
+  // latest (the engine's rounded centroids usually fail earlier).
+  ConformanceOptions strict = options(Method::Centroid, 30);
+  strict.point_tolerance_ulps = 0;
+  ConformanceReport s = check_conformance(p, near, strict);
+  ASSERT_FALSE(s.conforms);
+  EXPECT_LE(s.failure->step, k);
+}
+
+TEST(Conformance, RejectsAPointWhenNoTriangleIsBad) {
+  Pslg p = polygon({{0, 0}, {1, 0}, {0.5, 0.8}});  // a good triangle
+  ConformanceReport r = check_conformance(p, {{0.5, 0.3}}, options(Method::Centroid, 30));
+  ASSERT_FALSE(r.conforms);
+  EXPECT_EQ(r.failure->step, 0u);
+  EXPECT_LT(r.failure->nearest_distance, 0);
+}
+
+// ---- seeded bugs, one step each ----
+
+// The mesh just before step k of a conforming trace (ids as the engines number them).
+Mesh mesh_before(const Pslg& p, const std::vector<Point>& trace, std::size_t k, Method m, double theta) {
+  std::vector<Point> head(trace.begin(), trace.begin() + static_cast<std::ptrdiff_t>(k));
+  head.push_back({1e300, 1e300});  // cannot conform: the report carries the mesh before it
+  ConformanceReport r = check_conformance(p, head, options(m, theta));
+  EXPECT_FALSE(r.conforms);
+  EXPECT_EQ(r.failure->step, k) << describe(r);
+  return r.failure->mesh;
+}
+
+// Replaces step k by wrong and expects the check to fail exactly there.
+void expect_rejected_at(const Pslg& p, std::vector<Point> trace, std::size_t k, Point wrong, Method m, double theta,
+                        const std::string& what) {
+  trace[k] = wrong;
+  ConformanceReport r = check_conformance(p, trace, options(m, theta));
+  ASSERT_FALSE(r.conforms) << what << " was accepted";
+  EXPECT_EQ(r.failure->step, k) << what << ": " << describe(r);
+}
+
+Point centroid3(const Mesh& mesh, const Tri& t) {
+  const auto& v = mesh.vertices;
+  return {(v[t[0]].x + v[t[1]].x + v[t[2]].x) / 3, (v[t[0]].y + v[t[1]].y + v[t[2]].y) / 3};
+}
+Point centroid4(const Mesh& mesh, int a, int b, int c, int d) {
+  const auto& v = mesh.vertices;
+  return {((v[a].x + v[b].x) + (v[c].x + v[d].x)) * 0.25, ((v[a].y + v[b].y) + (v[c].y + v[d].y)) * 0.25};
+}
+int apex(const Tri& t, int a, int b) {
+  for (int v : t)
+    if (v != a && v != b) return v;
+  return -1;
+}
+
+TEST(Conformance, RejectsTheTrianglesCentroidInsteadOfTheQuads) {
+  Pslg p = paper("rect162");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 25);
+  std::vector<Point> trace = points_of(r);
+  int checked = 0;
+  for (std::size_t k = 0; k < r.trace.size() && checked < 3; ++k) {
+    if (r.trace[k].rule != Rule::QuadCentroid) continue;
+    expect_rejected_at(p, trace, k, centroid3(r.mesh, r.trace[k].t1), Method::Centroid, 25, "t1's centroid");
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+TEST(Conformance, RejectsIgnoringRemark10) {
+  // Remark 10: with one constrained second-longest edge, the centroid only if
+  // it is inside the other triangle, else that edge's midpoint. Ignoring it:
+  // the centroid always, or the midpoint always.
+  int midpoint_steps = 0, centroid_steps = 0;
+  for (const char* problem : {"rect162", "square400", "circles240"}) {
+    Pslg p = paper(problem);
+    RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
+    std::vector<Point> trace = points_of(r);
+    for (std::size_t k = 0; k < r.trace.size(); ++k) {
+      const TraceStep& s = r.trace[k];
+      if (s.t2[0] < 0) continue;
+      int a = s.terminal_edge[0], b = s.terminal_edge[1];
+      Point g = centroid4(r.mesh, a, b, apex(s.t1, a, b), apex(s.t2, a, b));
+      if (s.rule == Rule::SecondLongestMidpoint && midpoint_steps < 3) {
+        expect_rejected_at(p, trace, k, g, Method::Centroid, 30, "the centroid outside the other triangle");
+        ++midpoint_steps;
+      }
+      if (s.rule == Rule::CentroidInOther && centroid_steps < 3) {
+        // The midpoint of the constrained second-longest edge instead.
+        Mesh m = mesh_before(p, trace, k, Method::Centroid, 30);
+        (void)m;
+        // The split's midpoint is on the segment the engine would have split:
+        // find t*'s constrained second-longest edge among t1's and t2's edges.
+        bool done = false;
+        for (const Tri& t : {s.t1, s.t2}) {
+          for (int i = 0; i < 3 && !done; ++i) {
+            int u = t[i], w = t[(i + 1) % 3];
+            if ((u == a && w == b) || (u == b && w == a)) continue;
+            bool constrained = false;
+            for (const ConstrainedEdge& e : m.constrained_edges)
+              if ((e.a == u && e.b == w) || (e.a == w && e.b == u)) constrained = true;
+            if (!constrained) continue;
+            const auto& v = m.vertices;
+            expect_rejected_at(p, trace, k, {(v[u].x + v[w].x) * 0.5, (v[u].y + v[w].y) * 0.5}, Method::Centroid, 30,
+                               "the constrained edge's midpoint with the centroid inside the other triangle");
+            done = true;
+          }
+        }
+        if (done) ++centroid_steps;
+      }
+    }
+  }
+  EXPECT_GT(midpoint_steps, 0);
+  EXPECT_GT(centroid_steps, 0);
+}
+
+TEST(Conformance, RejectsALeppAlongShortestEdges) {
+  // A buggy Lepp that crosses the bad triangle's shortest edge: the centroid
+  // of the bad triangle and its neighbour there.
+  Pslg p = paper("rect162");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 25);
+  std::vector<Point> trace = points_of(r);
+  int checked = 0;
+  for (std::size_t k = 0; k < r.trace.size() && checked < 3; k += 7) {
+    Mesh m = mesh_before(p, trace, k, Method::Centroid, 25);
+    const Tri& bad = r.trace[k].bad;
+    // The shortest edge of bad, its neighbour across it.
+    auto len2 = [&](int u, int w) {
+      double dx = m.vertices[u].x - m.vertices[w].x, dy = m.vertices[u].y - m.vertices[w].y;
+      return dx * dx + dy * dy;
+    };
+    int best = 0;
+    for (int i = 1; i < 3; ++i)
+      if (len2(bad[i], bad[(i + 1) % 3]) < len2(bad[best], bad[(best + 1) % 3])) best = i;
+    int u = bad[best], w = bad[(best + 1) % 3];
+    for (const Tri& t : m.triangles) {
+      bool has_u = false, has_w = false;
+      for (int x : t) has_u |= x == u, has_w |= x == w;
+      int c = apex(t, u, w);
+      if (!has_u || !has_w || c == apex(bad, u, w)) continue;
+      expect_rejected_at(p, trace, k, centroid4(m, u, w, apex(bad, u, w), c), Method::Centroid, 25,
+                         "a Lepp along the shortest edge");
+      ++checked;
+      break;
+    }
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+// ---- ties the paper leaves open ----
+
+Point mirror_x(Point q) { return {-q.x, q.y}; }
+Point mirror_y(Point q) { return {q.x, -q.y}; }
+
+// A skinny isosceles triangle between two good ones, the whole symmetric
+// about x = 0: its two legs tie for longest, so its Lepp ends on either side.
+// The engine breaks the tie by ids; the mirror image of its trace is the run
+// that breaks every tie the other way. Both conform.
+TEST(Conformance, AcceptsBothResolutionsOfALongestEdgeTie) {
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    Pslg p = polygon({{-1, 0}, {1, 0}, {6, 5}, {0, 10}, {-6, 5}});
+    RefineResult r = run(p, false, m, QueueOrder::Fifo, 25);
+    std::vector<Point> trace = points_of(r), mirrored;
+    ASSERT_FALSE(trace.empty());
+    for (Point q : trace) mirrored.push_back(mirror_x(q));
+    ASSERT_NE(trace[0], mirrored[0]);  // a genuine tie: the two resolutions differ
+    for (const auto* t : {&trace, &mirrored}) {
+      ConformanceReport report = check_conformance(p, *t, options(m, 25));
+      EXPECT_TRUE(report.conforms) << to_string(m) << (t == &trace ? " own: " : " mirrored: ") << describe(report);
+    }
+  }
+}
+
+// A single skinny triangle with constrained legs that tie for longest: the
+// midpoint of either leg, never of the base.
+TEST(Conformance, AcceptsEitherConstrainedLongestEdgeOnATie) {
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    Pslg p = polygon({{0, 10}, {-1, 0}, {1, 0}});
+    for (Point q : {Point{-0.5, 5}, Point{0.5, 5}}) {
+      ConformanceReport report = check_conformance(p, {q}, options(m, 20));
+      EXPECT_TRUE(report.conforms) << describe(report);
+    }
+    ConformanceReport base = check_conformance(p, {{0, 0}}, options(m, 20));
+    EXPECT_FALSE(base.conforms);
+  }
+}
+
+// t1 = ABC (angles 10, 70, 100 at A, B, C), t2 = ABD isosceles (75 at D),
+// all four sides constrained, AB the terminal edge. Second-longest edges:
+// AC in t1, AD or BD (a tie) in t2, all constrained: the midpoint of any of
+// the three; never of BC (t1's shortest edge) nor the centroid.
+TEST(Conformance, AcceptsEitherEdgeWhenBothSecondLongestAreConstrained) {
+  const double pi = std::acos(-1.0);
+  Point a{0, 0}, b{10, 0};
+  // C: angle 10 at A, 70 at B.
+  double ta = std::tan(10 * pi / 180), tb = std::tan(70 * pi / 180);
+  double cx = 10 * tb / (ta + tb);
+  Point c{cx, cx * ta};
+  Point d{5, -5 / std::tan(37.5 * pi / 180)};
+  Pslg p = polygon({a, d, b, c});
+  auto mid = [](Point u, Point v) { return Point{(u.x + v.x) * 0.5, (u.y + v.y) * 0.5}; };
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    for (Point q : {mid(a, c), mid(a, d), mid(b, d)}) {
+      ConformanceReport report = check_conformance(p, {q}, options(m, 25));
+      EXPECT_TRUE(report.conforms) << to_string(m) << ": " << describe(report);
+    }
+    Point centroid{((a.x + b.x) + (c.x + d.x)) * 0.25, ((a.y + b.y) + (c.y + d.y)) * 0.25};
+    for (Point q : {mid(b, c), centroid}) {
+      ConformanceReport report = check_conformance(p, {q}, options(m, 25));
+      EXPECT_FALSE(report.conforms) << to_string(m) << " accepted (" << q.x << ", " << q.y << ")";
+    }
+  }
+}
+
+// A square grid: cocircular squares, right isosceles triangles whose legs tie
+// for second longest, equal hypotenuses everywhere.
+TEST(Conformance, AcceptsTheEnginesTraceOnAGrid) {
+  Pslg p;
+  const int n = 4;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) p.vertices.push_back({double(i) - n / 2.0, double(j) - n / 2.0});
+  auto at = [&](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i) {
+    p.segments.push_back({at(i, 0), at(i + 1, 0), 0});
+    p.segments.push_back({at(i, n), at(i + 1, n), 0});
+    p.segments.push_back({at(0, i), at(0, i + 1), 0});
+    p.segments.push_back({at(n, i), at(n, i + 1), 0});
+  }
+  // A skinny notch makes the mesh refine: a vertex close to the middle.
+  p.vertices.push_back({0.1, 0.05});
+  std::vector<std::string> warnings;
+  p = validate(p, warnings);
+  RefineResult r = run(p, false, Method::Centroid, QueueOrder::Fifo, 25);
+  std::vector<Point> trace = points_of(r);
+  ASSERT_FALSE(trace.empty());
+  ConformanceReport own = check_conformance(p, trace, options(Method::Centroid, 25));
+  EXPECT_TRUE(own.conforms) << describe(own);
+}
+
+}  // namespace
+}  // namespace lepp::audit

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Replays a list of Steiner points on the exact reference (CGAL CDT on Epeck)
+// and says, before each insertion, which of the paper's choices the point is:
+// the stepping API behind the conformance check (lepp/audit/conformance.h).
+// Every decision is exact; only the point tolerance is measured in doubles.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/pslg.h"
+#include "lepp/refine.h"
+
+namespace lepp::reference {
+
+// What counts as the paper's choice (docs/AUDIT.md, "Conformance").
+struct ReplayRules {
+  Method method = Method::Centroid;
+  double min_angle_deg = 30;
+  // A triangle whose smallest angle is within this many degrees of theta may
+  // count as bad or as good. 0: exactly lepp's engines' rule (sin^2 compared
+  // with the upper end of the certified bracket of sin^2(theta)).
+  double angle_tolerance_deg = 0;
+  // A point within this many units of DBL_EPSILON * M of the exact rational
+  // choice (per coordinate; M = the largest |coordinate| of the vertices that
+  // define the choice) is that choice.
+  double point_tolerance_ulps = 8;
+  double max_area = 0;  // > 0: a triangle of larger area is bad too (Triangle's -a)
+};
+
+// One choice the paper allows at this moment.
+struct ReplayChoice {
+  Tri bad{{-1, -1, -1}};         // a bad triangle whose Lepp ends at the terminal edge (-1s: none found)
+  std::vector<Tri> lepp;         // Lepp(bad): bad first, terminal triangle(s) last
+  std::array<int, 2> terminal_edge{{-1, -1}};
+  Tri t1{{-1, -1, -1}}, t2{{-1, -1, -1}};  // t2 -1s for a constrained terminal edge
+  Rule rule = Rule::QuadCentroid;
+  Point point;                   // the exact choice, rounded to the nearest doubles
+  double distance = 0;           // max(|dx|, |dy|) from the point asked about to the exact choice
+  double tolerance = 0;          // the point tolerance for this choice, same units
+  std::array<int, 2> split_edge{{-1, -1}};  // the constrained edge the choice splits, or -1s
+};
+
+class Replay {
+ public:
+  // pslg must be validated (lepp::validate) and outlive the Replay.
+  Replay(const Pslg& pslg, const ReplayRules& rules);
+  ~Replay();
+  Replay(const Replay&) = delete;
+  Replay& operator=(const Replay&) = delete;
+
+  // A choice within tolerance of p that some bad triangle's Lepp (under some
+  // resolution of ties) leads to; false if none. Searches only around p:
+  // from the terminal triangles near p backwards along the Lepp tree.
+  bool match(const Point& p, ReplayChoice& choice);
+  // Inserts p as the reference does: splits choice.split_edge when it is set
+  // (and when p lies on a constrained edge), otherwise a Delaunay insertion.
+  // Throws std::runtime_error when p cannot be inserted (a vertex already, or
+  // outside the domain).
+  void insert(const Point& p, const ReplayChoice& choice);
+
+  // For reports (slow: walks the Lepp of every bad triangle): every choice of
+  // the current mesh, nearest to p first, at most limit; total gets how many.
+  std::vector<ReplayChoice> all_choices(const Point& p, std::size_t limit, std::size_t& total);
+  // The current mesh (domain triangles), canonical.
+  Mesh mesh() const;
+  std::size_t steiner_points() const;
+  // Cocircular quads met by the insertions so far (their Delaunay flip is
+  // not unique: an implementation may have flipped where the replay did not).
+  std::int64_t cocircular_ties() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lepp::reference

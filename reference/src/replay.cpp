@@ -1,0 +1,392 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Replay of a trace on the exact reference, with the paper's choices at each
+// step (docs/AUDIT.md, "Conformance"). Ties in the edge order are branched on
+// instead of broken by ids: any total order of the edges consistent with their
+// lengths is allowed, so a triangle may have several longest (or second
+// longest) edges, and a Lepp several ends.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <deque>
+#include <limits>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "lepp/angle.h"
+#include "lepp/reference_replay.h"
+#include "triangulation.h"
+
+namespace lepp::reference {
+
+using namespace detail;
+
+namespace {
+
+FT len2(FH f, int i) {
+  return CGAL::squared_distance(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point());
+}
+
+// Indices of the edges of f of maximal length (several on ties).
+std::vector<int> longest_edges(FH f) {
+  FT l[3] = {len2(f, 0), len2(f, 1), len2(f, 2)};
+  FT m = std::max({l[0], l[1], l[2]});
+  std::vector<int> out;
+  for (int i = 0; i < 3; ++i)
+    if (l[i] == m) out.push_back(i);
+  return out;
+}
+
+bool is_longest(FH f, int i) {
+  FT l = len2(f, i);
+  return l >= len2(f, Cdt::ccw(i)) && l >= len2(f, Cdt::cw(i));
+}
+
+// The second-longest edges of f when edge l is its longest: the longer of the
+// other two, both on a tie.
+std::vector<int> second_longest_given(FH f, int l) {
+  int j = Cdt::ccw(l), k = Cdt::cw(l);
+  CGAL::Comparison_result r = CGAL::compare(len2(f, j), len2(f, k));
+  if (r == CGAL::LARGER) return {j};
+  if (r == CGAL::SMALLER) return {k};
+  return {j, k};
+}
+
+double abs_max(const CPoint& p) {
+  return std::max(std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())));
+}
+
+// The double nearest to x (ties to even), from the exact value.
+double round_nearest(const FT& x) {
+  std::pair<double, double> iv = CGAL::to_interval(CGAL::exact(x));
+  if (iv.first == iv.second) return iv.first;
+  double lo = iv.first, hi = std::nextafter(lo, std::numeric_limits<double>::infinity());
+  if (hi != iv.second) return CGAL::to_double(x);  // not a tight interval: cannot happen with GMP rationals
+  CGAL::Comparison_result r = CGAL::compare(x, (FT(lo) + FT(hi)) / 2);
+  if (r == CGAL::SMALLER) return lo;
+  if (r == CGAL::LARGER) return hi;
+  std::int64_t bits;
+  std::memcpy(&bits, &lo, sizeof bits);
+  return (bits & 1) ? hi : lo;
+}
+
+// A terminal configuration: terminal edge l of t1, and t2 across it (null if l is constrained).
+struct Terminal {
+  FH t1, t2;
+  int l = -1;
+};
+
+// A point the paper's Select Point / New Select Point may choose there.
+struct Candidate {
+  Rule rule;
+  CPoint point;
+  double scale = 0;        // largest |coordinate| of the vertices defining the point
+  VH split_a, split_b;     // the constrained edge it splits, or null
+};
+
+}  // namespace
+
+struct Replay::Impl {
+  Pslg pslg;  // a copy: the Triangulation keeps a pointer to it
+  ReplayRules rules;
+  Triangulation tr;
+  FT sin2_;
+  FT twice_max_area_;
+  VH last_;  // the last vertex inserted: where to start locating the next point
+
+  FH hint() const { return last_ != VH() ? last_->face() : FH(); }
+
+  Impl(const Pslg& p, const ReplayRules& r) : pslg(p), rules(r) {
+    double theta = std::min(r.min_angle_deg + std::max(r.angle_tolerance_deg, 0.0), 60.0);
+    sin2_ = FT(sin2_bracket(theta).hi);
+    twice_max_area_ = FT(r.max_area) * 2;
+    build_triangulation(pslg, tr);
+  }
+
+  bool in_domain(FH f) const { return !tr.cdt.is_infinite(f) && f->info().in_domain; }
+
+  // Bad, or within the angle tolerance of bad.
+  bool maybe_bad(FH f) const {
+    if (is_skinny(f, sin2_)) return true;
+    return rules.max_area > 0 && is_too_big(f, twice_max_area_);
+  }
+
+  double tolerance(double scale) const {
+    double ulps = std::max(rules.point_tolerance_ulps, 0.0);
+    return std::max(ulps * DBL_EPSILON * scale, ulps * std::numeric_limits<double>::denorm_min());
+  }
+
+  Candidate midpoint(Rule rule, FH f, int i) const {
+    VH a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));
+    Candidate c{rule, CGAL::midpoint(a->point(), b->point()), std::max(abs_max(a->point()), abs_max(b->point())), {}, {}};
+    if (f->is_constrained(i)) c.split_a = a, c.split_b = b;
+    return c;
+  }
+
+  // Every point the paper's rule allows for this terminal configuration.
+  std::vector<Candidate> candidates(const Terminal& t) const {
+    std::vector<Candidate> out;
+    if (t.t2 == FH()) {
+      out.push_back(midpoint(Rule::TerminalConstrainedMidpoint, t.t1, t.l));
+      return out;
+    }
+    FH t1 = t.t1, t2 = t.t2;
+    int l = t.l, l2 = t2->index(t1);
+    std::vector<int> S1 = second_longest_given(t1, l), S2 = second_longest_given(t2, l2);
+    VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l)), c = t1->vertex(l), d = t2->vertex(l2);
+    auto centroid = [&](Rule rule) {
+      CPoint g(((a->point().x() + b->point().x()) + (c->point().x() + d->point().x())) / 4,
+               ((a->point().y() + b->point().y()) + (c->point().y() + d->point().y())) / 4);
+      double scale = std::max({abs_max(a->point()), abs_max(b->point()), abs_max(c->point()), abs_max(d->point())});
+      return Candidate{rule, g, scale, {}, {}};
+    };
+    for (int s1 : S1) {
+      for (int s2 : S2) {
+        bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
+        if (rules.method == Method::Midpoint) {
+          if (!c1 && !c2) out.push_back(midpoint(Rule::TerminalMidpoint, t1, l));
+          if (c1) out.push_back(midpoint(Rule::SecondLongestMidpoint, t1, s1));
+          if (c2) out.push_back(midpoint(Rule::SecondLongestMidpoint, t2, s2));
+          continue;
+        }
+        if (!c1 && !c2) {
+          out.push_back(centroid(Rule::QuadCentroid));
+        } else if (c1 && c2) {
+          out.push_back(midpoint(Rule::BothSecondLongestMidpoint, t1, s1));
+          out.push_back(midpoint(Rule::BothSecondLongestMidpoint, t2, s2));
+        } else {
+          // Remark 10: the centroid if it is inside the other triangle, else
+          // the midpoint of the constrained second-longest edge. Within the
+          // point tolerance of the other triangle's boundary, both.
+          FH star = c1 ? t1 : t2, other = c1 ? t2 : t1;
+          int star_edge = c1 ? s1 : s2;
+          Candidate g = centroid(Rule::CentroidInOther);
+          int inside = inside_status(other, g.point, tolerance(g.scale));
+          if (inside >= 0) out.push_back(g);
+          if (inside <= 0) out.push_back(midpoint(Rule::SecondLongestMidpoint, star, star_edge));
+        }
+      }
+    }
+    return out;
+  }
+
+  // 1 strictly inside f farther than tol from its boundary, -1 not strictly
+  // inside and farther than tol from it, 0 within tol of the boundary.
+  int inside_status(FH f, const CPoint& p, double tol) const {
+    bool strictly = true, near = false;
+    for (int i = 0; i < 3; ++i) {
+      const CPoint &u = f->vertex(Cdt::ccw(i))->point(), &v = f->vertex(Cdt::cw(i))->point();
+      if (CGAL::orientation(u, v, p) != CGAL::LEFT_TURN) strictly = false;
+      FT det = (v.x() - u.x()) * (p.y() - u.y()) - (v.y() - u.y()) * (p.x() - u.x());
+      double dist = std::abs(CGAL::to_double(det)) / std::sqrt(CGAL::to_double(CGAL::squared_distance(u, v)));
+      if (dist <= tol) near = true;
+    }
+    if (near) return 0;
+    return strictly ? 1 : -1;
+  }
+
+  static double distance(const Point& p, const CPoint& q) {
+    return std::max(std::abs(CGAL::to_double(FT(p.x) - q.x())), std::abs(CGAL::to_double(FT(p.y) - q.y())));
+  }
+
+  // The domain triangles around p: those incident to a vertex of the
+  // triangle(s) containing it (a point within tolerance of a choice lies in
+  // or next to the choice's terminal triangles).
+  std::vector<FH> faces_near(const Point& p, bool& at_vertex) {
+    Cdt::Locate_type lt;
+    int li;
+    FH f = tr.cdt.locate(CPoint(p.x, p.y), lt, li, hint());
+    at_vertex = lt == Cdt::VERTEX;
+    std::vector<FH> out;
+    std::set<FH> seen;
+    if (f == FH()) return out;
+    std::vector<VH> around;
+    for (int i = 0; i < 3; ++i) around.push_back(f->vertex(i));
+    if (lt == Cdt::EDGE) around.push_back(f->neighbor(li)->vertex(f->neighbor(li)->index(f)));
+    for (VH v : around) {
+      if (tr.cdt.is_infinite(v)) continue;
+      Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+      do {
+        if (in_domain(fc) && seen.insert(fc).second) out.push_back(fc);
+      } while (++fc != done);
+    }
+    return out;
+  }
+
+  // Terminal configurations with a terminal triangle in faces, each once.
+  std::vector<Terminal> terminals(const std::vector<FH>& faces) const {
+    std::vector<Terminal> out;
+    std::set<std::pair<int, int>> seen;  // terminal edge by vertex ids
+    for (FH f : faces) {
+      for (int l : longest_edges(f)) {
+        auto e = edge_key(id(f->vertex(Cdt::ccw(l))), id(f->vertex(Cdt::cw(l))));
+        if (f->is_constrained(l)) {
+          // A constrained edge is terminal on each domain side separately.
+          out.push_back({f, FH(), l});
+          continue;
+        }
+        FH n = f->neighbor(l);
+        if (!in_domain(n) || !is_longest(n, n->index(f))) continue;
+        if (!seen.insert(e).second) continue;
+        out.push_back({f, n, l});
+      }
+    }
+    return out;
+  }
+
+  // Backwards from terminal triangle t (arrived at, terminal edge l; other
+  // the triangle across l or null) along the Lepp tree to a bad triangle.
+  // Returns the Lepp from the bad triangle to t, empty if none.
+  std::vector<FH> bad_reaching(FH t, int l, FH other) const {
+    std::map<FH, FH> next;  // face -> the next face on its Lepp
+    std::deque<std::pair<FH, int>> todo;                           // face and its exit edge
+    next[t] = FH();
+    if (other != FH()) next[other] = FH();
+    todo.push_back({t, l});
+    while (!todo.empty()) {
+      auto [f, exit] = todo.front();
+      todo.pop_front();
+      if (maybe_bad(f)) {
+        std::vector<FH> path;
+        for (FH g = f; g != FH(); g = next[g]) path.push_back(g);
+        return path;
+      }
+      for (int k = 0; k < 3; ++k) {
+        if (k == exit || f->is_constrained(k)) continue;
+        FH g = f->neighbor(k);
+        if (!in_domain(g) || next.count(g)) continue;
+        int kk = g->index(f);
+        // g's Lepp (under some tie resolution) crosses into f: the shared
+        // edge is a longest edge of g (and no longer than f's exit, always).
+        if (!is_longest(g, kk)) continue;
+        next[g] = f;
+        todo.push_back({g, kk});
+      }
+    }
+    return {};
+  }
+
+  ReplayChoice describe(const Terminal& t, const Candidate& c, const Point& p, const std::vector<FH>& path) const {
+    ReplayChoice r;
+    if (!path.empty()) {
+      r.bad = ccw_ids(path.front());
+      for (FH f : path) r.lepp.push_back(ccw_ids(f));
+    }
+    r.terminal_edge = {id(t.t1->vertex(Cdt::ccw(t.l))), id(t.t1->vertex(Cdt::cw(t.l)))};
+    r.t1 = ccw_ids(t.t1);
+    if (t.t2 != FH()) r.t2 = ccw_ids(t.t2);
+    r.rule = c.rule;
+    r.point = {round_nearest(c.point.x()), round_nearest(c.point.y())};
+    r.distance = distance(p, c.point);
+    r.tolerance = tolerance(c.scale);
+    if (c.split_a != VH()) r.split_edge = {id(c.split_a), id(c.split_b)};
+    return r;
+  }
+
+  bool match(const Point& p, ReplayChoice& out) {
+    bool at_vertex = false;
+    std::vector<FH> faces = faces_near(p, at_vertex);
+    if (at_vertex) return false;
+    for (const Terminal& t : terminals(faces)) {
+      std::vector<Candidate> cands = candidates(t);
+      for (const Candidate& c : cands) {
+        if (distance(p, c.point) > tolerance(c.scale)) continue;
+        // The Lepp may arrive from either side of an unconstrained terminal edge.
+        std::vector<FH> path = bad_reaching(t.t1, t.l, t.t2);
+        Terminal used = t;
+        if (path.empty() && t.t2 != FH()) {
+          path = bad_reaching(t.t2, t.t2->index(t.t1), t.t1);
+          if (!path.empty()) used = {t.t2, t.t1, t.t2->index(t.t1)};
+        }
+        if (path.empty()) continue;
+        if (used.t2 != FH()) path.push_back(used.t2);
+        out = describe(used, c, p, path);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void insert(const Point& p, const ReplayChoice& choice) {
+    Selection s;
+    s.point = p;
+    FH f;
+    int i = -1;
+    if (choice.split_edge[0] >= 0) {
+      VH a = tr.vertex.at(static_cast<std::size_t>(choice.split_edge[0]));
+      VH b = tr.vertex.at(static_cast<std::size_t>(choice.split_edge[1]));
+      if (!tr.cdt.is_edge(a, b, f, i)) throw std::runtime_error("the edge to split is not in the mesh");
+      s.split_face = f, s.split_index = i;
+    } else {
+      Cdt::Locate_type lt;
+      f = tr.cdt.locate(CPoint(p.x, p.y), lt, i, hint());
+      if (lt == Cdt::VERTEX) throw std::runtime_error("the point is already a vertex");
+      if (lt == Cdt::EDGE && f->is_constrained(i)) s.split_face = f, s.split_index = i;  // exactly on a constrained edge
+    }
+    VH v;
+    try {
+      v = insert_point(tr, s, f);
+    } catch (const std::logic_error& e) {
+      throw std::runtime_error(e.what());
+    }
+    last_ = v;
+  }
+
+  // Forward: every end of Lepp(t) under every tie resolution (capped).
+  void lepp_ends(FH f, int entry, std::vector<FH>& path, std::vector<std::pair<std::vector<FH>, Terminal>>& out,
+                 std::size_t cap) const {
+    for (int l : longest_edges(f)) {
+      if (out.size() >= cap) return;
+      if (l == entry) continue;
+      if (f->is_constrained(l)) {
+        out.push_back({path, {f, FH(), l}});
+        continue;
+      }
+      FH n = f->neighbor(l);
+      if (!in_domain(n) || std::find(path.begin(), path.end(), n) != path.end()) continue;
+      int j = n->index(f);
+      if (is_longest(n, j)) {
+        std::vector<FH> full = path;
+        full.push_back(n);
+        out.push_back({full, {f, n, l}});
+      }
+      path.push_back(n);
+      // Continue through n only across an edge at least as long (a tie
+      // resolved the other way, or a strictly longer edge).
+      lepp_ends(n, j, path, out, cap);
+      path.pop_back();
+    }
+  }
+
+  std::vector<ReplayChoice> all_choices(const Point& p, std::size_t limit, std::size_t& total) const {
+    std::vector<ReplayChoice> all;
+    for (FH f : tr.cdt.finite_face_handles()) {
+      if (!in_domain(f) || !maybe_bad(f)) continue;
+      std::vector<FH> path{f};
+      std::vector<std::pair<std::vector<FH>, Terminal>> ends;
+      lepp_ends(f, -1, path, ends, 64);
+      for (const auto& [lepp, t] : ends)
+        for (const Candidate& c : candidates(t)) all.push_back(describe(t, c, p, lepp));
+    }
+    std::sort(all.begin(), all.end(), [](const ReplayChoice& a, const ReplayChoice& b) { return a.distance < b.distance; });
+    total = all.size();
+    if (all.size() > limit) all.resize(limit);
+    return all;
+  }
+};
+
+Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_unique<Impl>(pslg, rules)) {}
+Replay::~Replay() = default;
+bool Replay::match(const Point& p, ReplayChoice& choice) { return impl_->match(p, choice); }
+void Replay::insert(const Point& p, const ReplayChoice& choice) { impl_->insert(p, choice); }
+std::vector<ReplayChoice> Replay::all_choices(const Point& p, std::size_t limit, std::size_t& total) {
+  return impl_->all_choices(p, limit, total);
+}
+Mesh Replay::mesh() const { return extract_mesh(impl_->tr); }
+std::size_t Replay::steiner_points() const { return impl_->tr.vertex.size() - impl_->tr.input_vertices; }
+std::int64_t Replay::cocircular_ties() const { return impl_->tr.cocircular_ties; }
+
+}  // namespace lepp::reference
