@@ -11,6 +11,7 @@
 #include "lepp/certify.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
+#include "lepp/version.h"
 
 namespace lepp::cli {
 namespace {
@@ -90,10 +91,13 @@ int run_certify(const CertifyArgs& args) {
   options.theorem2 = !args.no_theorem2;
   options.max_listed_per_reason = args.max_listed;
   const certify::Report report = certify::certify(input, mesh, options);
-  if (args.json)
-    std::printf("%s\n", to_json(report).dump(2).c_str());
-  else
+  if (args.json) {
+    nlohmann::json j = to_json(report);
+    add_version(j);
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
     std::printf("%s", certify::format_report(report).c_str());
+  }
   return report.certified() ? 0 : 1;
 }
 

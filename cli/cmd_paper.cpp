@@ -30,6 +30,7 @@
 #include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "lepp/validate.h"
+#include "lepp/version.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -735,6 +736,7 @@ int run_paper(const PaperArgs& args) {
 
   // Raw results, then the plots and the drawings.
   json j = {{"engine", study.engine()}, {"budget", args.budget}, {"time_limit", args.time_limit}, {"quick", args.quick}};
+  add_version(j);
   j["runs"] = json::array();
   for (const Run& r : res.runs()) j["runs"].push_back(to_json(r));
   std::ofstream(figdir / "results.json") << j.dump(1) << "\n";

@@ -15,6 +15,7 @@
 #include "lepp/stats.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
+#include "lepp/version.h"
 
 namespace lepp::cli {
 namespace {
@@ -108,6 +109,7 @@ int run_refine(const RefineArgs& args) {
         {"seconds", result.seconds},
         {"warnings", warnings},
     };
+    add_version(j);
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     std::printf("input vertices        %zu\n", input.vertices.size());

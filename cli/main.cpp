@@ -2,13 +2,19 @@
 // lepp: quality triangulation by the Lepp-centroid method, and the tools to prove it right.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "commands.h"
+#include "lepp/version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"lepp: Lepp-centroid quality triangulation, an exact reference engine, and a mesh certifier"};
   app.require_subcommand(1, 1);
   app.set_help_all_flag("--help-all", "Show help for every subcommand");
+  // `lepp --version`: version, git commit, CGAL/GMP/MPFR versions on stdout, exit 0.
+  std::string version = lepp::version_text();
+  version.pop_back();  // CLI11 adds the final newline
+  app.set_version_flag("--version", version, "Print lepp's version, git commit, and the CGAL, GMP, MPFR versions");
   int status = 0;
   lepp::cli::add_refine_command(app, status);
   lepp::cli::add_certify_command(app, status);

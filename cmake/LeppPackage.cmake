@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Install and export lepp as a CMake package: find_package(lepp) gives
-# lepp::core (data model, formats, validation), lepp::certify (the exact
+# lepp::core (data model, formats, validation), lepp::version (lepp/version.h), lepp::certify (the exact
 # certifier), lepp::gen (RapidCheck generators, when RapidCheck was found),
 # lepp::reference and lepp::impl (the two engines). examples/outside_project uses it;
 # scripts/ci.d/20-example.sh builds that against a temporary install prefix.
@@ -10,7 +10,7 @@ include(CMakePackageConfigHelpers)
 set_target_properties(lepp_core PROPERTIES EXPORT_NAME core)
 set_target_properties(lepp_reference PROPERTIES EXPORT_NAME reference)
 set_target_properties(lepp_impl PROPERTIES EXPORT_NAME impl)
-set(LEPP_EXPORTED_TARGETS lepp_core lepp_certify lepp_reference lepp_impl)
+set(LEPP_EXPORTED_TARGETS lepp_core lepp_version lepp_certify lepp_reference lepp_impl)
 set(LEPP_EXPORT_GEN OFF)
 if(TARGET lepp_gen)
   list(APPEND LEPP_EXPORTED_TARGETS lepp_gen)
@@ -27,6 +27,7 @@ install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/reference/include/lepp
     ${PROJECT_SOURCE_DIR}/impl/include/lepp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${LEPP_GENERATED_INCLUDE_DIR}/lepp/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lepp)
 if(LEPP_EXPORT_GEN)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/properties/gen/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()

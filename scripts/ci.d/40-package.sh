@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# lepp as Debian packages: cpack -G DEB from the existing build directory makes lepp and
+# lepp-dev (cmake/LeppDebian.cmake); check that every dependency they declare is installed
+# here, unpack both into a throwaway root (dpkg -x: nothing touches the system), then run the
+# installed command (--version, refine and certify on a paper problem) and build and run
+# examples/outside_project with find_package(lepp) against that root only.
+# LEPP_BUILD_DIR overrides the build directory (default build/, made by scripts/build.sh).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${LEPP_BUILD_DIR:-build}
+start=$(date +%s)
+# A fixed folder inside the build directory (not mktemp): ccache hits on the example's compile.
+work="$(cd "$build" && pwd)/package-check"
+rm -rf "$work"
+mkdir -p "$work/debs"
+
+# 1. The packages.
+if ! (cd "$build" && cpack -G DEB -B "$work/debs") > "$work/cpack.log" 2>&1; then
+  cat "$work/cpack.log"
+  exit 1
+fi
+shopt -s nullglob
+runtime=("$work"/debs/lepp_*.deb)
+dev=("$work"/debs/lepp-dev_*.deb)
+if [ ${#runtime[@]} -ne 1 ] || [ ${#dev[@]} -ne 1 ]; then
+  echo "40-package: expected one lepp_*.deb and one lepp-dev_*.deb in $work/debs" >&2
+  ls -l "$work/debs" >&2
+  exit 1
+fi
+version=$(dpkg-deb -f "${runtime[0]}" Version)
+for deb in "${runtime[0]}" "${dev[0]}"; do
+  echo "$(basename "$deb"): $(du -k "$deb" | cut -f1) KiB, Installed-Size $(dpkg-deb -f "$deb" Installed-Size) KiB"
+  echo "  Depends: $(dpkg-deb -f "$deb" Depends)"
+done
+
+# 2. Every declared dependency (name and version constraint) is satisfied on this machine.
+missing=0
+for deb in "${runtime[0]}" "${dev[0]}"; do
+  IFS=',' read -ra deps <<< "$(dpkg-deb -f "$deb" Depends)"
+  for dep in "${deps[@]}"; do
+    dep=$(echo "$dep" | xargs)                      # trim
+    name=${dep%% *}
+    have=$(dpkg-query -W -f='${Status} ${Version}' "$name" 2>/dev/null | sed -n 's/^install ok installed //p')
+    if [ -z "$have" ]; then
+      echo "40-package: $(basename "$deb") depends on $dep: not installed" >&2; missing=1; continue
+    fi
+    if [[ "$dep" =~ \((\<\<|\<=|=|\>=|\>\>)\ ([^\)]+)\) ]]; then
+      op=${BASH_REMATCH[1]}; want=${BASH_REMATCH[2]}
+      case $op in '<<') op=lt;; '<=') op=le;; '=') op=eq;; '>=') op=ge;; '>>') op=gt;; esac
+      if ! dpkg --compare-versions "$have" "$op" "$want"; then
+        echo "40-package: $(basename "$deb") depends on $dep: installed $have" >&2; missing=1
+      fi
+    fi
+  done
+done
+[ $missing -eq 0 ]
+
+# 3. Unpack into a throwaway root.
+root="$work/root"
+dpkg -x "${runtime[0]}" "$root"
+dpkg -x "${dev[0]}" "$root"
+lepp="$root/usr/bin/lepp"
+if ldd "$lepp" | grep -q "not found"; then
+  ldd "$lepp" >&2
+  echo "40-package: the installed lepp misses a shared library" >&2
+  exit 1
+fi
+
+# 4. The installed command.
+"$lepp" --version | tee "$work/version.txt"
+if [ "$(head -n1 "$work/version.txt")" != "lepp $version" ]; then
+  echo "40-package: lepp --version does not print the package version $version" >&2
+  exit 1
+fi
+"$lepp" refine corpus/paper/A.poly -o "$work/A" --min-angle 30 --json -q > "$work/refine.json"
+grep -q "\"lepp_version\": \"$version\"" "$work/refine.json" || { cat "$work/refine.json"; exit 1; }
+"$lepp" certify corpus/paper/A.poly "$work/A" --min-angle 30 > "$work/certify.txt" || { cat "$work/certify.txt"; exit 1; }
+echo "installed lepp refine + certify on corpus/paper/A.poly at 30 degrees: ok"
+
+# 5. find_package(lepp) against the unpacked root only.
+cmake -S examples/outside_project -B "$work/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$root/usr" -DCMAKE_CXX_COMPILER_LAUNCHER="$(command -v ccache || true)" > "$work/example.log"
+lepp_dir=$(sed -n 's/^lepp_DIR:PATH=//p' "$work/example/CMakeCache.txt")
+case $lepp_dir in
+  "$root"/*) ;;
+  *) echo "40-package: find_package(lepp) found $lepp_dir, not the unpacked package" >&2; exit 1 ;;
+esac
+cmake --build "$work/example" >> "$work/example.log"
+RC_PARAMS="${RC_PARAMS:-seed=20261122 max_success=100}" "$work/example/cdt_property"
+rm -rf "$work"
+echo "40-package: ok in $(( $(date +%s) - start )) s"
