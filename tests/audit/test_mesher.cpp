@@ -123,6 +123,9 @@ Options parse(int argc, char** argv) {
 // Smallest angle of a triangle in degrees, in doubles (what a user would write).
 double angle_at(const P2& a, const P2& b, const P2& c) {
   double ux = b.x() - a.x(), uy = b.y() - a.y(), vx = c.x() - a.x(), vy = c.y() - a.y();
+  // Scaled to unit size first: products of tiny or huge coordinates would underflow or overflow.
+  const double su = std::max(std::fabs(ux), std::fabs(uy)), sv = std::max(std::fabs(vx), std::fabs(vy));
+  if (su > 0 && sv > 0) ux /= su, uy /= su, vx /= sv, vy /= sv;
   return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 / M_PI;
 }
 double min_angle(const P2& a, const P2& b, const P2& c) {
