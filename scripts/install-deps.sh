@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs everything lepp needs on Debian 12 (run as root). Debian packages only,
-# plus Node.js's npm from Debian when the machine has no npm yet.
+# plus Node.js's npm from Debian when the machine has no npm yet. dpkg-dev and file:
+# cpack -G DEB reads the command's shared-library dependencies with them.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
@@ -11,7 +12,8 @@ apt-get install -y --no-install-recommends \
   librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev \
   clang-14 libclang-rt-14-dev libfuzzer-14-dev \
   libcli11-dev nlohmann-json3-dev libfmt-dev \
-  python3-matplotlib zip
+  python3-matplotlib zip \
+  dpkg-dev file
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
 if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi

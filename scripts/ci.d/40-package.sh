@@ -56,18 +56,33 @@ for deb in "${runtime[0]}" "${dev[0]}"; do
 done
 [ $missing -eq 0 ]
 
-# 3. Unpack into a throwaway root.
+# 3. The docs agree with the packages: each declared dependency is in docs/DEPENDENCIES.md,
+# CHANGELOG.md has a section for this version, the packaged copyright is LICENSE.
+for deb in "${runtime[0]}" "${dev[0]}"; do
+  IFS=',' read -ra deps <<< "$(dpkg-deb -f "$deb" Depends)"
+  for dep in "${deps[@]}"; do
+    name=$(echo "$dep" | xargs | cut -d' ' -f1)
+    if ! grep -q "\`$name\`" docs/DEPENDENCIES.md; then
+      echo "40-package: $(basename "$deb") depends on $name, which docs/DEPENDENCIES.md does not list" >&2; missing=1
+    fi
+  done
+done
+grep -q "^## \[.*\] - $version\$\|^## \[$version\]" CHANGELOG.md || { echo "40-package: CHANGELOG.md has no section for $version" >&2; missing=1; }
+[ $missing -eq 0 ]
+
+# 4. Unpack into a throwaway root.
 root="$work/root"
 dpkg -x "${runtime[0]}" "$root"
 dpkg -x "${dev[0]}" "$root"
 lepp="$root/usr/bin/lepp"
+cmp -s LICENSE "$root/usr/share/doc/lepp/copyright" || { echo "40-package: packaged copyright is not LICENSE" >&2; exit 1; }
 if ldd "$lepp" | grep -q "not found"; then
   ldd "$lepp" >&2
   echo "40-package: the installed lepp misses a shared library" >&2
   exit 1
 fi
 
-# 4. The installed command.
+# 5. The installed command.
 "$lepp" --version | tee "$work/version.txt"
 if [ "$(head -n1 "$work/version.txt")" != "lepp $version" ]; then
   echo "40-package: lepp --version does not print the package version $version" >&2
@@ -78,7 +93,7 @@ grep -q "\"lepp_version\": \"$version\"" "$work/refine.json" || { cat "$work/ref
 "$lepp" certify corpus/paper/A.poly "$work/A" --min-angle 30 > "$work/certify.txt" || { cat "$work/certify.txt"; exit 1; }
 echo "installed lepp refine + certify on corpus/paper/A.poly at 30 degrees: ok"
 
-# 5. find_package(lepp) against the unpacked root only.
+# 6. find_package(lepp) against the unpacked root only.
 cmake -S examples/outside_project -B "$work/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$root/usr" -DCMAKE_CXX_COMPILER_LAUNCHER="$(command -v ccache || true)" > "$work/example.log"
 lepp_dir=$(sed -n 's/^lepp_DIR:PATH=//p' "$work/example/CMakeCache.txt")
