@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The premise of the audit tests, checked without `lepp audit`: lepp_test_mesher
+// without bugs is right on the hand-made inputs (exact certificate with the angle,
+// conformance of its trace), and each seeded bug really shows on at least one of
+// them (the certifier or the conformance checker names it directly). So when an
+// audit test fails, the audit missed a bug that is there, or flagged a program
+// that is right.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "lepp/audit/conformance.h"
+#include "lepp/certify.h"
+#include "lepp/io.h"
+#include "lepp/trace_io.h"
+#include "lepp/validate.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMesher = LEPP_TEST_MESHER;
+const std::string kInputs = LEPP_AUDIT_INPUTS;
+
+struct Case {
+  std::string input;
+  double theta;
+  lepp::Method method;
+};
+
+std::vector<Case> cases(std::vector<double> thetas = {20, 25, 30}) {
+  std::vector<Case> out;
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(kInputs))
+    if (e.path().extension() == ".poly") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  for (const std::string& f : files)
+    for (double t : thetas)
+      for (lepp::Method m : {lepp::Method::Centroid, lepp::Method::Midpoint})
+        if (m == lepp::Method::Centroid || t <= 22) out.push_back({f, t, m});
+  return out;
+}
+
+std::string name(const Case& c) {
+  return fs::path(c.input).filename().string() + " theta " + std::to_string(c.theta) +
+         (c.method == lepp::Method::Centroid ? " centroid" : " midpoint");
+}
+
+struct MesherRun {
+  int status = -1;  // exit status, or 128 + signal
+  std::string prefix;
+};
+
+MesherRun run_mesher(const Case& c, const std::string& extra, const std::string& wrapper = "") {
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path() / ("lepp_test_mesher_selfcheck_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  MesherRun r;
+  r.prefix = (dir / ("run" + std::to_string(counter++))).string();
+  const std::string cmd = wrapper + kMesher + " " + c.input + " " + r.prefix + " " + std::to_string(c.theta) + " " +
+                          (c.method == lepp::Method::Centroid ? "centroid" : "midpoint") + " " + extra + " 2>/dev/null";
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return r;
+}
+
+lepp::Pslg validated(const std::string& path) {
+  std::vector<std::string> warnings;
+  return lepp::validate(lepp::read_poly(path), warnings);
+}
+
+lepp::certify::Report certify(const Case& c, const MesherRun& r) {
+  lepp::certify::Options o;
+  o.min_angle_deg = c.theta;
+  return lepp::certify::certify(validated(c.input), lepp::read_mesh(r.prefix), o);
+}
+
+lepp::audit::ConformanceReport conformance(const Case& c, const MesherRun& r) {
+  lepp::audit::ConformanceOptions o;
+  o.method = c.method;
+  o.min_angle_deg = c.theta;
+  return lepp::audit::check_conformance(validated(c.input), lepp::read_trace(r.prefix + ".trace"), o);
+}
+
+TEST(TestMesherSelfCheck, WithoutBugsCertifiedAndConforms) {
+  for (const std::string& extra : {std::string(), std::string("--zero-based")})
+    for (const Case& c : cases()) {
+      const MesherRun r = run_mesher(c, extra);
+      ASSERT_EQ(r.status, 0) << name(c);
+      const lepp::certify::Report cert = certify(c, r);
+      EXPECT_TRUE(cert.certified()) << name(c) << " " << extra << "\n" << lepp::certify::format_report(cert);
+      const lepp::audit::ConformanceReport conf = conformance(c, r);
+      EXPECT_TRUE(conf.conforms) << name(c) << "\n" << lepp::audit::describe(conf);
+    }
+}
+
+// How many cases show a certificate violation of `reason` under --bug.
+std::size_t shows_reason(const std::string& bug, lepp::certify::Reason reason) {
+  std::size_t n = 0;
+  for (const Case& c : cases()) {
+    const MesherRun r = run_mesher(c, "--bug " + bug);
+    if (r.status == 0 && certify(c, r).has(reason)) ++n;
+  }
+  return n;
+}
+
+// How many cases end normally but do not conform under --bug.
+std::size_t shows_nonconformance(const std::string& bug) {
+  std::size_t n = 0;
+  for (const Case& c : cases()) {
+    const MesherRun r = run_mesher(c, "--bug " + bug);
+    if (r.status == 0 && !conformance(c, r).conforms) ++n;
+  }
+  return n;
+}
+
+TEST(TestMesherSelfCheck, NonDelaunayBugShows) {
+  EXPECT_GT(shows_reason("non-delaunay", lepp::certify::Reason::NotLocallyDelaunay), 0u);
+}
+TEST(TestMesherSelfCheck, DropSegmentBugShows) {
+  EXPECT_GT(shows_reason("drop-segment", lepp::certify::Reason::SegmentMissing), 0u);
+}
+TEST(TestMesherSelfCheck, SkinnyBugShows) {
+  EXPECT_GT(shows_reason("skinny", lepp::certify::Reason::AngleBelowTheta), 0u);
+}
+TEST(TestMesherSelfCheck, TriangleCentroidBugShows) { EXPECT_GT(shows_nonconformance("triangle-centroid"), 0u); }
+TEST(TestMesherSelfCheck, NoRemark10BugShows) { EXPECT_GT(shows_nonconformance("no-remark10"), 0u); }
+TEST(TestMesherSelfCheck, ShortestEdgeBugShows) { EXPECT_GT(shows_nonconformance("shortest-edge"), 0u); }
+
+TEST(TestMesherSelfCheck, CrashGarbageLoopBugsShow) {
+  const Case c = cases().back();
+  EXPECT_EQ(run_mesher(c, "--bug crash").status, 128 + SIGSEGV);
+  const MesherRun g = run_mesher(c, "--bug garbage");
+  EXPECT_EQ(g.status, 0);
+  EXPECT_THROW(lepp::read_mesh(g.prefix), lepp::InputError);
+  // A run that needs points never ends: `timeout` stops it (status 124).
+  EXPECT_EQ(run_mesher(c, "--bug loop", "timeout 1 ").status, 124);
+}
+
+}  // namespace
