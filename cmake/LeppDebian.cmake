@@ -11,7 +11,6 @@
 set(CPACK_PACKAGE_NAME lepp)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR "lepp developers")
-set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Lepp-centroid 2D quality triangulation with an exact certifier")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_STRIP_FILES ON)  # strips the command only: CMake never strips static libraries
@@ -26,13 +25,15 @@ set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${LEPP_PACKAGE_MAINTAINER}")
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME lepp)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
+# Each description: its first line is the package synopsis (no CPACK_PACKAGE_DESCRIPTION_SUMMARY,
+# which CPack would put before both).
 set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
 "Lepp-centroid 2D quality triangulation with an exact certifier
- lepp refines a planar straight-line graph (Triangle's .poly format) into a
- constrained Delaunay triangulation with no angle below a chosen bound, by the
- Lepp-centroid method (or Lepp-midpoint), with a fast engine and an exact
- reference engine on CGAL. `lepp certify` checks any mesher's Triangle-format
- output exactly. `lepp paper` needs a source checkout (Triangle, matplotlib).")
+lepp refines a planar straight-line graph (Triangle's .poly format) into a
+constrained Delaunay triangulation with no angle below a chosen bound, by the
+Lepp-centroid method (or Lepp-midpoint), with a fast engine and an exact
+reference engine on CGAL. `lepp certify` checks any mesher's Triangle-format
+output exactly. `lepp paper` needs a source checkout (Triangle, matplotlib).")
 
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME lepp-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
@@ -44,10 +45,10 @@ set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "${_lepp_dev_depends}")
 set(CPACK_DEBIAN_DEV_PACKAGE_RECOMMENDS "cmake (>= 3.20), g++")
 set(CPACK_COMPONENT_DEV_DESCRIPTION
 "lepp's libraries: exact mesh certifier, engines, PSLG generators
- Static libraries, headers and the CMake package (find_package(lepp)) of lepp:
- lepp::core (formats, validation), lepp::certify (the exact certifier),
- lepp::reference and lepp::impl (the two Lepp engines), lepp::gen (RapidCheck
- PSLG generators) and lepp::version. Everything is GPL-3.0-or-later.")
+Static libraries, headers and the CMake package (find_package(lepp)) of lepp:
+lepp::core (formats, validation), lepp::certify (the exact certifier),
+lepp::reference and lepp::impl (the two Lepp engines), lepp::gen (RapidCheck
+PSLG generators) and lepp::version. Everything is GPL-3.0-or-later.")
 
 # Debian wants the licence at /usr/share/doc/PACKAGE/copyright.
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/lepp RENAME copyright COMPONENT runtime)
