@@ -93,7 +93,11 @@ grep -q "\"lepp_version\": \"$version\"" "$work/refine.json" || { cat "$work/ref
 "$lepp" certify corpus/paper/A.poly "$work/A" --min-angle 30 > "$work/certify.txt" || { cat "$work/certify.txt"; exit 1; }
 echo "installed lepp refine + certify on corpus/paper/A.poly at 30 degrees: ok"
 
-# 6. find_package(lepp) against the unpacked root only.
+# 6. find_package(lepp) against the unpacked root only; the package says the same version.
+grep -q "^set(PACKAGE_VERSION \"$version\")" "$root/usr/lib/cmake/lepp/leppConfigVersion.cmake" ||
+  { echo "40-package: leppConfigVersion.cmake does not say $version" >&2; exit 1; }
+grep -q "^#define LEPP_VERSION_STRING \"$version\"" "$root/usr/include/lepp/version.h" ||
+  { echo "40-package: lepp/version.h does not say $version" >&2; exit 1; }
 cmake -S examples/outside_project -B "$work/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$root/usr" -DCMAKE_CXX_COMPILER_LAUNCHER="$(command -v ccache || true)" > "$work/example.log"
 lepp_dir=$(sed -n 's/^lepp_DIR:PATH=//p' "$work/example/CMakeCache.txt")
