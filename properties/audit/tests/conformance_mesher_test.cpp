@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The conformance check on an implementation it does not share code with:
+// tests/audit's lepp_test_mesher (CGAL Epick, coordinates for tie-breaking,
+// a stack for the order, (A+B+C+D)/4, t2's edge when both are constrained).
+// Without bugs its traces conform; with the point-selection bugs they do not.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "lepp/audit/conformance.h"
+#include "lepp/io.h"
+#include "lepp/trace_io.h"
+#include "lepp/validate.h"
+
+namespace lepp::audit {
+namespace {
+
+struct MesherRun {
+  Pslg input;
+  std::vector<Point> trace;
+};
+
+MesherRun mesh(const std::string& poly, double theta, Method m, const std::string& bug = "") {
+  std::string out = ::testing::TempDir() + "mesher_out";
+  std::string cmd = std::string(LEPP_TEST_MESHER) + " " + poly + " " + out + " " + std::to_string(theta) + " " +
+                    (m == Method::Centroid ? "centroid" : "midpoint") + (bug.empty() ? "" : " --bug " + bug) +
+                    " 2>/dev/null";
+  int status = std::system(cmd.c_str());
+  EXPECT_EQ(status, 0) << cmd;
+  std::vector<std::string> warnings;
+  return {validate(read_poly(poly), warnings), read_trace(out + ".trace")};
+}
+
+ConformanceOptions options(Method m, double theta) {
+  ConformanceOptions c;
+  c.method = m;
+  c.min_angle_deg = theta;
+  return c;
+}
+
+std::string paper(const std::string& name) { return std::string(LEPP_SOURCE_DIR) + "/corpus/paper/" + name + ".poly"; }
+
+TEST(ConformanceOfTestMesher, CleanTracesConform) {
+  for (const char* problem : {"A", "rect162", "square400", "circles240"})
+    for (Method m : {Method::Centroid, Method::Midpoint})
+      for (double theta : {20.0, 25.0, 30.0}) {
+        if (m == Method::Midpoint && theta > 25) continue;
+        MesherRun r = mesh(paper(problem), theta, m);
+        ASSERT_FALSE(r.trace.empty());
+        ConformanceReport report = check_conformance(r.input, r.trace, options(m, theta));
+        EXPECT_TRUE(report.conforms) << problem << " " << to_string(m) << " " << theta << ": " << describe(report);
+      }
+}
+
+TEST(ConformanceOfTestMesher, CleanTracesConformOnTheAuditInputs) {
+  for (const char* name : {"box-with-crack", "box-with-points", "square-with-hole", "thin-rectangle"})
+    for (Method m : {Method::Centroid, Method::Midpoint})
+      for (double theta : {20.0, 25.0, 30.0}) {
+        MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/tests/audit/inputs/" + name + ".poly", theta, m);
+        ConformanceReport report = check_conformance(r.input, r.trace, options(m, theta));
+        EXPECT_TRUE(report.conforms) << name << " " << to_string(m) << " " << theta << ": " << describe(report);
+      }
+}
+
+TEST(ConformanceOfTestMesher, PointSelectionBugsAreCaught) {
+  for (const char* bug : {"triangle-centroid", "no-remark10", "shortest-edge"}) {
+    int caught = 0;
+    for (const char* problem : {"A", "rect162", "square400"}) {
+      MesherRun r = mesh(paper(problem), 25, Method::Centroid, bug);
+      if (r.trace.empty()) continue;
+      ConformanceReport report = check_conformance(r.input, r.trace, options(Method::Centroid, 25));
+      if (!report.conforms) ++caught;
+    }
+    EXPECT_GT(caught, 0) << bug << " was never caught";
+  }
+}
+
+}  // namespace
+}  // namespace lepp::audit
