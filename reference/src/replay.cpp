@@ -286,7 +286,7 @@ struct Replay::Impl {
     return r;
   }
 
-  bool match(const Point& p, ReplayChoice& out) {
+  bool match_here(const Point& p, ReplayChoice& out) {
     bool at_vertex = false;
     std::vector<FH> faces = faces_near(p, at_vertex);
     if (at_vertex) return false;
@@ -309,6 +309,101 @@ struct Replay::Impl {
     }
     return false;
   }
+
+  // An unconstrained edge between two domain triangles whose four points are
+  // exactly cocircular: either diagonal is Delaunay.
+  bool cocircular(FH f, int i) const {
+    FH n = f->neighbor(i);
+    if (f->is_constrained(i) || !in_domain(f) || !in_domain(n)) return false;
+    return tr.cdt.side_of_oriented_circle(n, f->vertex(i)->point(), false) == CGAL::ON_ORIENTED_BOUNDARY;
+  }
+
+  using EdgeIds = std::pair<int, int>;
+  bool find_edge(const EdgeIds& e, FH& f, int& i) const {
+    return tr.cdt.is_edge(tr.vertex.at(static_cast<std::size_t>(e.first)), tr.vertex.at(static_cast<std::size_t>(e.second)), f, i);
+  }
+  // Flips a cocircular edge; returns the new edge (the other diagonal).
+  EdgeIds flip(FH f, int i) {
+    EdgeIds other = edge_key(id(f->vertex(i)), id(f->neighbor(i)->vertex(f->neighbor(i)->index(f))));
+    tr.cdt.flip(f, i);
+    return other;
+  }
+
+  // The cocircular edges where the replay's mesh may differ from the
+  // implementation's: around p, and where recent insertions met ties.
+  std::vector<EdgeIds> flip_candidates(const Point& p) {
+    std::vector<EdgeIds> out;
+    std::set<EdgeIds> seen;
+    auto consider = [&](FH f, int i) {
+      if (!cocircular(f, i)) return;
+      EdgeIds e = edge_key(id(f->vertex(Cdt::ccw(i))), id(f->vertex(Cdt::cw(i))));
+      if (e.first >= 0 && seen.insert(e).second) out.push_back(e);
+    };
+    bool at_vertex = false;
+    for (FH f : faces_near(p, at_vertex))
+      for (int i = 0; i < 3; ++i) {
+        consider(f, i);
+        FH n = f->neighbor(i);
+        if (in_domain(n))
+          for (int j = 0; j < 3; ++j) consider(n, j);
+      }
+    for (auto it = recent_ties_.rbegin(); it != recent_ties_.rend(); ++it) {
+      FH f;
+      int i;
+      if (find_edge(*it, f, i)) consider(f, i);
+    }
+    return out;
+  }
+
+  // p is a choice of the replay's mesh, or of a mesh that differs from it by
+  // flipping one or two cocircular edges (then the flips are kept: both are
+  // constrained Delaunay, and the implementation evidently has the other).
+  bool match(const Point& p, ReplayChoice& out) {
+    if (match_here(p, out)) return true;
+    if (!rules.follow_cocircular_flips) return false;
+    std::vector<EdgeIds> cands = flip_candidates(p);
+    if (cands.empty()) return false;
+    std::size_t attempts = 0;
+    for (std::size_t a = 0; a < cands.size(); ++a) {
+      FH f;
+      int i;
+      if (!find_edge(cands[a], f, i) || !cocircular(f, i)) continue;
+      EdgeIds fa = flip(f, i);
+      if (match_here(p, out)) {
+        ++cocircular_flips_;
+        return true;
+      }
+      for (std::size_t b = a + 1; b < cands.size() && attempts < 400; ++b, ++attempts) {
+        FH g;
+        int j;
+        if (!find_edge(cands[b], g, j) || !cocircular(g, j)) continue;
+        EdgeIds fb = flip(g, j);
+        if (match_here(p, out)) {
+          cocircular_flips_ += 2;
+          return true;
+        }
+        if (find_edge(fb, g, j)) flip(g, j);
+      }
+      if (find_edge(fa, f, i)) flip(f, i);
+    }
+    return false;
+  }
+
+  // After an insertion: the edges opposite v whose quads are cocircular (the
+  // Lawson flips met a tie there).
+  void record_ties(VH v) {
+    Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+    do {
+      if (in_domain(fc)) {
+        int i = fc->index(v);
+        if (cocircular(fc, i)) recent_ties_.push_back(edge_key(id(fc->vertex(Cdt::ccw(i))), id(fc->vertex(Cdt::cw(i)))));
+      }
+    } while (++fc != done);
+    if (recent_ties_.size() > 32) recent_ties_.erase(recent_ties_.begin(), recent_ties_.end() - 32);
+  }
+
+  std::vector<EdgeIds> recent_ties_;
+  std::int64_t cocircular_flips_ = 0;
 
   void insert(const Point& p, const ReplayChoice& choice) {
     Selection s;
@@ -333,6 +428,7 @@ struct Replay::Impl {
       throw std::runtime_error(e.what());
     }
     last_ = v;
+    record_ties(v);
   }
 
   // Forward: every end of Lepp(t) under every tie resolution (capped).
@@ -388,5 +484,6 @@ std::vector<ReplayChoice> Replay::all_choices(const Point& p, std::size_t limit,
 Mesh Replay::mesh() const { return extract_mesh(impl_->tr); }
 std::size_t Replay::steiner_points() const { return impl_->tr.vertex.size() - impl_->tr.input_vertices; }
 std::int64_t Replay::cocircular_ties() const { return impl_->tr.cocircular_ties; }
+std::int64_t Replay::cocircular_flips() const { return impl_->cocircular_flips_; }
 
 }  // namespace lepp::reference

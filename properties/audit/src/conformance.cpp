@@ -38,6 +38,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   rules.angle_tolerance_deg = options.angle_tolerance_deg;
   rules.point_tolerance_ulps = options.point_tolerance_ulps;
   rules.max_area = options.max_area;
+  rules.follow_cocircular_flips = options.follow_cocircular_flips;
   reference::Replay replay(validated, rules);
 
   ConformanceReport report;
@@ -75,6 +76,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     break;
   }
   report.cocircular_ties = replay.cocircular_ties();
+  report.cocircular_flips = replay.cocircular_flips();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
@@ -92,10 +94,10 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
     s += fmt::format("  ({:.17g}, {:.17g}) {} distance {:.3g}: bad {}, Lepp{}, terminal edge ({},{})\n", c.point.x, c.point.y,
                      to_string(c.rule), c.distance, tri(c.bad), lepp, c.terminal_edge[0], c.terminal_edge[1]);
   }
-  if (r.cocircular_ties > 0)
-    s += fmt::format("note: the replay met {} cocircular quads before this step (it does not flip them; a mesher that "
-                     "does builds another Delaunay mesh)\n",
-                     r.cocircular_ties);
+  if (r.cocircular_ties > 0 || r.cocircular_flips > 0)
+    s += fmt::format("note: the replay met {} cocircular quads and flipped {} cocircular edges to follow the trace; "
+                     "a mesher that breaks such ties otherwise builds another Delaunay mesh\n",
+                     r.cocircular_ties, r.cocircular_flips);
   return s;
 }
 

@@ -4,11 +4,13 @@
 // a stack for the order, (A+B+C+D)/4, t2's edge when both are constrained).
 // Without bugs its traces conform; with the point-selection bugs they do not.
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <cstdlib>
 #include <string>
 
 #include "lepp/audit/conformance.h"
+#include "lepp/gen.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
@@ -61,6 +63,20 @@ TEST(ConformanceOfTestMesher, CleanTracesConformOnTheAuditInputs) {
         ConformanceReport report = check_conformance(r.input, r.trace, options(m, theta));
         EXPECT_TRUE(report.conforms) << name << " " << to_string(m) << " " << theta << ": " << describe(report);
       }
+}
+
+// Generated PSLGs (lattice families: cocircular quads, which CGAL's insertion
+// in the mesher and the replay may flip differently).
+RC_GTEST_PROP(ConformanceOfTestMesher, CleanTracesConformOnGeneratedPslgs, ()) {
+  const Pslg p = *gen::anyPslg();
+  double theta = *rc::gen::inRange(20, 31);
+  Method m = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  std::string poly = ::testing::TempDir() + "generated.poly";
+  write_poly(poly, p);
+  MesherRun r = mesh(poly, theta, m);
+  ConformanceReport report = check_conformance(r.input, r.trace, options(m, theta));
+  RC_CLASSIFY(report.cocircular_ties > 0, "cocircular ties");
+  if (!report.conforms) RC_FAIL(to_string(m) + std::string(" theta ") + std::to_string(theta) + ": " + describe(report));
 }
 
 TEST(ConformanceOfTestMesher, PointSelectionBugsAreCaught) {

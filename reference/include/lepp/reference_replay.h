@@ -29,6 +29,11 @@ struct ReplayRules {
   // define the choice) is that choice.
   double point_tolerance_ulps = 8;
   double max_area = 0;  // > 0: a triangle of larger area is bad too (Triangle's -a)
+  // When a point is no choice, try the meshes that differ from the replay's
+  // by flipping one or two exactly cocircular edges (near the point, or where
+  // recent insertions met a tie): the constrained Delaunay insertion is not
+  // unique there, and an implementation may have flipped where the replay did not.
+  bool follow_cocircular_flips = true;
 };
 
 // One choice the paper allows at this moment.
@@ -71,6 +76,8 @@ class Replay {
   // Cocircular quads met by the insertions so far (their Delaunay flip is
   // not unique: an implementation may have flipped where the replay did not).
   std::int64_t cocircular_ties() const;
+  // Cocircular edges flipped to follow the implementation (follow_cocircular_flips).
+  std::int64_t cocircular_flips() const;
 
  private:
   struct Impl;

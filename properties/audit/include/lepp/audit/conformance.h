@@ -30,6 +30,9 @@ struct ConformanceOptions {
   // that define the choice, per coordinate.
   double point_tolerance_ulps = 8;
   double max_area = 0;  // > 0: triangles larger than this are bad too
+  // Accept the other diagonal of exactly cocircular quads (flip one or two
+  // such edges when a point is no choice of the replay's own mesh).
+  bool follow_cocircular_flips = true;
 };
 
 // One choice the paper allows, as reported for a failing step.
@@ -57,7 +60,8 @@ struct ConformanceReport {
   bool conforms = true;
   std::size_t steps = 0;          // points in the trace
   std::size_t steps_checked = 0;  // points found to be a choice (all of them when conforms)
-  std::int64_t cocircular_ties = 0;  // cocircular quads the replay met (its flips are one of two)
+  std::int64_t cocircular_ties = 0;   // cocircular quads the replay's insertions met (not flipped)
+  std::int64_t cocircular_flips = 0;  // cocircular edges flipped to follow the implementation
   std::optional<ConformanceFailure> failure;
   double seconds = 0;
 };
