@@ -18,4 +18,16 @@ awk 'NR==2 {t=$3; $3=$4; $4=t} {print}' "$dir/a.ele" > "$dir/b.ele"; cp "$dir/a.
 grep -q '^not-counter-clockwise: triangle 0' "$dir/out" || { cat "$dir/out"; fail "violation not listed"; }
 "$lepp" certify "$src/corpus/paper/A.poly" "$dir/missing" > /dev/null 2>&1; s=$?
 [ $s -eq 2 ] || fail "missing mesh: exit $s"
+# The small-input-angle exemption (docs/CERTIFIER.md): lepp's mesh of a 1-degree triangle,
+# its own unimprovable list removed, fails at 30 degrees and certifies with the flag.
+"$lepp" refine "$src/corpus/hostile/small-input-angle.poly" -o "$dir/s" --min-angle 30 -q > /dev/null; s=$?
+[ $s -eq 3 ] || fail "refine small angle: exit $s (outcome unimprovable is 3)"
+rm -f "$dir/s.unimprovable"
+"$lepp" certify "$src/corpus/hostile/small-input-angle.poly" "$dir/s" --min-angle 30 > "$dir/out"; s=$?
+[ $s -eq 1 ] || { cat "$dir/out"; fail "small angle without the flag: exit $s"; }
+"$lepp" certify "$src/corpus/hostile/small-input-angle.poly" "$dir/s" --min-angle 30 --exempt-small-input-angles > "$dir/out"; s=$?
+[ $s -eq 0 ] || { cat "$dir/out"; fail "small angle with the flag: exit $s"; }
+grep -q 'triangles below theta exempt' "$dir/out" || { cat "$dir/out"; fail "no exempt line"; }
+"$lepp" certify "$src/corpus/hostile/small-input-angle.poly" "$dir/s" --min-angle 30 --exempt-small-input-angles --json > "$dir/out"
+grep -q '"exempt_count": [1-9]' "$dir/out" || { cat "$dir/out"; fail "json exempt_count"; }
 echo "OK"

@@ -15,6 +15,7 @@
 
 #include "exact.h"
 #include "expected_domain.h"
+#include "small_input_angles_internal.h"
 #include "lepp/angle.h"
 #include "lepp/stats.h"
 
@@ -60,6 +61,7 @@ class Certifier {
     check_euler();
     compute_longest_edges();
     check_delaunay();
+    if (opt_.exempt_small_input_angles) report_.small_angles = small_input_angles(pslg_, domain_);
     if (opt_.min_angle_deg > 0) check_angles();
     if (opt_.theorem2) check_theorem2();
     compute_statistics();
@@ -527,6 +529,64 @@ class Certifier {
     return false;
   }
 
+  // --- The small-input-angle exemption rule (docs/CERTIFIER.md) --------------
+  // Mesh vertex p is on segment s of angle a ("an arm"): s's other endpoint, or a vertex
+  // of s's chain (the apex itself excluded).
+  bool on_arm(int p, int s, int end) const {
+    const int in = mesh_to_input_[static_cast<std::size_t>(p)];
+    if (in >= 0) return in == end;
+    return vertex_segment_[static_cast<std::size_t>(p)] == s;
+  }
+  // |p - apex| <= R (the shorter segment's length), exactly.
+  bool in_disk(int p, const SmallInputAngle& a) const {
+    const Point& V = pslg_.vertices[static_cast<std::size_t>(a.apex)];
+    const Point& X = P(p);
+    if (std::abs(X.x - V.x) > 2 * a.radius || std::abs(X.y - V.y) > 2 * a.radius) return false;  // far: cheap
+    return exact::compare_squared_length(V, X, V, pslg_.vertices[static_cast<std::size_t>(a.near_end)]) <= 0;
+  }
+  // The closed sector of a: the apex, or within the disk and on an arm or in the closed wedge.
+  bool in_sector(int p, const SmallInputAngle& a) const {
+    if (p == input_to_mesh_[static_cast<std::size_t>(a.apex)]) return true;
+    if (!in_disk(p, a)) return false;
+    if (on_arm(p, a.segment1, a.end1) || on_arm(p, a.segment2, a.end2)) return true;
+    const Point& V = pslg_.vertices[static_cast<std::size_t>(a.apex)];
+    return exact::orient(V, pslg_.vertices[static_cast<std::size_t>(a.end1)], P(p)) >= 0 &&
+           exact::orient(V, P(p), pslg_.vertices[static_cast<std::size_t>(a.end2)]) >= 0;
+  }
+
+  // The first small input angle (Report::small_angles order) that exempts triangle t, or -1.
+  // Every shortest edge is tried (exact ties kept), so the answer does not depend on the
+  // mesh's vertex numbering. Exempt iff, for some angle a and some shortest edge pq:
+  //  span: p is on one arm of a and q on the other (the edge crosses the wedge), or
+  //  near: a vertex of t lies in the sector of a and p, q lie in its disk.
+  int exempting_angle(std::size_t t) const {
+    const Tri& x = T(t);
+    std::array<std::array<int, 2>, 3> shortest{};
+    int count = 0;
+    for (int i = 0; i < 3; ++i) {
+      const int p = x[static_cast<std::size_t>(i)], q = x[static_cast<std::size_t>((i + 1) % 3)];
+      bool is_shortest = true;
+      for (int j = 0; j < 3 && is_shortest; ++j)
+        if (j != i)
+          is_shortest = exact::compare_squared_length(P(p), P(q), P(x[static_cast<std::size_t>(j)]),
+                                                      P(x[static_cast<std::size_t>((j + 1) % 3)])) <= 0;
+      if (is_shortest) shortest[static_cast<std::size_t>(count++)] = {p, q};
+    }
+    const auto& angles = report_.small_angles;
+    for (std::size_t k = 0; k < angles.size(); ++k) {
+      const SmallInputAngle& a = angles[k];
+      for (int e = 0; e < count; ++e) {
+        const int p = shortest[static_cast<std::size_t>(e)][0], q = shortest[static_cast<std::size_t>(e)][1];
+        const bool span = (on_arm(p, a.segment1, a.end1) && on_arm(q, a.segment2, a.end2)) ||
+                          (on_arm(p, a.segment2, a.end2) && on_arm(q, a.segment1, a.end1));
+        if (span) return static_cast<int>(k);
+        if (in_disk(p, a) && in_disk(q, a) && (in_sector(x[0], a) || in_sector(x[1], a) || in_sector(x[2], a)))
+          return static_cast<int>(k);
+      }
+    }
+    return -1;
+  }
+
   void check_angles() {
     const Sin2Bracket bracket = sin2_bracket(opt_.min_angle_deg);
     auto sorted = [](Tri x) {
@@ -553,6 +613,12 @@ class Certifier {
         }
       }
       if (worst < 0) continue;
+      // Decided before the engine's list is looked at: the rule sees only input and mesh.
+      const int exempt = opt_.exempt_small_input_angles ? exempting_angle(t) : -1;
+      if (exempt >= 0) {
+        report_.exempt_triangles.push_back(static_cast<int>(t));
+        report_.exempt_angle.push_back(exempt);
+      }
       auto it = listed.find(sorted(x));
       if (it != listed.end()) {
         const std::size_t listed_index = it->second;
@@ -567,12 +633,14 @@ class Certifier {
              {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
         continue;
       }
+      if (exempt >= 0) continue;
       const double deg = min_angle_deg(P(x[0]), P(x[1]), P(x[2]));
       add({certainly ? Reason::AngleBelowTheta : Reason::AngleNotCertified,
            fmt::format("{} has an angle at vertex {} {} theta = {} (about {} degrees)", tri_text(t), x[static_cast<std::size_t>(worst)],
                        certainly ? "below" : "within one ulp of", opt_.min_angle_deg, deg),
            {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
     }
+    report_.exempt_count = report_.exempt_triangles.size();
     // Listed but not skinny is harmless for the angle check; listed but absent is not.
     std::set<Tri> triangles;
     if (std::find(found.begin(), found.end(), 0) != found.end())

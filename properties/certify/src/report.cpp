@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Names of checks and reasons, the verdict, and the human-readable report.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "lepp/certify.h"
@@ -87,6 +89,10 @@ std::size_t Report::count(Reason reason) const {
   return r < count_by_reason.size() ? count_by_reason[r] : 0;
 }
 
+namespace {
+constexpr std::size_t kListedExempt = 10;  // exempt triangles named in the text report; all are counted
+}  // namespace
+
 std::string format_report(const Report& report) {
   const Statistics& s = report.stats;
   std::string out;
@@ -105,6 +111,18 @@ std::string format_report(const Report& report) {
   if (!report.unimprovable_accepted.empty())
     out += fmt::format("{} triangles below theta accepted as unimprovable (small input angle, rule holds)\n",
                        report.unimprovable_accepted.size());
+  if (report.exempt_count > 0) {
+    out += fmt::format("{} triangles below theta exempt (small-input-angle rule: shortest edge near an input angle below 60 deg)\n",
+                       report.exempt_count);
+    const std::size_t listed = std::min(report.exempt_triangles.size(), kListedExempt);
+    for (std::size_t i = 0; i < listed; ++i) {
+      const SmallInputAngle& a = report.small_angles[static_cast<std::size_t>(report.exempt_angle[i])];
+      out += fmt::format("  exempt: triangle {} (input angle {:.4g} deg at input vertex {}, segments {} and {}, radius {:.6g})\n",
+                         report.exempt_triangles[i], a.angle_deg, a.apex, a.segment1, a.segment2, a.radius);
+    }
+    if (listed < report.exempt_triangles.size())
+      out += fmt::format("  ... and {} more exempt triangles\n", report.exempt_triangles.size() - listed);
+  }
   for (std::size_t r = 0; r < report.count_by_reason.size(); ++r)
     if (report.count_by_reason[r])
       out += fmt::format("  {} x {} ({})\n", report.count_by_reason[r], to_string(static_cast<Reason>(r)),

@@ -13,6 +13,7 @@
 #include "lepp/mesh.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
+#include "lepp/small_input_angles.h"
 
 namespace lepp::certify {
 
@@ -74,6 +75,11 @@ struct Options {
   // Triangles the engine reported unimprovable (ALGORITHM.md section 8): exempt from
   // the angle check when the rule holds for them, listed apart in the report.
   std::vector<UnimprovableTriangle> unimprovable;
+  // The small-input-angle exemption rule for any mesher (docs/CERTIFIER.md): a triangle
+  // below theta whose shortest edge lies in the region of influence of an input angle
+  // below 60 degrees is exempt, counted apart (Report::exempt_triangles), not a violation.
+  // Depends only on the input and the mesh, never on lists the mesher wrote.
+  bool exempt_small_input_angles = false;
   std::size_t max_listed_per_reason = 50;  // further violations are counted, not listed
 };
 
@@ -94,6 +100,13 @@ struct Report {
   std::vector<Violation> violations;         // at most max_listed_per_reason per reason
   std::vector<std::size_t> count_by_reason;  // every violation counted, indexed by Reason
   std::vector<UnimprovableTriangle> unimprovable_accepted;  // listed by the engine, rule holds
+  // With Options::exempt_small_input_angles: the small input angles of the input, and the
+  // triangles below theta the exemption rule exempts (indices into Mesh::triangles, in
+  // order), each with the index in small_angles of the angle that exempts it.
+  std::vector<SmallInputAngle> small_angles;
+  std::vector<int> exempt_triangles;
+  std::vector<int> exempt_angle;
+  std::size_t exempt_count = 0;
   Statistics stats;
   double min_angle_deg = 0;  // the theta checked (0: none)
 
