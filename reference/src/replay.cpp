@@ -355,12 +355,49 @@ struct Replay::Impl {
     return out;
   }
 
+  // Lawson flips with CGAL's symbolically perturbed in-circle test, from the
+  // given edges (all domain edges if empty) until none applies: the result is
+  // the constrained Delaunay triangulation CGAL's own insertion builds, which
+  // breaks every cocircular tie by the perturbation. Only cocircular edges of
+  // a Delaunay mesh flip, so the mesh stays constrained Delaunay.
+  std::int64_t perturbed_lawson(std::vector<std::pair<FH, int>> todo) {
+    if (todo.empty())
+      for (FH f : tr.cdt.finite_face_handles())
+        if (in_domain(f))
+          for (int i = 0; i < 3; ++i) todo.push_back({f, i});
+    std::int64_t flips = 0;
+    while (!todo.empty()) {
+      auto [f, i] = todo.back();
+      todo.pop_back();
+      if (!in_domain(f) || f->is_constrained(i)) continue;
+      FH n = f->neighbor(i);
+      if (!in_domain(n)) continue;
+      if (tr.cdt.side_of_oriented_circle(n, f->vertex(i)->point(), true) != CGAL::ON_POSITIVE_SIDE) continue;
+      tr.cdt.flip(f, i);
+      ++flips;
+      for (int k = 0; k < 3; ++k) todo.push_back({f, k}), todo.push_back({n, k});
+    }
+    return flips;
+  }
+
   // p is a choice of the replay's mesh, or of a mesh that differs from it by
   // flipping one or two cocircular edges (then the flips are kept: both are
-  // constrained Delaunay, and the implementation evidently has the other).
+  // constrained Delaunay, and the implementation evidently has the other), or
+  // of CGAL's perturbed constrained Delaunay mesh of the same points (then
+  // the replay follows CGAL's tie rule from here on).
   bool match(const Point& p, ReplayChoice& out) {
     if (match_here(p, out)) return true;
     if (!rules.follow_cocircular_flips) return false;
+    if (match_local_flips(p, out)) return true;
+    if (perturbed_) return false;
+    std::int64_t flips = perturbed_lawson({});
+    if (flips == 0) return false;
+    perturbed_ = true;
+    cocircular_flips_ += flips;
+    return match_here(p, out) || match_local_flips(p, out);
+  }
+
+  bool match_local_flips(const Point& p, ReplayChoice& out) {
     std::vector<EdgeIds> cands = flip_candidates(p);
     if (cands.empty()) return false;
     std::size_t attempts = 0;
@@ -404,6 +441,7 @@ struct Replay::Impl {
 
   std::vector<EdgeIds> recent_ties_;
   std::int64_t cocircular_flips_ = 0;
+  bool perturbed_ = false;  // following CGAL's perturbed tie rule
 
   void insert(const Point& p, const ReplayChoice& choice) {
     Selection s;
@@ -428,6 +466,12 @@ struct Replay::Impl {
       throw std::runtime_error(e.what());
     }
     last_ = v;
+    if (perturbed_) {
+      std::vector<std::pair<FH, int>> todo;
+      Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+      do todo.push_back({fc, fc->index(v)}); while (++fc != done);
+      cocircular_flips_ += perturbed_lawson(todo);
+    }
     record_ties(v);
   }
 
