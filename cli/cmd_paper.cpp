@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cgal_mesher.h"
+#include "triangle_wasm.h"
 #include "commands.h"
 #include "lepp/fast.h"
 #include "lepp/io.h"
@@ -224,14 +225,12 @@ class Study {
                    double theta) {
     Run r = start(problem, reading, "triangle", theta);
     // -S: Triangle's own Steiner budget, so that a run above its range ends too.
-    std::string cmd = fmt::format("node {} {} -pq{}S{} {} 2>&1", quote(args_.root + "/tools/triangle/triangle.js"),
-                                  quote(poly), theta_tag(theta), args_.triangle_budget, quote(r.mesh_prefix));
-    std::string output;
-    auto t0 = std::chrono::steady_clock::now();
-    int status = shell(cmd, output);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    long long added = -1;
-    if (status == 0 && std::sscanf(output.c_str(), "points added %lld", &added) == 1) {
+    others::TriangleRun tr = others::run_triangle(args_.root, poly, theta, args_.triangle_budget, r.mesh_prefix);
+    r.seconds = tr.seconds;
+    const std::string& output = tr.output;
+    int status = tr.status;
+    long long added = tr.points_added;
+    if (status == 0 && added >= 0) {
       r.steiner = added;
       try {
         Mesh m = read_mesh(r.mesh_prefix);
@@ -249,12 +248,7 @@ class Study {
     return r;
   }
 
-  bool triangle_available() {
-    std::string out;
-    return shell("node --version >/dev/null 2>&1 && test -f " +
-                     quote(args_.root + "/tools/triangle/node_modules/triangle-wasm/package.json"),
-                 out) == 0;
-  }
+  bool triangle_available() { return others::triangle_available(args_.root); }
 
  private:
   Run start(const std::string& problem, const std::string& reading, const std::string& method, double theta) {
