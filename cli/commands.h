@@ -12,5 +12,6 @@ void add_certify_command(CLI::App& app, int& status);
 void add_render_command(CLI::App& app, int& status);
 void add_paper_command(CLI::App& app, int& status);
 void add_theorems_command(CLI::App& app, int& status);
+void add_audit_command(CLI::App& app, int& status);
 
 }  // namespace lepp::cli

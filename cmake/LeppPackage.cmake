@@ -2,7 +2,8 @@
 # Install and export lepp as a CMake package: find_package(lepp) gives
 # lepp::core (data model, formats, validation), lepp::version (lepp/version.h), lepp::certify (the exact
 # certifier), lepp::render (SVG drawings), lepp::gen (RapidCheck generators, when RapidCheck was found),
-# lepp::reference and lepp::impl (the two engines). examples/outside_project uses it;
+# lepp::reference and lepp::impl (the two engines), lepp::audit (`lepp audit` as a
+# library: the engine interface, the command adapter, the rows; with RapidCheck). examples/outside_project uses it;
 # scripts/ci.d/20-example.sh builds that against a temporary install prefix.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -15,6 +16,9 @@ set(LEPP_EXPORT_GEN OFF)
 if(TARGET lepp_gen)
   list(APPEND LEPP_EXPORTED_TARGETS lepp_gen)
   set(LEPP_EXPORT_GEN ON)
+endif()
+if(TARGET lepp_audit)
+  list(APPEND LEPP_EXPORTED_TARGETS lepp_audit)
 endif()
 
 install(TARGETS ${LEPP_EXPORTED_TARGETS} EXPORT leppTargets
@@ -31,6 +35,9 @@ install(DIRECTORY
 install(FILES ${LEPP_GENERATED_INCLUDE_DIR}/lepp/version.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lepp)
 if(LEPP_EXPORT_GEN)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/properties/gen/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
+if(TARGET lepp_audit)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/properties/audit/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 
 set(LEPP_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/lepp)

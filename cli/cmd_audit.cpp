@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `lepp audit (--cmd TEMPLATE | --engine NAME)`: certifies an implementation
+// against the paper's statements on generated and real inputs, shrinks what
+// fails (docs/AUDIT.md). Exit 0 every row holds, 1 findings, 2 bad usage.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "lepp/audit/audit.h"
+#include "lepp/audit/builtin_engines.h"
+#include "lepp/audit/command_engine.h"
+#include "lepp/audit/peer_engines.h"
+#include "lepp/audit/report.h"
+#include "lepp/audit/subprocess.h"
+#include "lepp/fast.h"
+
+namespace lepp::cli {
+namespace {
+
+struct AuditArgs {
+  std::string cmd, engine;
+  std::string method = "centroid";
+  std::string order = "fifo";
+  std::vector<double> thetas = {20, 25, 30};
+  std::size_t cases = 300;
+  std::uint64_t seed = 1;
+  std::vector<std::string> inputs;
+  std::string sources = "gen,paper,corpus";
+  std::string compare = "auto";
+  std::string root = ".";
+  double timeout = 10;
+  std::size_t memory = 0;
+  double angle_tolerance = 1e-3, point_tolerance = 8;
+  std::string out = "audit-out";
+  std::string junit;
+  bool json = false, no_shrink = false;
+  std::size_t max_findings = 3;
+  double shrink_seconds = 60;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> parts;
+  std::stringstream in(s);
+  std::string p;
+  while (std::getline(in, p, ','))
+    if (!p.empty()) parts.push_back(p);
+  return parts;
+}
+
+void print_progress(const audit::Progress& p) {
+  std::fprintf(stderr, "\r\033[K%zu/%zu runs, %zu failing  %.60s", p.done, p.total, p.failed, p.current.c_str());
+  if (p.done == p.total && p.current.empty()) std::fprintf(stderr, "\r\033[K");
+  std::fflush(stderr);
+}
+
+int run_audit_command(const AuditArgs& a) {
+  try {
+    if (a.cmd.empty() == a.engine.empty()) throw audit::UsageError("give exactly one of --cmd TEMPLATE and --engine NAME");
+    audit::AuditOptions o;
+    o.method = a.method == "midpoint" ? Method::Midpoint : Method::Centroid;
+    QueueOrder order = a.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+    audit::Engine engine;
+    if (!a.cmd.empty()) {
+      engine = audit::command_engine(a.cmd);
+      o.engine_name = a.cmd;
+      o.reproduce_prefix = "lepp audit --cmd " + audit::shell_quote(a.cmd);
+    } else {
+      if (a.engine == "fast") engine = audit::fast_engine(order);
+      else if (a.engine == "reference") engine = audit::reference_engine(order);
+      else if (a.engine == "triangle") engine = audit::triangle_engine(a.root);
+      else if (a.engine == "cgal") engine = audit::cgal_engine();
+      o.engine_name = a.engine == "fast" || a.engine == "reference" ? "lepp " + a.engine + (a.order == "lifo" ? " (lifo)" : "")
+                      : a.engine == "triangle"                     ? "Triangle (triangle-wasm)"
+                                                                   : "CGAL refine_Delaunay_mesh_2";
+      o.reproduce_prefix = "lepp audit --engine " + a.engine + (a.order == "lifo" ? " --order lifo" : "");
+    }
+    std::vector<std::string> compare = a.compare == "auto" ? std::vector<std::string>{"reference", "triangle"} : split(a.compare);
+    for (const std::string& c : compare) {
+      if (c == "none") continue;
+      if (c == "reference") o.comparisons.push_back({"lepp reference", audit::reference_engine()});
+      else if (c == "fast") o.comparisons.push_back({"lepp fast", audit::fast_engine()});
+      else if (c == "cgal") o.comparisons.push_back({"CGAL", audit::cgal_engine()});
+      else if (c == "triangle") {
+        try {
+          o.comparisons.push_back({"Triangle", audit::triangle_engine(a.root)});
+        } catch (const audit::UsageError&) {
+          if (a.compare != "auto") throw;  // asked for explicitly: say it is missing
+        }
+      } else {
+        throw audit::UsageError("--compare: unknown engine " + c + " (reference, fast, triangle, cgal, none)");
+      }
+    }
+    o.thetas = a.thetas;
+    o.cases = a.cases;
+    o.inputs.seed = a.seed;
+    o.inputs.dirs = a.inputs;
+    o.inputs.source_root = a.root;
+    auto sources = split(a.sources);
+    auto has = [&](const char* s) { return std::find(sources.begin(), sources.end(), s) != sources.end(); };
+    for (const std::string& s : sources)
+      if (s != "gen" && s != "paper" && s != "corpus") throw audit::UsageError("--sources: unknown source " + s + " (gen, paper, corpus)");
+    o.inputs.generated = has("gen");
+    o.inputs.paper = has("paper");
+    o.inputs.corpus = has("corpus");
+    o.timeout_seconds = a.timeout;
+    o.memory_mb = a.memory;
+    o.checks.angle_tolerance_deg = a.angle_tolerance;
+    o.checks.point_tolerance_ulps = a.point_tolerance;
+    o.out_dir = a.out;
+    o.shrink = !a.no_shrink;
+    o.max_findings_per_row = a.max_findings;
+    o.shrink_max_seconds = a.shrink_seconds;
+    if (isatty(STDERR_FILENO)) o.on_progress = print_progress;
+
+    audit::AuditReport report = audit::run_audit(engine, o);
+    if (a.json)
+      std::printf("%s\n", audit::json_report(report).dump(2).c_str());
+    else
+      std::printf("%s", audit::markdown_report(report).c_str());
+    if (!a.junit.empty()) {
+      std::ofstream out(a.junit);
+      out << audit::junit_report(report);
+      if (!out) {
+        std::fprintf(stderr, "lepp audit: cannot write %s\n", a.junit.c_str());
+        return 2;
+      }
+    }
+    return audit::exit_status(report);
+  } catch (const audit::UsageError& e) {
+    std::fprintf(stderr, "lepp audit: %s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace
+
+void add_audit_command(CLI::App& app, int& status) {
+  auto a = std::make_shared<AuditArgs>();
+  auto* cmd = app.add_subcommand("audit", "Audit a mesher (any program, or a built-in engine) against the paper's statements");
+  cmd->add_option("--cmd", a->cmd, "Command template run per case: {in} .poly, {out} output prefix, {theta}, {method}");
+  cmd->add_option("--engine", a->engine, "A built-in engine instead of --cmd")
+      ->check(CLI::IsMember({"fast", "reference", "triangle", "cgal"}));
+  cmd->add_option("--method", a->method, "centroid or midpoint")->default_val("centroid")->check(CLI::IsMember({"centroid", "midpoint"}));
+  cmd->add_option("--order", a->order, "Queue order of the built-in lepp engines")->default_val("fifo")->check(CLI::IsMember({"fifo", "lifo"}));
+  cmd->add_option("--theta", a->thetas, "Smallest angles, degrees, comma-separated")->delimiter(',')->default_str("20,25,30");
+  cmd->add_option("--cases", a->cases, "Runs at most (inputs x angles)")->default_val(300);
+  cmd->add_option("--seed", a->seed, "Seed of the generated inputs")->default_val(1);
+  cmd->add_option("--inputs", a->inputs, "A directory of .poly files (or one file): audit these instead of the built-in sources");
+  cmd->add_option("--sources", a->sources, "Built-in inputs: gen (RapidCheck families), paper (corpus/paper), corpus (corpus/hostile)")
+      ->default_val("gen,paper,corpus");
+  cmd->add_option("--compare", a->compare, "Count points against: reference, fast, triangle, cgal, none (auto: reference and Triangle if installed)")
+      ->default_val("auto");
+  cmd->add_option("--root", a->root, "The lepp source tree (corpus/, tools/triangle/)")->default_val(".");
+  cmd->add_option("--timeout", a->timeout, "Seconds per run; a run past it is killed: a non-termination finding")->default_val(10);
+  cmd->add_option("--memory", a->memory, "Address-space cap of the program, MB (0: none)")->default_val(0);
+  cmd->add_option("--angle-tolerance", a->angle_tolerance, "Conformance: a triangle this close above theta (degrees) may count as bad or good")
+      ->default_val(1e-3);
+  cmd->add_option("--point-tolerance", a->point_tolerance, "Conformance: how far an inserted point may be from the paper's exact choice, in DBL_EPSILON x |coordinate|")
+      ->default_val(8);
+  cmd->add_option("--out", a->out, "Directory of the findings (ROW-N/: input.poly, out.*, finding.svg, reproduce.sh)")->default_val("audit-out");
+  cmd->add_option("--junit", a->junit, "Also write the rows as JUnit XML to this file");
+  cmd->add_flag("--json", a->json, "Print the report as JSON instead of markdown");
+  cmd->add_flag("--no-shrink", a->no_shrink, "Save failures as found, without shrinking");
+  cmd->add_option("--max-findings", a->max_findings, "Failures shrunk and saved per row (the rest are counted)")->default_val(3);
+  cmd->add_option("--shrink-seconds", a->shrink_seconds, "Time budget of one shrink")->default_val(60);
+  cmd->footer("Exit status: 0 every row holds; 1 a row failed (findings saved under --out); 2 bad usage. docs/AUDIT.md.");
+  cmd->callback([a, &status] { status = run_audit_command(*a); });
+}
+
+}  // namespace lepp::cli

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The audit: runs an engine on every input at every theta, decides every row
+// (checks.h) for every run, shrinks each failure through the engine (shrink.h),
+// saves it under the output directory (finding.h) and sums it all up per row.
+// `lepp audit` is this plus option parsing and printing (report.h).
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lepp/audit/checks.h"
+#include "lepp/audit/engine.h"
+#include "lepp/audit/inputs.h"
+
+namespace lepp::audit {
+
+// Another engine run on the same inputs only to count its points (the ratio column).
+struct NamedEngine {
+  std::string name;
+  Engine engine;
+};
+
+struct Progress {
+  std::size_t done = 0, total = 0, failed = 0;
+  std::string current;  // the input being run, or "shrinking ..."
+};
+
+struct AuditOptions {
+  std::string engine_name = "engine";       // for the report
+  std::string reproduce_prefix;             // e.g. "lepp audit --engine fast": findings get a one-line reproduce command
+  Method method = Method::Centroid;
+  std::vector<double> thetas = {20, 25, 30};
+  std::size_t cases = 300;                  // runs at most (inputs x thetas)
+  InputSources inputs;                      // count is derived from cases and thetas
+  double timeout_seconds = 10;
+  std::size_t memory_mb = 0;
+  CheckOptions checks;
+  std::string out_dir = "audit-out";        // findings go to OUT/ROW-N/
+  std::string work_dir;                     // scratch; empty: a fresh directory under the system temp dir
+  std::vector<NamedEngine> comparisons;     // points added compared against these (lepp reference, Triangle)
+  bool shrink = true;
+  std::size_t max_findings_per_row = 3;     // shrunk and saved; further failures are counted
+  std::size_t shrink_max_runs = 300;        // engine runs per shrink at most
+  double shrink_max_seconds = 60;           // and seconds per shrink
+  std::function<void(const Progress&)> on_progress;
+};
+
+// A saved, shrunk counterexample.
+struct Counterexample {
+  Row row = Row::Certificate;
+  std::string input;        // where it came from (before shrinking)
+  std::string dir;          // OUT/ROW-N: input.poly, out.*, finding.svg, reproduce.sh, finding.md
+  double theta = 0;
+  std::size_t vertices = 0, segments = 0, holes = 0;  // of the shrunk input
+  std::size_t shrink_steps = 0, shrink_runs = 0;
+  std::string detail;       // the row's one line on the shrunk input
+  std::string reproduce;    // one command line
+};
+
+struct RowSummary {
+  Row row = Row::Certificate;
+  std::size_t run = 0, held = 0, failed = 0, findings = 0, not_applicable = 0, not_checked = 0;
+  std::vector<Counterexample> counterexamples;  // saved ones, smallest first
+  std::string first_detail;                     // the first failure or finding seen, before shrinking
+  bool holds() const { return failed == 0; }
+};
+
+struct PointsRatio {
+  std::string against;
+  std::size_t cases = 0;             // runs both finished
+  double median = 0, max = 0, min = 0;
+  double total = 0;                  // sum of ours / sum of theirs
+};
+
+struct AuditReport {
+  std::string engine;
+  Method method = Method::Centroid;
+  std::vector<double> thetas;
+  std::uint64_t seed = 0;
+  std::size_t inputs = 0, cases = 0;
+  std::array<RowSummary, kRows> rows;
+  std::vector<PointsRatio> ratios;
+  std::vector<std::string> skipped_inputs;
+  std::size_t status_counts[6] = {};          // by RunStatus
+  double seconds = 0;                          // whole audit
+  double engine_seconds = 0;                   // the engine's own time (first runs, not shrinking)
+  double comparison_seconds = 0, shrink_seconds = 0;
+  double overhead_per_case_ms = 0;             // (seconds - engine - comparisons - shrinking) / cases
+  std::string out_dir;
+
+  bool holds() const;                          // no row failed
+  RowSummary& operator[](Row r) { return rows[static_cast<std::size_t>(r)]; }
+  const RowSummary& operator[](Row r) const { return rows[static_cast<std::size_t>(r)]; }
+};
+
+// Throws UsageError on bad options (no thetas, a missing input directory).
+AuditReport run_audit(const Engine& engine, const AuditOptions& options);
+
+// 0 every row holds, 1 some row failed.
+int exit_status(const AuditReport& report);
+
+}  // namespace lepp::audit

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// lepp's own engines as audit engines, in process, with their trace points:
+// fast (lepp::fast) and reference (lepp::reference). The timeout becomes the
+// engine's wall-clock limit; a run stopped by a guard (Steiner budget, edge
+// floor, time limit) is RunStatus::Stopped (TimedOut for the time limit).
+#pragma once
+#include <string>
+
+#include "lepp/audit/engine.h"
+
+namespace lepp::audit {
+
+Engine fast_engine(QueueOrder order = QueueOrder::Fifo);
+Engine reference_engine(QueueOrder order = QueueOrder::Fifo);
+
+// Adapts any function with lepp's refine signature (for C++ engines built on lepp's types).
+using RefineFunction = RefineResult (*)(const Pslg&, const RefineOptions&);
+Engine refine_engine(RefineFunction refine, QueueOrder order = QueueOrder::Fifo);
+
+}  // namespace lepp::audit

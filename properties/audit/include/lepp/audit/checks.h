@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The audit's rows: one statement of the paper each, decided for one run of the
+// engine on one input. The certificate, angle and Theorem 2 rows reuse the
+// exact certifier (lepp::certify); conformance replays the trace on the exact
+// reference (lepp/audit/conformance.h) when that checker is built in.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "lepp/audit/engine.h"
+#include "lepp/certify.h"
+
+namespace lepp::audit {
+
+enum class Row { Certificate, MinAngle, Theorem2, Termination, Conformance };
+constexpr std::size_t kRows = 5;
+constexpr std::array<Row, kRows> kAllRows = {Row::Certificate, Row::MinAngle, Row::Theorem2, Row::Termination,
+                                             Row::Conformance};
+
+const char* row_key(Row row);        // "certificate", "min-angle", "theorem-2", "termination", "conformance"
+const char* row_statement(Row row);  // what is checked, one line
+const char* row_passage(Row row);    // the paper passage it comes from
+
+enum class Verdict {
+  Held,           // the statement holds for this run
+  Failed,         // it does not: a counterexample
+  Finding,        // outside what the paper claims (a non-ending run above the termination band): reported, not failed
+  NotApplicable,  // the statement says nothing here (no mesh to check, an input outside its class)
+  NotChecked,     // could be checked but this build cannot (no trace, no conformance checker)
+};
+const char* to_string(Verdict v);
+
+struct RowResult {
+  Verdict verdict = Verdict::NotChecked;
+  std::string detail;                         // one line: the first violation, why not applicable, ...
+  std::vector<certify::Violation> violations; // what to mark in the picture
+};
+
+// Passed to the conformance replay (lepp/audit/conformance.h, ConformanceOptions).
+struct CheckOptions {
+  double angle_tolerance_deg = 1e-3;  // a triangle this close above theta may count as bad or good
+  double point_tolerance_ulps = 8;    // how far a point may be from the exact choice, DBL_EPSILON x |coordinate| units
+};
+
+struct CaseResult {
+  std::array<RowResult, kRows> rows;
+  std::int64_t steiner_points = -1;  // points added (Ok runs)
+  RowResult& operator[](Row r) { return rows[static_cast<std::size_t>(r)]; }
+  const RowResult& operator[](Row r) const { return rows[static_cast<std::size_t>(r)]; }
+};
+
+// The band where the paper claims termination: centroid theta <= 30 (Remark 15),
+// midpoint theta <= alpha_limit, about 22 degrees (Theorem 9).
+bool termination_claimed(Method method, double theta);
+
+// The smallest input angle below which the angle row does not apply (no exemption rule yet).
+constexpr double kSmallInputAngleDeg = 60;
+
+// Decides every row for one run.
+CaseResult check_run(const Pslg& validated, const EngineRequest& request, const EngineRun& run, const CheckOptions& options);
+
+
+}  // namespace lepp::audit

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lepp/audit/builtin_engines.h"
+
+#include <chrono>
+#include <exception>
+
+#include "lepp/fast.h"
+#include "lepp/reference.h"
+
+namespace lepp::audit {
+
+Engine refine_engine(RefineFunction refine, QueueOrder order) {
+  return [refine, order](const Pslg& pslg, const EngineRequest& req) {
+    EngineRun run;
+    RefineOptions o;
+    o.min_angle_deg = req.theta;
+    o.method = req.method;
+    o.order = order;
+    o.trace = true;
+    o.time_limit_seconds = req.timeout_seconds > 0 ? req.timeout_seconds : 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      RefineResult r = refine(pslg, o);
+      run.mesh = std::move(r.mesh);
+      std::vector<Point> trace;
+      trace.reserve(r.trace.size());
+      for (const TraceStep& s : r.trace) trace.push_back(s.point);
+      run.trace = std::move(trace);
+      switch (r.outcome) {
+        case Outcome::Converged:
+        case Outcome::Unimprovable:
+          run.status = RunStatus::Ok;
+          break;
+        case Outcome::TimeLimit:
+          run.status = RunStatus::TimedOut;
+          run.detail = "stopped by its time limit (the audit's timeout)";
+          break;
+        default:
+          run.status = RunStatus::Stopped;
+          run.detail = std::string("stopped by a guard: ") + to_string(r.outcome) + (r.stuck.empty() ? "" : " (" + r.stuck + ")");
+          break;
+      }
+    } catch (const std::exception& e) {
+      run.status = RunStatus::Crashed;
+      run.detail = std::string("exception: ") + e.what();
+    }
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return run;
+  };
+}
+
+Engine fast_engine(QueueOrder order) { return refine_engine(&fast::refine, order); }
+Engine reference_engine(QueueOrder order) { return refine_engine(&reference::refine, order); }
+
+}  // namespace lepp::audit

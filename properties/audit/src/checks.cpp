@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lepp/audit/checks.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "lepp/audit/conformance.h"
+#include "lepp/gen.h"
+
+namespace lepp::audit {
+namespace {
+
+std::string first_violation(const certify::Report& report, certify::Check check, std::vector<certify::Violation>& out) {
+  std::string first;
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < report.count_by_reason.size(); ++i)
+    if (certify::check_of(static_cast<certify::Reason>(i)) == check) total += report.count_by_reason[i];
+  for (const certify::Violation& v : report.violations) {
+    if (certify::check_of(v.reason) != check) continue;
+    if (first.empty()) first = fmt::format("{}: {}", certify::to_string(v.reason), v.message);
+    if (out.size() < 20) out.push_back(v);
+  }
+  if (total > 1) first += fmt::format(" (and {} more)", total - 1);
+  return first;
+}
+
+}  // namespace
+
+const char* row_key(Row row) {
+  switch (row) {
+    case Row::Certificate: return "certificate";
+    case Row::MinAngle: return "min-angle";
+    case Row::Theorem2: return "theorem-2";
+    case Row::Termination: return "termination";
+    case Row::Conformance: return "conformance";
+  }
+  return "?";
+}
+
+const char* row_statement(Row row) {
+  switch (row) {
+    case Row::Certificate:
+      return "the output reads, covers the domain exactly, keeps every input vertex, keeps every segment as a chain "
+             "of edges, and is a constrained Delaunay triangulation";
+    case Row::MinAngle: return "every smallest angle >= theta";
+    case Row::Theorem2: return "terminal triangles of every unconstrained terminal edge have largest angle <= 120 degrees";
+    case Row::Termination:
+      return "the run ends (within the timeout) where the paper claims it: centroid theta <= 30, midpoint theta <= 22";
+    case Row::Conformance:
+      return "every inserted point is the paper's choice for the Lepp of some bad triangle of the mesh at that moment";
+  }
+  return "?";
+}
+
+const char* row_passage(Row row) {
+  switch (row) {
+    case Row::Certificate:
+      return "Sections 3 and 4, the algorithms: input a CDT, \"perform constrained Delaunay insertion of P into tau\"";
+    case Row::MinAngle: return "Section 3: \"the algorithm finishes when the minimum angle in the mesh is >= theta_tol\"";
+    case Row::Theorem2: return "Section 2, Theorem 2";
+    case Row::Termination: return "Section 3.1, Theorem 9 (midpoint, theta <= alpha_limit); Section 4.1, Remark 15 (centroid, theta <= 30)";
+    case Row::Conformance:
+      return "Section 3, Select Point (constrained edge point insertion); Section 4, New Select Point with Remark 10";
+  }
+  return "?";
+}
+
+const char* to_string(Verdict v) {
+  switch (v) {
+    case Verdict::Held: return "held";
+    case Verdict::Failed: return "failed";
+    case Verdict::Finding: return "finding";
+    case Verdict::NotApplicable: return "n/a";
+    case Verdict::NotChecked: return "not checked";
+  }
+  return "?";
+}
+
+const char* to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::Ok: return "ok";
+    case RunStatus::ExitCode: return "exit-code";
+    case RunStatus::Crashed: return "crashed";
+    case RunStatus::TimedOut: return "timed-out";
+    case RunStatus::Stopped: return "stopped";
+    case RunStatus::UnreadableOutput: return "unreadable-output";
+  }
+  return "?";
+}
+
+bool termination_claimed(Method method, double theta) {
+  return method == Method::Centroid ? theta <= 30 : theta <= 22;
+}
+
+CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun& run, const CheckOptions& options) {
+  CaseResult c;
+  // Termination first: it is decided by how the run ended.
+  const bool ended = run.status != RunStatus::TimedOut && run.status != RunStatus::Stopped;
+  if (ended) {
+    c[Row::Termination] = {Verdict::Held, "", {}};
+  } else {
+    std::string what = run.status == RunStatus::TimedOut ? "did not end within the timeout" : "did not converge";
+    if (!run.detail.empty()) what += ": " + run.detail;
+    c[Row::Termination] = {termination_claimed(req.method, req.theta) ? Verdict::Failed : Verdict::Finding, what, {}};
+  }
+  if (run.status != RunStatus::Ok) {
+    // No final mesh to certify. A run that failed outright fails the certificate row (its output does not read).
+    bool broken = run.status == RunStatus::ExitCode || run.status == RunStatus::Crashed ||
+                  run.status == RunStatus::UnreadableOutput;
+    std::string why = fmt::format("{}: {}", to_string(run.status), run.detail);
+    c[Row::Certificate] = {broken ? Verdict::Failed : Verdict::NotApplicable, why, {}};
+    for (Row r : {Row::MinAngle, Row::Theorem2, Row::Conformance}) c[r] = {Verdict::NotApplicable, "no mesh: " + why, {}};
+    return c;
+  }
+  c.steiner_points = static_cast<std::int64_t>(run.mesh.vertices.size()) - static_cast<std::int64_t>(pslg.vertices.size());
+
+  // Input angles below 60 degrees: the paper's angle claim is for inputs without
+  // them; without a small-input-angle exemption rule the row does not apply.
+  const double input_angle = gen::min_input_angle_deg(pslg);
+  const bool angle_applies = input_angle >= kSmallInputAngleDeg;
+
+  certify::Options o;
+  o.min_angle_deg = angle_applies ? req.theta : 0;
+  o.theorem2 = true;
+  o.max_listed_per_reason = 20;
+  const certify::Report report = certify::certify(pslg, run.mesh, o);
+
+  auto decide = [&](Row row, std::initializer_list<certify::Check> checks) {
+    RowResult r;
+    std::string detail;
+    for (certify::Check ch : checks) {
+      std::string d = first_violation(report, ch, r.violations);
+      if (!d.empty() && detail.empty()) detail = d;
+    }
+    r.verdict = detail.empty() ? Verdict::Held : Verdict::Failed;
+    r.detail = detail;
+    c[row] = std::move(r);
+  };
+  decide(Row::Certificate, {certify::Check::Topology, certify::Check::InputVertices, certify::Check::Constraints,
+                            certify::Check::Delaunay});
+  if (angle_applies)
+    decide(Row::MinAngle, {certify::Check::MinAngle});
+  else
+    c[Row::MinAngle] = {Verdict::NotApplicable, fmt::format("input angle {:.3g} < {} degrees", input_angle, kSmallInputAngleDeg), {}};
+  decide(Row::Theorem2, {certify::Check::Theorem2});
+
+  if (!run.trace) {
+    c[Row::Conformance] = {Verdict::NotChecked, "no trace", {}};
+    return c;
+  }
+  ConformanceOptions co;
+  co.method = req.method;
+  co.min_angle_deg = req.theta;
+  co.angle_tolerance_deg = options.angle_tolerance_deg;
+  co.point_tolerance_ulps = options.point_tolerance_ulps;
+  try {
+    const ConformanceReport conf = check_conformance(pslg, *run.trace, co);
+    if (conf.conforms) {
+      c[Row::Conformance] = {Verdict::Held, "", {}};
+    } else {
+      RowResult r;
+      r.verdict = Verdict::Failed;
+      r.detail = conf.failure ? fmt::format("step {} of {} ({:.17g}, {:.17g}): {}", conf.failure->step + 1, conf.steps,
+                                            conf.failure->point.x, conf.failure->point.y, conf.failure->reason)
+                              : "does not conform";
+      if (conf.failure) {
+        certify::Violation v;
+        v.message = describe(conf, 3);
+        v.points.push_back(conf.failure->point);
+        for (const ConformanceCandidate& k : conf.failure->candidates) v.points.push_back(k.point);
+        r.violations.push_back(std::move(v));
+      }
+      c[Row::Conformance] = std::move(r);
+    }
+  } catch (const std::exception& e) {
+    c[Row::Conformance] = {Verdict::Failed, std::string("the replay stopped: ") + e.what(), {}};
+  }
+  return c;
+}
+
+}  // namespace lepp::audit

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lepp/audit/peer_engines.h"
+
+#include <chrono>
+#include <exception>
+
+#include "cgal_mesher.h"
+#include "lepp/audit/command_engine.h"
+#include "triangle_wasm.h"
+
+namespace lepp::audit {
+
+Engine triangle_engine(const std::string& root, std::int64_t budget) {
+  if (!others::triangle_available(root))
+    throw UsageError("--engine triangle: needs node and tools/triangle/node_modules (run `npm ci` in " + root +
+                     "/tools/triangle, as scripts/install-deps.sh does)");
+  return [root, budget](const Pslg& pslg, const EngineRequest& req) {
+    EngineRun run;
+    std::string in, out;
+    if (!write_engine_input(pslg, req, in, out, run)) return run;
+    run = run_command(others::triangle_command(root, in, req.theta, budget, out), out, req);
+    if (run.status == RunStatus::Ok &&
+        static_cast<std::int64_t>(run.mesh.vertices.size()) - static_cast<std::int64_t>(pslg.vertices.size()) >= budget) {
+      run.status = RunStatus::Stopped;
+      run.detail = "used up Triangle's Steiner budget (-S)";
+    }
+    return run;
+  };
+}
+
+Engine cgal_engine(std::int64_t budget) {
+  return [budget](const Pslg& pslg, const EngineRequest& req) {
+    EngineRun run;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      others::CgalMeshLimits limits;
+      limits.max_steiner = budget;
+      limits.time_limit_seconds = req.timeout_seconds;
+      others::CgalMeshResult r = others::cgal_mesh(pslg, req.theta, 0, limits);
+      run.mesh = std::move(r.mesh);
+      run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!r.finished) {
+        bool timed_out = req.timeout_seconds > 0 && run.seconds >= req.timeout_seconds;
+        run.status = timed_out ? RunStatus::TimedOut : RunStatus::Stopped;
+        run.detail = timed_out ? "stopped at the timeout" : "used up the Steiner budget";
+      }
+    } catch (const std::exception& e) {
+      run.status = RunStatus::Crashed;
+      run.detail = std::string("exception: ") + e.what();
+      run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+    return run;
+  };
+}
+
+}  // namespace lepp::audit

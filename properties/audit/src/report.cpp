@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lepp/audit/report.h"
+
+#include <fmt/format.h>
+
+#include "lepp/audit/command_engine.h"
+
+namespace lepp::audit {
+namespace {
+
+std::string thetas_text(const std::vector<double>& thetas) {
+  std::string s;
+  for (double t : thetas) s += (s.empty() ? "" : ", ") + theta_text(t);
+  return s;
+}
+
+std::string verdict_of(const RowSummary& r) {
+  if (r.failed > 0) return "FAILED";
+  if (r.run == 0) return r.not_checked > 0 ? "not checked" : "not applicable";
+  if (r.findings > 0) return "holds (findings outside the claim)";
+  return "holds";
+}
+
+std::string smallest_cell(const RowSummary& r) {
+  if (r.counterexamples.empty()) return r.first_detail.empty() ? "" : md_cell(r.first_detail);
+  const Counterexample& c = r.counterexamples.front();
+  return fmt::format("`{}` ({} vertices, {} segments, theta {})", c.dir, c.vertices, c.segments, theta_text(c.theta));
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string r;
+  for (char c : s) {
+    if (c == '<') r += "&lt;";
+    else if (c == '>') r += "&gt;";
+    else if (c == '&') r += "&amp;";
+    else if (c == '"') r += "&quot;";
+    else if (c == '\'') r += "&apos;";
+    else if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') r += ' ';
+    else r += c;
+  }
+  return r;
+}
+
+}  // namespace
+
+std::string md_cell(const std::string& s) {
+  std::string r;
+  for (char c : s) r += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
+  return r.size() > 200 ? r.substr(0, 200) + "..." : r;
+}
+
+std::string markdown_report(const AuditReport& rep) {
+  std::string md = fmt::format("# lepp audit: {}\n\n", rep.engine);
+  md += fmt::format("Method {}, theta {}; {} runs on {} inputs (seed {}); {:.1f} s, of which the engine {:.1f} s.\n\n",
+                    to_string(rep.method), thetas_text(rep.thetas), rep.cases, rep.inputs, rep.seed, rep.seconds,
+                    rep.engine_seconds);
+  md += "| # | check | paper | runs | held | failed | verdict | smallest counterexample |\n";
+  md += "|---|---|---|---:|---:|---:|---|---|\n";
+  for (std::size_t i = 0; i < kRows; ++i) {
+    const RowSummary& r = rep.rows[i];
+    std::string failed = std::to_string(r.failed);
+    if (r.findings) failed += fmt::format(" (+{} findings)", r.findings);
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", i + 1, row_key(r.row), md_cell(row_passage(r.row)),
+                      r.run, r.held, failed, verdict_of(r), smallest_cell(r));
+  }
+  md += "\nRuns a row did not apply to: ";
+  for (std::size_t i = 0; i < kRows; ++i) {
+    const RowSummary& r = rep.rows[i];
+    md += fmt::format("{}{} {} n/a, {} not checked", i ? "; " : "", row_key(r.row), r.not_applicable, r.not_checked);
+  }
+  md += ".\n\nHow the runs ended:";
+  for (int s = 0; s < 6; ++s)
+    if (rep.status_counts[s]) md += fmt::format(" {} {},", to_string(static_cast<RunStatus>(s)), rep.status_counts[s]);
+  if (md.back() == ',') md.pop_back();
+  md += ".\n";
+  if (!rep.ratios.empty()) {
+    md += "\nPoints added, ours / theirs on the same input and theta (runs both finished):\n\n";
+    md += "| against | runs | median | min | max | total |\n|---|---:|---:|---:|---:|---:|\n";
+    for (const PointsRatio& p : rep.ratios)
+      md += fmt::format("| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", p.against, p.cases, p.median, p.min, p.max, p.total);
+  }
+  bool any = false;
+  for (const RowSummary& r : rep.rows)
+    for (const Counterexample& c : r.counterexamples) {
+      if (!any) md += "\n## Findings (shrunk)\n\n";
+      any = true;
+      md += fmt::format("- **{}** theta {}: {} ({} vertices, {} segments, {} holes; {} shrink steps in {} runs; from {})\n",
+                        row_key(c.row), theta_text(c.theta), md_cell(c.detail), c.vertices, c.segments, c.holes,
+                        c.shrink_steps, c.shrink_runs, c.input);
+      md += fmt::format("  files: `{}/`", c.dir);
+      if (!c.reproduce.empty()) md += fmt::format("; reproduce: `{}`", c.reproduce);
+      md += "\n";
+    }
+  if (!rep.skipped_inputs.empty()) {
+    md += fmt::format("\n{} inputs skipped (unreadable or invalid)", rep.skipped_inputs.size());
+    md += rep.skipped_inputs.size() <= 5 ? ":\n" : ", the first 5:\n";
+    for (std::size_t i = 0; i < rep.skipped_inputs.size() && i < 5; ++i) md += "- " + md_cell(rep.skipped_inputs[i]) + "\n";
+  }
+  md += fmt::format("\nVerdict: {}.\n", rep.holds() ? "every row holds" : "some rows FAILED");
+  return md;
+}
+
+nlohmann::json json_report(const AuditReport& rep) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const RowSummary& r : rep.rows) {
+    nlohmann::json cx = nlohmann::json::array();
+    for (const Counterexample& c : r.counterexamples)
+      cx.push_back({{"dir", c.dir},
+                    {"input", c.input},
+                    {"theta", c.theta},
+                    {"vertices", c.vertices},
+                    {"segments", c.segments},
+                    {"holes", c.holes},
+                    {"shrink_steps", c.shrink_steps},
+                    {"shrink_runs", c.shrink_runs},
+                    {"detail", c.detail},
+                    {"reproduce", c.reproduce}});
+    rows.push_back({{"check", row_key(r.row)},
+                    {"statement", row_statement(r.row)},
+                    {"paper", row_passage(r.row)},
+                    {"runs", r.run},
+                    {"held", r.held},
+                    {"failed", r.failed},
+                    {"findings", r.findings},
+                    {"not_applicable", r.not_applicable},
+                    {"not_checked", r.not_checked},
+                    {"holds", r.holds()},
+                    {"first", r.first_detail},
+                    {"counterexamples", cx}});
+  }
+  nlohmann::json ratios = nlohmann::json::array();
+  for (const PointsRatio& p : rep.ratios)
+    ratios.push_back({{"against", p.against}, {"runs", p.cases}, {"median", p.median}, {"min", p.min}, {"max", p.max}, {"total", p.total}});
+  nlohmann::json statuses = nlohmann::json::object();
+  for (int s = 0; s < 6; ++s) statuses[to_string(static_cast<RunStatus>(s))] = rep.status_counts[s];
+  return {{"engine", rep.engine},
+          {"method", to_string(rep.method)},
+          {"thetas", rep.thetas},
+          {"seed", rep.seed},
+          {"inputs", rep.inputs},
+          {"runs", rep.cases},
+          {"holds", rep.holds()},
+          {"rows", rows},
+          {"points_ratio", ratios},
+          {"run_status", statuses},
+          {"skipped_inputs", rep.skipped_inputs},
+          {"seconds", rep.seconds},
+          {"engine_seconds", rep.engine_seconds},
+          {"comparison_seconds", rep.comparison_seconds},
+          {"shrink_seconds", rep.shrink_seconds},
+          {"overhead_per_run_ms", rep.overhead_per_case_ms},
+          {"out_dir", rep.out_dir}};
+}
+
+std::string junit_report(const AuditReport& rep) {
+  std::size_t failures = 0;
+  for (const RowSummary& r : rep.rows) failures += r.failed > 0;
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x += fmt::format("<testsuites name=\"lepp audit\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", kRows, failures, rep.seconds);
+  x += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n",
+                   xml_escape(fmt::format("lepp audit {} {} theta {}", rep.engine, to_string(rep.method), thetas_text(rep.thetas))),
+                   kRows, failures, rep.seconds);
+  for (const RowSummary& r : rep.rows) {
+    x += fmt::format("    <testcase classname=\"lepp.audit.{}\" name=\"{}\">\n", xml_escape(rep.engine), row_key(r.row));
+    if (r.failed > 0) {
+      std::string body = fmt::format("{} of {} runs failed. {}\nPaper: {}\n", r.failed, r.run, r.first_detail, row_passage(r.row));
+      for (const Counterexample& c : r.counterexamples)
+        body += fmt::format("shrunk: {} ({} vertices): {}\n{}\n", c.dir, c.vertices, c.detail, c.reproduce);
+      x += fmt::format("      <failure message=\"{}\">{}</failure>\n", xml_escape(row_statement(r.row)), xml_escape(body));
+    } else if (r.run == 0) {
+      x += "      <skipped message=\"no run this check applied to\"/>\n";
+    }
+    x += fmt::format("      <system-out>{}</system-out>\n",
+                     xml_escape(fmt::format("runs {}, held {}, failed {}, findings {}, n/a {}, not checked {}", r.run, r.held,
+                                            r.failed, r.findings, r.not_applicable, r.not_checked)));
+    x += "    </testcase>\n";
+  }
+  x += "  </testsuite>\n</testsuites>\n";
+  return x;
+}
+
+}  // namespace lepp::audit
