@@ -15,6 +15,7 @@
 
 #include "lepp/audit/subprocess.h"
 #include "lepp/io.h"
+#include "lepp/trace_io.h"
 
 namespace fs = std::filesystem;
 
@@ -131,31 +132,6 @@ std::string expand_command_template(const std::string& t, const std::string& in,
   return r;
 }
 
-std::vector<Point> read_trace_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open trace");
-  std::vector<Point> points;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const char* s = line.c_str();
-    char* end = nullptr;
-    errno = 0;
-    double x = std::strtod(s, &end);
-    if (end == s) throw InputError(path, number, "expected `x y`");
-    const char* s2 = end;
-    double y = std::strtod(s2, &end);
-    if (end == s2) throw InputError(path, number, "expected `x y`");
-    if (!std::isfinite(x) || !std::isfinite(y)) throw InputError(path, number, "coordinate not finite");
-    points.push_back({x, y});
-  }
-  return points;
-}
-
 EngineRun run_command(const std::string& shell_command, const std::string& out, const EngineRequest& req) {
   EngineRun run;
   SubprocessLimits limits;
@@ -201,7 +177,7 @@ EngineRun run_command(const std::string& shell_command, const std::string& out, 
     for (const char* ext : {".node", ".ele", ".poly", ".trace"})
       if (size_or_zero(out + ext) > kMaxOutputBytes) throw InputError(out + ext, 0, "larger than 1 GiB: not read");
     run.mesh = read_mesh(out);
-    if (fs::exists(out + ".trace")) run.trace = read_trace_file(out + ".trace");
+    if (fs::exists(out + ".trace")) run.trace = read_trace(out + ".trace");
   } catch (const std::exception& e) {
     run.status = nonzero ? RunStatus::ExitCode : RunStatus::UnreadableOutput;
     run.detail = nonzero ? run.detail + "; output unreadable: " + e.what() : e.what();

@@ -149,19 +149,4 @@ TEST(Subprocess, MemoryCapApplies) {
   EXPECT_EQ(r.exit_code, 9);
 }
 
-TEST(Trace, ReadsPointsAndRejectsGarbage) {
-  Scratch s;
-  std::ofstream(s.dir / "t.trace") << "# comment\n1 2 extra fields\n\n0.5 -3e2\n";
-  auto pts = read_trace_file((s.dir / "t.trace").string());
-  ASSERT_EQ(pts.size(), 2u);
-  EXPECT_EQ(pts[1].y, -300);
-  std::ofstream(s.dir / "u.trace") << "1 2\nnot a point\n";
-  try {
-    read_trace_file((s.dir / "u.trace").string());
-    FAIL() << "garbage trace read";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.line(), 2);
-  }
-}
-
 }  // namespace

@@ -42,8 +42,4 @@ EngineRun run_command(const std::string& shell_command, const std::string& out, 
 // theta as the command sees it: shortest form that reads back the same ("30", "22.5").
 std::string theta_text(double theta);
 
-// Reads PREFIX.trace (docs/AUDIT.md): `#` comments, one `x y` per line, further
-// fields ignored. Throws lepp::InputError naming the file and line.
-std::vector<Point> read_trace_file(const std::string& path);
-
 }  // namespace lepp::audit
