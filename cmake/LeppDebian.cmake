@@ -48,7 +48,8 @@ set(CPACK_COMPONENT_DEV_DESCRIPTION
 Static libraries, headers and the CMake package (find_package(lepp)) of lepp:
 lepp::core (formats, validation), lepp::certify (the exact certifier),
 lepp::reference and lepp::impl (the two Lepp engines), lepp::gen (RapidCheck
-PSLG generators) and lepp::version. Everything is GPL-3.0-or-later.")
+PSLG generators), lepp::render (SVG), lepp::version and the other exported
+targets. Everything is GPL-3.0-or-later.")
 
 # Debian wants the licence at /usr/share/doc/PACKAGE/copyright.
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/lepp RENAME copyright COMPONENT runtime)
