@@ -141,6 +141,16 @@ void expect_caught(const AuditRun& r, const std::string& bug, const std::string&
     EXPECT_LE(after.vertices, before.vertices);
     EXPECT_LE(after.segments, before.segments);
     EXPECT_LE(after.holes, before.holes);
+    // The saved command reproduces the failure on the shrunk input, in the same row.
+    ASSERT_EQ(reproduce.rfind("lepp audit ", 0), 0u) << reproduce;
+    const fs::path again = dir / "reproduced";
+    const std::string cmd = kLepp + reproduce.substr(4) + " --compare none --json --out " + again.string() + " > " +
+                            (dir / "reproduced.json").string() + " 2> " + (dir / "reproduced.stderr").string();
+    const int raw = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 1) << "reproduce exit " << raw << ": " << cmd;
+    const json rerun = json::parse(slurp(dir / "reproduced.json"), nullptr, false);
+    ASSERT_FALSE(rerun.is_discarded()) << cmd << "\n" << slurp(dir / "reproduced.stderr");
+    EXPECT_GE(row(rerun, row_key).at("failed").get<std::size_t>(), 1u) << "not reproduced: " << cmd;
     std::cout << "[shrunk --bug " << bug << " / " << row_key << "] " << fs::path(origin).filename().string() << " theta "
               << cx.at("theta") << ": " << before.vertices << " vertices, " << before.segments << " segments -> "
               << after.vertices << " vertices, " << after.segments << " segments (" << cx.at("shrink_steps")
@@ -181,6 +191,8 @@ TEST(AuditClean, LeppEnginesThroughCmd) {
 struct BugCase {
   std::string bug, row, detail, args;
 };
+
+void PrintTo(const BugCase& c, std::ostream* os) { *os << "--bug " << c.bug << " -> " << c.row; }
 
 class AuditCatches : public ::testing::TestWithParam<BugCase> {};
 
