@@ -117,6 +117,8 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
       rep.engine_seconds += run.seconds > 0 ? run.seconds : since(t0);
       rep.status_counts[static_cast<int>(run.status)]++;
       CaseResult result = check_run(input.pslg, req, run, opt.checks);
+      rep.exempt_triangles += result.exempt_triangles;
+      rep.runs_with_exempt += result.exempt_triangles > 0;
       ++done;
       ++rep.cases;
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lepp/io.h"
+#include "lepp/render.h"
 
 namespace fs = std::filesystem;
 
@@ -119,7 +120,37 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
   const Mesh* mesh = run.status == RunStatus::Ok || !run.mesh.triangles.empty() ? &run.mesh : nullptr;
   std::string title = fmt::format("{} {} theta {}: {} {}", text.engine, to_string(text.method), text.theta, row_key(row),
                                   result.detail.substr(0, 160));
-  write_text(d / "finding.svg", finding_svg(input, mesh, result, title));
+  // The mesh with lepp::render (the whole, and a window around the violation);
+  // without a mesh, or if it cannot draw it, the input alone.
+  bool drawn = false;
+  if (mesh && !mesh->triangles.empty()) {
+    try {
+      render::RenderOptions ro;
+      ro.color = render::ColorBy::Angle;
+      ro.highlight_bad = row == Row::MinAngle;
+      ro.min_angle_deg = text.theta;
+      ro.title = title;
+      render::Highlight h;
+      h.label = row_key(row);
+      for (const certify::Violation& v : result.violations) {
+        for (int t : v.triangles)
+          if (t >= 0 && static_cast<std::size_t>(t) < mesh->triangles.size()) h.triangles.push_back(t);
+        for (const auto& e : v.edges)
+          if (e[0] >= 0 && e[1] >= 0 && static_cast<std::size_t>(std::max(e[0], e[1])) < mesh->vertices.size()) h.edges.push_back(e);
+        for (const Point& p : v.points) h.points.push_back(p);
+      }
+      ro.highlights.push_back(h);
+      write_text(d / "finding.svg", render::render_svg(*mesh, ro));
+      drawn = true;
+      if (!h.triangles.empty() || !h.points.empty()) {
+        ro.window = render::window_around(*mesh, h.triangles, h.points);
+        write_text(d / "finding-zoom.svg", render::render_svg(*mesh, ro));
+      }
+    } catch (const std::exception&) {
+      // a mesh the renderer refuses (ids out of range): the plain drawing below
+    }
+  }
+  if (!drawn) write_text(d / "finding.svg", finding_svg(input, mesh, result, title));
   if (!text.reproduce.empty()) write_text(d / "reproduce.sh", "#!/bin/sh\n" + text.reproduce + "\n");
   std::string md = fmt::format(
       "# {}: {}\n\n- engine: {}\n- method: {}, theta: {}\n- statement: {}\n- paper: {}\n- verdict: {}\n- run: {}{}\n"

@@ -68,7 +68,8 @@ std::string markdown_report(const AuditReport& rep) {
     const RowSummary& r = rep.rows[i];
     md += fmt::format("{}{} {} n/a, {} not checked", i ? "; " : "", row_key(r.row), r.not_applicable, r.not_checked);
   }
-  md += ".\n\nHow the runs ended:";
+  md += fmt::format(".\n\nSmall-input-angle exemptions: {} triangles below theta in {} runs exempt by the rule (docs/CERTIFIER.md), not counted as violations.\n", rep.exempt_triangles, rep.runs_with_exempt);
+  md += "\nHow the runs ended:";
   for (int s = 0; s < 6; ++s)
     if (rep.status_counts[s]) md += fmt::format(" {} {},", to_string(static_cast<RunStatus>(s)), rep.status_counts[s]);
   if (md.back() == ',') md.pop_back();
@@ -143,6 +144,8 @@ nlohmann::json json_report(const AuditReport& rep) {
           {"rows", rows},
           {"points_ratio", ratios},
           {"run_status", statuses},
+          {"exempt_triangles", rep.exempt_triangles},
+          {"runs_with_exempt_triangles", rep.runs_with_exempt},
           {"skipped_inputs", rep.skipped_inputs},
           {"seconds", rep.seconds},
           {"engine_seconds", rep.engine_seconds},

@@ -86,6 +86,7 @@ struct AuditReport {
   std::vector<PointsRatio> ratios;
   std::vector<std::string> skipped_inputs;
   std::size_t status_counts[6] = {};          // by RunStatus
+  std::size_t exempt_triangles = 0, runs_with_exempt = 0;  // the small-input-angle rule at work
   double seconds = 0;                          // whole audit
   double engine_seconds = 0;                   // the engine's own time (first runs, not shrinking)
   double comparison_seconds = 0, shrink_seconds = 0;

@@ -47,6 +47,7 @@ struct CheckOptions {
 struct CaseResult {
   std::array<RowResult, kRows> rows;
   std::int64_t steiner_points = -1;  // points added (Ok runs)
+  std::size_t exempt_triangles = 0;  // below theta but exempt by the small-input-angle rule
   RowResult& operator[](Row r) { return rows[static_cast<std::size_t>(r)]; }
   const RowResult& operator[](Row r) const { return rows[static_cast<std::size_t>(r)]; }
 };
@@ -54,9 +55,6 @@ struct CaseResult {
 // The band where the paper claims termination: centroid theta <= 30 (Remark 15),
 // midpoint theta <= alpha_limit, about 22 degrees (Theorem 9).
 bool termination_claimed(Method method, double theta);
-
-// The smallest input angle below which the angle row does not apply (no exemption rule yet).
-constexpr double kSmallInputAngleDeg = 60;
 
 // Decides every row for one run.
 CaseResult check_run(const Pslg& validated, const EngineRequest& request, const EngineRun& run, const CheckOptions& options);

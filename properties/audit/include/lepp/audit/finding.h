@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One finding on disk, self-contained: DIR/input.poly (the shrunk input),
 // DIR/out.* (what the engine wrote, or its mesh and trace for an in-process
-// engine), DIR/finding.svg (the mesh with the violation marked in red),
+// engine), DIR/finding.svg (lepp::render's drawing of the mesh with the
+// violation marked in red; DIR/finding-zoom.svg, the window around it),
 // DIR/finding.md (the row, its paper passage, the verdict line) and
 // DIR/reproduce.sh (one command line that reproduces it).
 #pragma once
@@ -21,8 +22,8 @@ struct FindingText {
 void save_finding(const std::string& dir, Row row, const Pslg& input, const EngineRun& run, const RowResult& result,
                   const FindingText& text);
 
-// The SVG: triangles light, constrained edges bold, the violation's triangles,
-// edges and vertices red. Without a mesh, the input alone.
+// The plain SVG used when there is no mesh to render (a crash, unreadable output)
+// or the renderer refuses it: the input's segments, and the violation's marks in red.
 std::string finding_svg(const Pslg& input, const Mesh* mesh, const RowResult& result, const std::string& title);
 
 }  // namespace lepp::audit
