@@ -110,7 +110,9 @@ Sizes sizes_of(const std::string& path) {
 // The bug is caught by `row_key`, the first detail names `detail` (when given),
 // and each saved counterexample is shrunk from the file it was found on,
 // saved as input.poly with its reproduce command.
-void expect_caught(const AuditRun& r, const std::string& bug, const std::string& row_key, const std::string& detail) {
+// unshrunk: for generated inputs, the report of the same audit with --no-shrink.
+void expect_caught(const AuditRun& r, const std::string& bug, const std::string& row_key, const std::string& detail,
+                   const json* unshrunk = nullptr) {
   ASSERT_FALSE(r.report.is_discarded()) << "no JSON report; stderr:\n" << r.err;
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_FALSE(r.report.value("holds", true));
@@ -135,8 +137,14 @@ void expect_caught(const AuditRun& r, const std::string& bug, const std::string&
     EXPECT_EQ(after.vertices, cx.at("vertices").get<std::size_t>());
     EXPECT_EQ(after.segments, cx.at("segments").get<std::size_t>());
     const std::string origin = cx.at("input");
-    const std::string origin_path = fs::exists(origin) ? origin : (fs::path(kInputs) / fs::path(origin).filename()).string();
-    ASSERT_TRUE(fs::exists(origin_path)) << "counterexample origin is not one of the input files: " << origin;
+    std::string origin_path = fs::exists(origin) ? origin : "";
+    if (unshrunk) {
+      // A generated input: the same audit without shrinking saved it as found.
+      for (const json& u : row(*unshrunk, row_key).at("counterexamples"))
+        if (u.at("input") == origin && u.at("theta") == cx.at("theta"))
+          origin_path = (fs::path(u.at("dir").get<std::string>()) / "input.poly").string();
+    }
+    ASSERT_TRUE(fs::exists(origin_path)) << "the input the counterexample was found on is not known: " << origin;
     const Sizes before = sizes_of(origin_path);
     EXPECT_LE(after.vertices, before.vertices);
     EXPECT_LE(after.segments, before.segments);
@@ -214,6 +222,33 @@ INSTANTIATE_TEST_SUITE_P(
                       BugCase{"triangle-centroid", "conformance", "", "--theta 30 --cases 5"},
                       BugCase{"no-remark10", "conformance", "", "--theta 20,25,30 --cases 12"},
                       BugCase{"shortest-edge", "conformance", "", "--theta 30 --cases 5"}),
+    [](const ::testing::TestParamInfo<BugCase>& info) {
+      std::string name = info.param.bug;
+      for (char& ch : name)
+        if (ch == '-') ch = '_';
+      return name;
+    });
+
+// The same bugs on RapidCheck's generated inputs: shrinking goes through the
+// generators' shrink trees, then the greedy shrinker. The input as found comes
+// from the same audit run with --no-shrink (same seed, same first failure).
+class AuditCatchesOnGenerated : public ::testing::TestWithParam<BugCase> {};
+
+TEST_P(AuditCatchesOnGenerated, BugInItsRowShrunk) {
+  const BugCase& c = GetParam();
+  const std::string args = " --sources gen --seed 3 --method centroid --max-findings 1 " + c.args;
+  const AuditRun found = audit("gen-unshrunk-" + c.bug, mesher("--bug " + c.bug), args + " --no-shrink");
+  ASSERT_FALSE(found.report.is_discarded()) << found.err;
+  const AuditRun r = audit("gen-bug-" + c.bug, mesher("--bug " + c.bug), args);
+  expect_caught(r, c.bug, c.row, c.detail, &found.report);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SeededBugs, AuditCatchesOnGenerated,
+    ::testing::Values(BugCase{"non-delaunay", "certificate", "delaunay", "--theta 25,30 --cases 24"},
+                      BugCase{"skinny", "min-angle", "", "--theta 25,30 --cases 24"},
+                      BugCase{"triangle-centroid", "conformance", "", "--theta 25,30 --cases 24"},
+                      BugCase{"no-remark10", "conformance", "", "--theta 25,30 --cases 24"}),
     [](const ::testing::TestParamInfo<BugCase>& info) {
       std::string name = info.param.bug;
       for (char& ch : name)
