@@ -237,6 +237,40 @@ TEST(Conformance, RejectsAPointWhenNoTriangleIsBad) {
   EXPECT_LT(r.failure->nearest_distance, 0);
 }
 
+// ---- the angle tolerance and the size bound ----
+
+// Refined at 30, checked at 29.8: the triangles between 29.8 and 30 degrees
+// the engine processed are bad only within an angle tolerance of 0.2.
+TEST(Conformance, AngleToleranceDecidesTrianglesNearTheta) {
+  Pslg p = paper("rect162");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
+  ConformanceOptions o = options(Method::Centroid, 29.8);
+  o.angle_tolerance_deg = 0;
+  ConformanceReport strict = check_conformance(p, points_of(r), o);
+  EXPECT_FALSE(strict.conforms);
+  o.angle_tolerance_deg = 0.2;
+  ConformanceReport tolerant = check_conformance(p, points_of(r), o);
+  EXPECT_TRUE(tolerant.conforms) << describe(tolerant);
+}
+
+// With a size bound, big good triangles are bad too: the trace conforms only
+// when the check knows the bound.
+TEST(Conformance, SizeBoundMakesBigTrianglesBad) {
+  Pslg p = paper("A");
+  RefineOptions ro;
+  ro.min_angle_deg = 25;
+  ro.max_area = 0.001;
+  ro.trace = true;
+  RefineResult r = fast::refine(p, ro);
+  ASSERT_GT(r.trace.size(), run(p, true, Method::Centroid, QueueOrder::Fifo, 25).trace.size());
+  ConformanceOptions o = options(Method::Centroid, 25);
+  ConformanceReport without = check_conformance(p, points_of(r), o);
+  EXPECT_FALSE(without.conforms);
+  o.max_area = 0.001;
+  ConformanceReport with = check_conformance(p, points_of(r), o);
+  EXPECT_TRUE(with.conforms) << describe(with);
+}
+
 // ---- seeded bugs, one step each ----
 
 // The mesh just before step k of a conforming trace (ids as the engines number them).
