@@ -38,8 +38,12 @@ output exactly. `lepp paper` needs a source checkout (Triangle, matplotlib).")
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME lepp-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 set(_lepp_dev_depends "libcgal-dev (>= 5.5), libgmp-dev, libmpfr-dev, libboost-dev, libfmt-dev")
+# One -dev package per find_dependency() in cmake/leppConfig.cmake.in (40-package.sh checks it).
 if(LEPP_EXPORT_GEN)  # lepp::gen (RapidCheck generators) is in the package
   string(APPEND _lepp_dev_depends ", librapidcheck-dev")
+endif()
+if(TARGET lepp_audit)  # lepp::audit's JSON reports
+  string(APPEND _lepp_dev_depends ", nlohmann-json3-dev")
 endif()
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "${_lepp_dev_depends}")
 set(CPACK_DEBIAN_DEV_PACKAGE_RECOMMENDS "cmake (>= 3.20), g++")

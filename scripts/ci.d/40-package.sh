@@ -56,6 +56,19 @@ for deb in "${runtime[0]}" "${dev[0]}"; do
 done
 [ $missing -eq 0 ]
 
+# Each find_dependency() of the installed leppConfig.cmake is a -dev package lepp-dev declares
+# (a consumer's find_package(lepp) fails without it): the owner of NAMEConfig.cmake here.
+dev_depends=$(dpkg-deb -f "${dev[0]}" Depends)
+dpkg-deb --fsys-tarfile "${dev[0]}" | tar -xO --wildcards '*/cmake/lepp/leppConfig.cmake' > "$work/leppConfig.cmake"
+for name in $(sed -n 's/^ *find_dependency(\([A-Za-z0-9_]*\).*/\1/p' "$work/leppConfig.cmake"); do
+  owner=$(dpkg -S "*/${name}Config.cmake" "*/${name}-config.cmake" 2>/dev/null | head -n1 | cut -d: -f1 || true)
+  if [ -z "$owner" ] || ! echo ", $dev_depends" | grep -q ", $owner\b"; then
+    echo "40-package: leppConfig.cmake calls find_dependency($name) (package ${owner:-unknown}), which lepp-dev does not declare" >&2
+    missing=1
+  fi
+done
+[ $missing -eq 0 ]
+
 # 3. The docs agree with the packages: each declared dependency is in docs/DEPENDENCIES.md,
 # CHANGELOG.md has a section for this version, the packaged copyright is LICENSE.
 for deb in "${runtime[0]}" "${dev[0]}"; do
