@@ -41,7 +41,7 @@ struct AuditArgs {
   std::size_t memory = 0;
   double angle_tolerance = 1e-3, point_tolerance = 8;
   std::string out = "audit-out";
-  std::string junit;
+  std::string junit, json_file;
   bool json = false, no_shrink = false;
   std::size_t max_findings = 3;
   double shrink_seconds = 60;
@@ -126,6 +126,14 @@ int run_audit_command(const AuditArgs& a) {
       std::printf("%s\n", audit::json_report(report).dump(2).c_str());
     else
       std::printf("%s", audit::markdown_report(report).c_str());
+    if (!a.json_file.empty()) {
+      std::ofstream out(a.json_file);
+      out << audit::json_report(report).dump(2) << "\n";
+      if (!out) {
+        std::fprintf(stderr, "lepp audit: cannot write %s\n", a.json_file.c_str());
+        return 2;
+      }
+    }
     if (!a.junit.empty()) {
       std::ofstream out(a.junit);
       out << audit::junit_report(report);
@@ -169,6 +177,7 @@ void add_audit_command(CLI::App& app, int& status) {
   cmd->add_option("--out", a->out, "Directory of the findings (ROW-N/: input.poly, out.*, finding.svg, reproduce.sh)")->default_val("audit-out");
   cmd->add_option("--junit", a->junit, "Also write the rows as JUnit XML to this file");
   cmd->add_flag("--json", a->json, "Print the report as JSON instead of markdown");
+  cmd->add_option("--json-file", a->json_file, "Also write the JSON report to this file");
   cmd->add_flag("--no-shrink", a->no_shrink, "Save failures as found, without shrinking");
   cmd->add_option("--max-findings", a->max_findings, "Failures shrunk and saved per row (the rest are counted)")->default_val(3);
   cmd->add_option("--shrink-seconds", a->shrink_seconds, "Time budget of one shrink")->default_val(60);
