@@ -13,7 +13,8 @@
 # directory makes the next build re-run cmake. --open / --fixed force the place;
 # --note adds words to the name. The target comes from --target, else from a
 # path component or file-name prefix naming one (out/fuzz/fuzz_refine/...,
-# fuzz_refine-loop-...bin).
+# fuzz_refine-loop-...bin). LEPP_BUILD picks the build, LEPP_REGRESSIONS the
+# destination (default corpus/regressions).
 set -euo pipefail
 usage() { echo "usage: fuzz/promote.sh [--target T] [--open | --fixed] [--note WORDS] FILE" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -87,7 +88,7 @@ ext=bin
 [[ $base == *.* ]] && ext=${base##*.}
 [[ $ext == txt || $ext == md ]] && { echo "promote.sh: $file looks like a note, not an input" >&2; exit 2; }
 
-dir=$root/corpus/regressions/$target
+dir=${LEPP_REGRESSIONS:-$root/corpus/regressions}/$target
 [[ $place == open ]] && dir=$dir/open
 mkdir -p "$dir"
 dest=$dir/$cls$what-$sha.$ext
