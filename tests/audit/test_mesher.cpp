@@ -253,9 +253,11 @@ void Mesher::mark_domain() {
   }
 }
 
-// Small input angles: a skinny triangle whose shortest edge joins two different
-// segments meeting at a vertex v (not on that edge) at an angle below theta cannot be
-// fixed by any insertion; it is left alone (Lepp refinement would cascade toward v).
+// Small input angles: a skinny triangle inside the wedge of two segments meeting at
+// a vertex v at an angle below theta, its shortest edge joining the two segments,
+// cannot be fixed by any insertion; it is left alone (Lepp refinement would cascade
+// toward v). Unlike lepp's rule (docs/ALGORITHM.md section 8) the triangle must lie
+// on v's side of that edge: one beyond the wedge's mouth is refined like any other.
 bool Mesher::skipped(Face f) const {
   int e = edges_sorted(f)[0];
   Vertex a = f->vertex(Cdt::ccw(e)), b = f->vertex(Cdt::cw(e));
@@ -270,7 +272,13 @@ bool Mesher::skipped(Face f) const {
       else if (x.b == y.b) v = x.b, u = x.a, w = y.a;
       if (v < 0 || v == id(a) || v == id(b)) continue;
       const lepp::Point &pv = pslg_.vertices[v], &pu = pslg_.vertices[u], &pw = pslg_.vertices[w];
-      if (angle_at(P2(pv.x, pv.y), P2(pu.x, pu.y), P2(pw.x, pw.y)) < opt_.theta + 1e-9) return true;
+      if (!(angle_at(P2(pv.x, pv.y), P2(pu.x, pu.y), P2(pw.x, pw.y)) < opt_.theta + 1e-9)) continue;
+      // The triangle must lie in the wedge: its third vertex on the apex's side of ab
+      // (a triangle beyond the wedge's mouth can be improved like any other).
+      const P2& r = f->vertex(e)->point();
+      if (CGAL::orientation(a->point(), b->point(), r) != CGAL::orientation(a->point(), b->point(), P2(pv.x, pv.y)))
+        continue;
+      return true;
     }
   return false;
 }
