@@ -13,8 +13,6 @@
 #include <map>
 #include <set>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "lepp/angle.h"
 #include "lepp/reference_replay.h"
