@@ -141,6 +141,10 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
                             certify::Check::Delaunay});
   decide(Row::MinAngle, {certify::Check::MinAngle});
   decide(Row::Theorem2, {certify::Check::Theorem2});
+  // A program that exited non-zero but left a mesh: its mesh is judged, its status said.
+  if (run.exit_code != 0)
+    for (Row r : {Row::Certificate, Row::MinAngle, Row::Theorem2})
+      if (c[r].verdict == Verdict::Failed) c[r].detail += fmt::format(" (the program exited with status {})", run.exit_code);
 
   if (!run.trace) {
     c[Row::Conformance] = {Verdict::NotChecked, "no trace", {}};

@@ -2,6 +2,8 @@
 // The audit loop: lepp's own engines audit clean on a few generated inputs; a
 // broken in-process engine is caught by the right row and shrunk; the reports
 // are well-formed.
+#include <unistd.h>
+
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -25,7 +27,8 @@ AuditOptions small(const std::string& out) {
   o.inputs.max_size = 20;
   o.inputs.seed = 7;
   o.timeout_seconds = 20;
-  o.out_dir = (fs::temp_directory_path() / out).string();
+  // Per process: other checkouts may run the same tests at the same time.
+  o.out_dir = (fs::temp_directory_path() / (out + "-" + std::to_string(getpid()))).string();
   return o;
 }
 
