@@ -544,21 +544,11 @@ class Certifier {
     if (std::abs(X.x - V.x) > 2 * a.radius || std::abs(X.y - V.y) > 2 * a.radius) return false;  // far: cheap
     return exact::compare_squared_length(V, X, V, pslg_.vertices[static_cast<std::size_t>(a.near_end)]) <= 0;
   }
-  // The closed sector of a: the apex, or within the disk and on an arm or in the closed wedge.
-  bool in_sector(int p, const SmallInputAngle& a) const {
-    if (p == input_to_mesh_[static_cast<std::size_t>(a.apex)]) return true;
-    if (!in_disk(p, a)) return false;
-    if (on_arm(p, a.segment1, a.end1) || on_arm(p, a.segment2, a.end2)) return true;
-    const Point& V = pslg_.vertices[static_cast<std::size_t>(a.apex)];
-    return exact::orient(V, pslg_.vertices[static_cast<std::size_t>(a.end1)], P(p)) >= 0 &&
-           exact::orient(V, P(p), pslg_.vertices[static_cast<std::size_t>(a.end2)]) >= 0;
-  }
-
   // The first small input angle (Report::small_angles order) that exempts triangle t, or -1.
   // Every shortest edge is tried (exact ties kept), so the answer does not depend on the
   // mesh's vertex numbering. Exempt iff, for some angle a and some shortest edge pq:
   //  span: p is on one arm of a and q on the other (the edge crosses the wedge), or
-  //  near: a vertex of t lies in the sector of a and p, q lie in its disk.
+  //  near: p and q lie in the disk of a (within the shorter segment's length of the apex).
   int exempting_angle(std::size_t t) const {
     const Tri& x = T(t);
     std::array<std::array<int, 2>, 3> shortest{};
@@ -580,8 +570,7 @@ class Certifier {
         const bool span = (on_arm(p, a.segment1, a.end1) && on_arm(q, a.segment2, a.end2)) ||
                           (on_arm(p, a.segment2, a.end2) && on_arm(q, a.segment1, a.end1));
         if (span) return static_cast<int>(k);
-        if (in_disk(p, a) && in_disk(q, a) && (in_sector(x[0], a) || in_sector(x[1], a) || in_sector(x[2], a)))
-          return static_cast<int>(k);
+        if (in_disk(p, a) && in_disk(q, a)) return static_cast<int>(k);
       }
     }
     return -1;

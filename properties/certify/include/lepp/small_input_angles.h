@@ -13,8 +13,7 @@ namespace lepp::certify {
 // segment1 to segment2) lies in the domain and measures less than 60 degrees: adjacent
 // segments, or a cluster of them (every segment in between makes a smaller wedge).
 // Its arms are the two segments; its disk is the closed disk around apex whose radius
-// is the length of the shorter segment (apex to `near_end`); its sector is the apex,
-// the arms within the disk, and the closed wedge within the disk.
+// is the length of the shorter segment (apex to `near_end`).
 struct SmallInputAngle {
   int apex = -1;                    // input vertex id
   int segment1 = -1, segment2 = -1;  // input segment ids; segment2 follows segment1 counter-clockwise
