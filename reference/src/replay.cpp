@@ -187,6 +187,7 @@ struct Replay::Impl {
   }
 
   static double distance(const Point& p, const CPoint& q) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
     return std::max(std::abs(CGAL::to_double(FT(p.x) - q.x())), std::abs(CGAL::to_double(FT(p.y) - q.y())));
   }
 
@@ -384,6 +385,7 @@ struct Replay::Impl {
   // of CGAL's perturbed constrained Delaunay mesh of the same points (then
   // the replay follows CGAL's tie rule from here on).
   bool match(const Point& p, ReplayChoice& out) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
     if (match_here(p, out)) return true;
     if (!rules.follow_cocircular_flips) return false;
     if (match_local_flips(p, out)) return true;
@@ -442,6 +444,7 @@ struct Replay::Impl {
   bool perturbed_ = false;  // following CGAL's perturbed tie rule
 
   void insert(const Point& p, const ReplayChoice& choice) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::runtime_error("not a finite point");
     Selection s;
     s.point = p;
     FH f;

@@ -3,6 +3,7 @@
 #include "lepp/audit/conformance.h"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -47,7 +48,9 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     const Point& p = trace[i];
     reference::ReplayChoice choice;
     std::string reason;
-    if (replay.match(p, choice)) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      reason = "not a finite point";
+    } else if (replay.match(p, choice)) {
       try {
         replay.insert(p, choice);
         ++report.steps_checked;
@@ -64,7 +67,11 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     for (const auto& c : all) failure.candidates.push_back(candidate(c));
     if (!all.empty()) failure.nearest_distance = all.front().distance;
     if (reason.empty()) {
-      if (all.empty())
+      bool vertex = false;
+      for (const Point& v : failure.mesh.vertices) vertex = vertex || v == p;
+      if (vertex)
+        reason = "the point is already a vertex of the mesh";
+      else if (all.empty())
         reason = "the mesh has no bad triangle: no point should be inserted";
       else
         reason = fmt::format("not the paper's choice for any bad triangle's Lepp (nearest choice {:.3g} away, tolerance {:.3g})",

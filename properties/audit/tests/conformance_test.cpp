@@ -271,6 +271,24 @@ TEST(Conformance, SizeBoundMakesBigTrianglesBad) {
   EXPECT_TRUE(with.conforms) << describe(with);
 }
 
+TEST(Conformance, RejectsAVertexAgainAndNonFinitePoints) {
+  Pslg p = paper("A");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 25);
+  std::vector<Point> trace = points_of(r);
+  ASSERT_GT(trace.size(), 3u);
+  std::vector<Point> again(trace.begin(), trace.begin() + 3);
+  again.push_back(trace[1]);
+  ConformanceReport twice = check_conformance(p, again, options(Method::Centroid, 25));
+  ASSERT_FALSE(twice.conforms);
+  EXPECT_EQ(twice.failure->step, 3u);
+  EXPECT_NE(twice.failure->reason.find("already a vertex"), std::string::npos) << twice.failure->reason;
+  std::vector<Point> nan(trace.begin(), trace.begin() + 2);
+  nan.push_back({std::nan(""), 0});
+  ConformanceReport n = check_conformance(p, nan, options(Method::Centroid, 25));
+  ASSERT_FALSE(n.conforms);
+  EXPECT_EQ(n.failure->step, 2u);
+}
+
 // ---- seeded bugs, one step each ----
 
 // The mesh just before step k of a conforming trace (ids as the engines number them).

@@ -51,7 +51,7 @@ struct ReplayChoice {
 
 class Replay {
  public:
-  // pslg must be validated (lepp::validate) and outlive the Replay.
+  // pslg must be validated (lepp::validate; std::invalid_argument otherwise); it is copied.
   Replay(const Pslg& pslg, const ReplayRules& rules);
   ~Replay();
   Replay(const Replay&) = delete;

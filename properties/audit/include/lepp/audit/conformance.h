@@ -66,8 +66,9 @@ struct ConformanceReport {
   double seconds = 0;
 };
 
-// validated: the input after lepp::validate (ids as the implementation's
-// output may use them do not matter: only coordinates are compared).
+// validated: the input after lepp::validate (throws std::invalid_argument
+// otherwise). Only the trace's coordinates are compared: how the
+// implementation numbers its vertices does not matter.
 ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
                                     const ConformanceOptions& options);
 
