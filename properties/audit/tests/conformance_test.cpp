@@ -482,6 +482,25 @@ TEST(Conformance, AcceptsEitherEdgeWhenBothSecondLongestAreConstrained) {
   }
 }
 
+// Remark 10 on its boundary: a parallelogram A C B D cut along AB, so the
+// quad's centroid (2, 0) lies on the terminal edge AB, the boundary of the
+// "other" triangle. ABC's second-longest edge BC is constrained, ABD's (AD)
+// is not (the domain goes on below AD). Exactly, the centroid is not inside
+// ABD and the paper takes BC's midpoint; a rounded centroid may land inside.
+// Both are accepted; AD's midpoint is not.
+TEST(Conformance, AcceptsBothRemark10BranchesWhenTheCentroidIsOnTheBoundary) {
+  Pslg p = polygon({{0, 0}, {0, -3}, {3, -2}, {4, 0}, {1, 2}});
+  ConformanceOptions o = options(Method::Centroid, 34);  // ABC and ABD: 33.7 degrees
+  for (Point q : {Point{2, 0}, Point{2.5, 1}}) {
+    ConformanceReport r = check_conformance(p, {q}, o);
+    EXPECT_TRUE(r.conforms) << describe(r);
+  }
+  for (Point q : {Point{1.5, -1}, Point{2, -0.01}}) {
+    ConformanceReport r = check_conformance(p, {q}, o);
+    EXPECT_FALSE(r.conforms) << "accepted (" << q.x << ", " << q.y << ")";
+  }
+}
+
 // A square grid: cocircular squares, right isosceles triangles whose legs tie
 // for second longest, equal hypotenuses everywhere.
 TEST(Conformance, AcceptsTheEnginesTraceOnAGrid) {
