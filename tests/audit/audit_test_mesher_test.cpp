@@ -191,6 +191,8 @@ TEST(AuditClean, LeppEnginesThroughCmd) {
   const std::string lepp = kLepp + " refine {in} -o {out} --min-angle {theta} --method {method} --trace -q";
   expect_clean(audit("lepp-fast-centroid", lepp, kOwnInputs + " --method centroid --theta 20,30 --cases 10"));
   expect_clean(audit("lepp-fast-midpoint", lepp, kOwnInputs + " --method midpoint --theta 20 --cases 5"));
+  expect_clean(audit("lepp-fast-centroid-lifo", lepp + " --order lifo",
+                     kOwnInputs + " --method centroid --theta 25,30 --cases 10"));
   expect_clean(audit("lepp-reference-centroid", lepp + " --engine reference",
                      kOwnInputs + " --method centroid --theta 30 --cases 5"));
 }
