@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -93,6 +94,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   std::map<std::string, std::vector<double>> ratios;
   std::map<std::string, std::pair<double, double>> sums;
   std::size_t finding_number = 0;
+  std::set<std::pair<int, std::string>> saved;
 
   auto request_for = [&](double theta, const std::string& dir) {
     EngineRequest r;
@@ -152,6 +154,8 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
         any_failed = any_failed || r.verdict == Verdict::Failed;
         if (s.first_detail.empty()) s.first_detail = fmt::format("{} at theta {}: {}", input.name, theta, r.detail);
         if (s.counterexamples.size() >= opt.max_findings_per_row) continue;
+        // One saved counterexample per input and row: the next ones come from other inputs.
+        if (!saved.insert({static_cast<int>(row), input.name}).second) continue;
 
         // Shrink through the engine: keep a smaller input when the same row still gives the same verdict.
         const auto ts = Clock::now();
