@@ -3,14 +3,16 @@
 # Regenerates docs/AUDITS.md: `lepp audit` of lepp fast and lepp reference (both
 # methods), Triangle (triangle-wasm) and CGAL's mesher at theta = 20, 25, 30, 33,
 # with the shrunk counterexamples kept in corpus/audits/ENGINE/ROW-N/.
-# usage: scripts/audits.sh [CASES]      (LEPP=path/to/lepp, default build/cli/lepp)
+# usage: scripts/audits.sh [CASES]      (LEPP=path/to/lepp, default build/cli/lepp;
+#        TIMEOUT seconds per run, default 5; SHRINK seconds per shrink, default 30)
 set -uo pipefail
 cd "$(dirname "$0")/.."
 lepp=${LEPP:-build/cli/lepp}
-cases=${1:-${CASES:-120}}
+cases=${1:-${CASES:-80}}
 thetas=20,25,30,33
 seed=1
-timeout=10
+timeout=${TIMEOUT:-5}
+shrink=${SHRINK:-30}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 rm -rf corpus/audits && mkdir -p corpus/audits
 
@@ -29,7 +31,7 @@ for a in "${audits[@]}"; do
   echo "audit: $title" >&2
   start=$(date +%s)
   # shellcheck disable=SC2086
-  "$lepp" audit $opts --theta $thetas --cases "$cases" --seed $seed --timeout $timeout --root . \
+  "$lepp" audit $opts --theta $thetas --cases "$cases" --seed $seed --timeout $timeout --shrink-seconds $shrink --root . \
     --out "corpus/audits/$name" --json-file "$work/$name.json" > "$work/$name.md"
   echo "  exit $? in $(( $(date +%s) - start )) s" >&2
   echo "$title" > "$work/$name.title"

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/conformance.h"
+#include "lepp/gen.h"
 
 namespace lepp::audit {
 namespace {
@@ -46,7 +47,8 @@ const char* row_statement(Row row) {
       return "every smallest angle >= theta, except triangles exempt by the small-input-angle rule (counted apart)";
     case Row::Theorem2: return "terminal triangles of every unconstrained terminal edge have largest angle <= 120 degrees";
     case Row::Termination:
-      return "the run ends (within the timeout) where the paper claims it: centroid theta <= 30, midpoint theta <= 22";
+      return "the run ends (within the timeout) where the paper claims it: centroid theta <= 30, midpoint theta <= 22, "
+             "inputs without angles below 60 degrees";
     case Row::Conformance:
       return "every inserted point is the paper's choice for the Lepp of some bad triangle of the mesh at that moment";
   }
@@ -102,7 +104,13 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   } else {
     std::string what = run.status == RunStatus::TimedOut ? "did not end within the timeout" : "did not converge";
     if (!run.detail.empty()) what += ": " + run.detail;
-    c[Row::Termination] = {termination_claimed(req.method, req.theta) ? Verdict::Failed : Verdict::Finding, what, {}};
+    // The paper's termination results are for inputs without angles below 60 degrees
+    // (lepp::gen::wellShapedPslg's class); a smaller input angle makes it a finding.
+    const double input_angle = gen::min_input_angle_deg(pslg);
+    const bool claimed = termination_claimed(req.method, req.theta) && input_angle >= 60;
+    if (termination_claimed(req.method, req.theta) && !claimed)
+      what += fmt::format(" (input angle {:.3g} degrees < 60: outside the class the paper's termination results cover)", input_angle);
+    c[Row::Termination] = {claimed ? Verdict::Failed : Verdict::Finding, what, {}};
   }
   if (run.status != RunStatus::Ok) {
     // No final mesh to certify. A run that failed outright fails the certificate row (its output does not read).

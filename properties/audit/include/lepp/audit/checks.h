@@ -53,7 +53,8 @@ struct CaseResult {
 };
 
 // The band where the paper claims termination: centroid theta <= 30 (Remark 15),
-// midpoint theta <= alpha_limit, about 22 degrees (Theorem 9).
+// midpoint theta <= alpha_limit, about 22 degrees (Theorem 9). check_run also asks
+// that the input have no angle below 60 degrees (the class those results cover).
 bool termination_claimed(Method method, double theta);
 
 // Decides every row for one run.
