@@ -24,7 +24,8 @@ struct MesherRun {
 };
 
 MesherRun mesh(const std::string& poly, double theta, Method m, const std::string& bug = "") {
-  std::string out = ::testing::TempDir() + "mesher_out";
+  // One output prefix per test: ctest runs the tests of this file in parallel processes.
+  std::string out = ::testing::TempDir() + "mesher_out_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::string cmd = std::string(LEPP_TEST_MESHER) + " " + poly + " " + out + " " + std::to_string(theta) + " " +
                     (m == Method::Centroid ? "centroid" : "midpoint") + (bug.empty() ? "" : " --bug " + bug) +
                     " 2>/dev/null";
