@@ -271,7 +271,7 @@ TEST(Conformance, SizeBoundMakesBigTrianglesBad) {
   EXPECT_TRUE(with.conforms) << describe(with);
 }
 
-TEST(Conformance, RejectsAVertexAgainAndNonFinitePoints) {
+TEST(Conformance, RejectsAVertexAgainAPointOutsideAndNonFinitePoints) {
   Pslg p = paper("A");
   RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 25);
   std::vector<Point> trace = points_of(r);
@@ -282,6 +282,11 @@ TEST(Conformance, RejectsAVertexAgainAndNonFinitePoints) {
   ASSERT_FALSE(twice.conforms);
   EXPECT_EQ(twice.failure->step, 3u);
   EXPECT_NE(twice.failure->reason.find("already a vertex"), std::string::npos) << twice.failure->reason;
+  std::vector<Point> outside(trace.begin(), trace.begin() + 2);
+  outside.push_back({5, 5});  // far outside the letter A
+  ConformanceReport o = check_conformance(p, outside, options(Method::Centroid, 25));
+  ASSERT_FALSE(o.conforms);
+  EXPECT_EQ(o.failure->step, 2u);
   std::vector<Point> nan(trace.begin(), trace.begin() + 2);
   nan.push_back({std::nan(""), 0});
   ConformanceReport n = check_conformance(p, nan, options(Method::Centroid, 25));
