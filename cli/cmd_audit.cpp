@@ -22,6 +22,7 @@
 #include "lepp/audit/report.h"
 #include "lepp/audit/subprocess.h"
 #include "lepp/fast.h"
+#include "lepp/version.h"
 
 namespace lepp::cli {
 namespace {
@@ -122,13 +123,15 @@ int run_audit_command(const AuditArgs& a) {
     if (isatty(STDERR_FILENO)) o.on_progress = print_progress;
 
     audit::AuditReport report = audit::run_audit(engine, o);
+    nlohmann::json j = audit::json_report(report);
+    add_version(j);
     if (a.json)
-      std::printf("%s\n", audit::json_report(report).dump(2).c_str());
+      std::printf("%s\n", j.dump(2).c_str());
     else
       std::printf("%s", audit::markdown_report(report).c_str());
     if (!a.json_file.empty()) {
       std::ofstream out(a.json_file);
-      out << audit::json_report(report).dump(2) << "\n";
+      out << j.dump(2) << "\n";
       if (!out) {
         std::fprintf(stderr, "lepp audit: cannot write %s\n", a.json_file.c_str());
         return 2;

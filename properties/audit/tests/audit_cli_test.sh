@@ -12,7 +12,7 @@ common=(--theta 25 --sources gen --compare none --root "$src" --out "$dir/findin
 "$lepp" audit --cmd "$lepp refine {in} -o {out} --min-angle {theta} --method {method} -q" "${common[@]}" --cases 6 \
   --json --junit "$dir/junit.xml" > "$dir/report.json"; s=$?
 [ $s -eq 0 ] || { cat "$dir/report.json"; fail "lepp refine through --cmd: exit $s"; }
-python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["holds"] and len(r["rows"])==5 and r["runs"]==6, r' \
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["holds"] and len(r["rows"])==5 and r["runs"]==6 and r["lepp_version"], r' \
   "$dir/report.json" || fail "JSON report"
 python3 -c 'import sys,xml.dom.minidom as m; d=m.parse(sys.argv[1]); assert len(d.getElementsByTagName("testcase"))==5' \
   "$dir/junit.xml" || fail "JUnit report"
