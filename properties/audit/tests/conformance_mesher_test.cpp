@@ -7,6 +7,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <cstdlib>
+#include <unistd.h>
 #include <string>
 
 #include "lepp/audit/conformance.h"
@@ -25,7 +26,8 @@ struct MesherRun {
 
 MesherRun mesh(const std::string& poly, double theta, Method m, const std::string& bug = "") {
   // One output prefix per test: ctest runs the tests of this file in parallel processes.
-  std::string out = ::testing::TempDir() + "mesher_out_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::string out = ::testing::TempDir() + "mesher_out_" + std::to_string(getpid()) + "_" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::string cmd = std::string(LEPP_TEST_MESHER) + " " + poly + " " + out + " " + std::to_string(theta) + " " +
                     (m == Method::Centroid ? "centroid" : "midpoint") + (bug.empty() ? "" : " --bug " + bug) +
                     " 2>/dev/null";
@@ -72,7 +74,7 @@ RC_GTEST_PROP(ConformanceOfTestMesher, CleanTracesConformOnGeneratedPslgs, ()) {
   const Pslg p = *gen::anyPslg();
   double theta = *rc::gen::inRange(20, 31);
   Method m = *rc::gen::element(Method::Centroid, Method::Midpoint);
-  std::string poly = ::testing::TempDir() + "generated.poly";
+  std::string poly = ::testing::TempDir() + "generated_" + std::to_string(getpid()) + ".poly";
   write_poly(poly, p);
   MesherRun r = mesh(poly, theta, m);
   ConformanceReport report = check_conformance(r.input, r.trace, options(m, theta));

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "lepp/audit/conformance.h"
 #include "lepp/fast.h"
 #include "lepp/gen.h"
@@ -63,14 +65,14 @@ ConformanceOptions options(Method m, double theta) {
 // ---- the trace format ----
 
 std::string temp_file(const std::string& name, const std::string& text) {
-  std::string path = ::testing::TempDir() + name;
+  std::string path = ::testing::TempDir() + std::to_string(getpid()) + "_" + name;
   std::ofstream(path) << text;
   return path;
 }
 
 TEST(TraceIo, RoundTripsEveryDouble) {
   std::vector<Point> pts{{0.1, -0.2}, {1e-300, 5e-324}, {1.0 / 3.0, 123456789.123456789}, {-0.0, 0}};
-  std::string path = ::testing::TempDir() + "round.trace";
+  std::string path = ::testing::TempDir() + std::to_string(getpid()) + "_round.trace";
   write_trace(path, pts);
   std::vector<Point> back = read_trace(path);
   ASSERT_EQ(back.size(), pts.size());
