@@ -32,10 +32,13 @@ for a in "${audits[@]}"; do
   start=$(date +%s)
   # shellcheck disable=SC2086
   "$lepp" audit $opts --theta $thetas --cases "$cases" --seed $seed --timeout $timeout --shrink-seconds $shrink --root . \
-    --out "corpus/audits/$name" --json-file "$work/$name.json" > "$work/$name.md"
+    --out "corpus/audits/$name" --json-file "corpus/audits/$name.json" > "$work/$name.md"
   echo "  exit $? in $(( $(date +%s) - start )) s" >&2
   echo "$title" > "$work/$name.title"
 done
+
+# Outputs of runs that did not end can be tens of MB: not kept (the reproduce line remakes them).
+find corpus/audits -type f -size +256k ! -name input.poly -print -delete > "$work/dropped.txt"
 
 python3 - "$work" "$cases" "$thetas" "$seed" "$timeout" "${audits[@]}" > docs/AUDITS.md <<'PY'
 import json, sys, os
@@ -48,13 +51,18 @@ print(f"(seed {seed}: the paper's problems, corpus/hostile, then RapidCheck's ge
 print(f"theta = {thetas.replace(',', ', ')} degrees, {cases} runs each, timeout {timeout} s per run. Shrunk")
 print("counterexamples are in `corpus/audits/ENGINE/ROW-N/` (input, output, picture, reproduce line).")
 print("These are findings about programs, ours included: each row says which statement of the paper")
-print("the program's output violates, on how many runs.\n")
+print("the program's output violates, on how many runs. Files above 256 KB (outputs of runs that did")
+print("not end) are not kept: the reproduce line in each finding remakes them. The JSON reports are")
+print("`corpus/audits/ENGINE.json`.\n")
+notes = "scripts/audits-reading.md"
+if os.path.exists(notes):
+    print(open(notes).read())
 print("## Summary\n")
 print("| engine | certificate | min-angle | theorem-2 | termination | conformance | runs | seconds |")
 print("|---|---|---|---|---|---|---:|---:|")
 reports = {}
 for n in names:
-    path = os.path.join(work, n + ".json")
+    path = os.path.join("corpus/audits", n + ".json")
     if not os.path.exists(path):
         print(f"| {titles[n]} | not run | | | | | | |")
         continue
