@@ -70,12 +70,15 @@ std::vector<AuditInput> collect_inputs(const InputSources& src, std::vector<std:
       files.insert(files.end(), f.begin(), f.end());
     }
   } else {
-    if (src.paper) {
-      auto f = poly_files(fs::path(src.source_root) / "corpus" / "paper");
-      files.insert(files.end(), f.begin(), f.end());
-    }
-    if (src.corpus) {
-      auto f = poly_files(fs::path(src.source_root) / "corpus" / "hostile");
+    for (auto [wanted, dir] : {std::pair{src.paper, "paper"}, std::pair{src.corpus, "hostile"}}) {
+      if (!wanted) continue;
+      const fs::path d = fs::path(src.source_root) / "corpus" / dir;
+      std::error_code ec;
+      if (!fs::is_directory(d, ec)) {
+        skipped.push_back(fmt::format("{}: not found (give the source tree with --root)", d.string()));
+        continue;
+      }
+      auto f = poly_files(d);
       files.insert(files.end(), f.begin(), f.end());
     }
   }

@@ -93,7 +93,7 @@ std::string markdown_report(const AuditReport& rep) {
       md += "\n";
     }
   if (!rep.skipped_inputs.empty()) {
-    md += fmt::format("\n{} inputs skipped (unreadable or invalid)", rep.skipped_inputs.size());
+    md += fmt::format("\n{} inputs skipped (missing, unreadable or invalid)", rep.skipped_inputs.size());
     md += rep.skipped_inputs.size() <= 5 ? ":\n" : ", the first 5:\n";
     for (std::size_t i = 0; i < rep.skipped_inputs.size() && i < 5; ++i) md += "- " + md_cell(rep.skipped_inputs[i]) + "\n";
   }
