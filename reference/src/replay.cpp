@@ -28,26 +28,45 @@ FT len2(FH f, int i) {
   return CGAL::squared_distance(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point());
 }
 
-// Indices of the edges of f of maximal length (several on ties).
-std::vector<int> longest_edges(FH f) {
-  FT l[3] = {len2(f, 0), len2(f, 1), len2(f, 2)};
-  FT m = std::max({l[0], l[1], l[2]});
-  std::vector<int> out;
-  for (int i = 0; i < 3; ++i)
-    if (l[i] == m) out.push_back(i);
-  return out;
+// Squared length of edge i of f in doubles: a filter. The coordinates are
+// doubles, so each of dx, dy, dx*dx, dy*dy and the sum is off by at most half
+// an ulp: the result is within a relative 4 DBL_EPSILON of the exact value
+// unless something underflowed or overflowed (checked by the caller).
+double approx_len2(FH f, int i) {
+  const auto& a = f->vertex(Cdt::ccw(i))->point().approx();
+  const auto& b = f->vertex(Cdt::cw(i))->point().approx();
+  if (a.x().inf() != a.x().sup() || a.y().inf() != a.y().sup() || b.x().inf() != b.x().sup() ||
+      b.y().inf() != b.y().sup())
+    return std::numeric_limits<double>::quiet_NaN();  // not a double point: decide exactly
+  double dx = a.x().inf() - b.x().inf(), dy = a.y().inf() - b.y().inf();
+  return dx * dx + dy * dy;
+}
+
+// Compares the lengths of edges i and j of f: filtered, exact when needed.
+CGAL::Comparison_result compare_len(FH f, int i, int j) {
+  double li = approx_len2(f, i), lj = approx_len2(f, j), m = std::max(li, lj);
+  if (std::isfinite(li) && std::isfinite(lj) && m > 1e-280 && std::abs(li - lj) > 16 * DBL_EPSILON * m)
+    return li < lj ? CGAL::SMALLER : CGAL::LARGER;
+  return CGAL::compare(len2(f, i), len2(f, j));
 }
 
 bool is_longest(FH f, int i) {
-  FT l = len2(f, i);
-  return l >= len2(f, Cdt::ccw(i)) && l >= len2(f, Cdt::cw(i));
+  return compare_len(f, i, Cdt::ccw(i)) != CGAL::SMALLER && compare_len(f, i, Cdt::cw(i)) != CGAL::SMALLER;
+}
+
+// Indices of the edges of f of maximal length (several on ties).
+std::vector<int> longest_edges(FH f) {
+  std::vector<int> out;
+  for (int i = 0; i < 3; ++i)
+    if (is_longest(f, i)) out.push_back(i);
+  return out;
 }
 
 // The second-longest edges of f when edge l is its longest: the longer of the
 // other two, both on a tie.
 std::vector<int> second_longest_given(FH f, int l) {
   int j = Cdt::ccw(l), k = Cdt::cw(l);
-  CGAL::Comparison_result r = CGAL::compare(len2(f, j), len2(f, k));
+  CGAL::Comparison_result r = compare_len(f, j, k);
   if (r == CGAL::LARGER) return {j};
   if (r == CGAL::SMALLER) return {k};
   return {j, k};
