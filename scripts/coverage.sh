@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Line and branch coverage of core/, impl/, reference/ and properties/certify/
+# (docs/COVERAGE.md): an instrumented build in its own tree (g++ --coverage -O1),
+# measured under (a) the default ctest and (b) the replay of every fuzz corpus,
+# then the report, with each uncovered branch's reason from tools/coverage/reasons.txt.
+# Opt-in, not part of CI: a full rebuild (about 20 CPU-minutes) plus two test runs.
+#
+#   scripts/coverage.sh [STEP...]    steps: build ctest fuzz report (default: all four)
+# Environment: LEPP_COVERAGE_BUILD (default build-cov), LEPP_COVERAGE_JOBS (default nproc),
+#   LEPP_COVERAGE_CORPORA: extra corpus directories per target to replay, as
+#   TARGET=DIR entries separated by spaces (default: out/fuzz/TARGET/corpus when it exists).
+# Needs gcovr (Debian's, scripts/install-deps.sh).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+build=${LEPP_COVERAGE_BUILD:-build-cov}
+jobs=${LEPP_COVERAGE_JOBS:-$(nproc)}
+out=$build/coverage
+steps=("$@")
+[ ${#steps[@]} -eq 0 ] && steps=(build ctest fuzz report)
+targets=(fuzz_parse fuzz_refine fuzz_differential fuzz_cdt)
+
+# What is measured: the libraries, not their tests, benchmarks or the CLI.
+gcovr_args=(-r "$root" --object-directory "$build" -j "$jobs"
+  --filter 'core/' --filter 'impl/' --filter 'reference/' --filter 'properties/certify/'
+  --exclude '.*/tests/.*' --exclude '.*/bench/.*'
+  --exclude-throw-branches --exclude-unreachable-branches)
+
+zero_counters() { find "$build" -name '*.gcda' -delete; }
+
+for step in "${steps[@]}"; do
+  case "$step" in
+    build)
+      cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=None \
+        "-DCMAKE_CXX_FLAGS=-O1 --coverage -fprofile-update=atomic" \
+        -DCMAKE_EXE_LINKER_FLAGS=--coverage -DCMAKE_SHARED_LINKER_FLAGS=--coverage \
+        -DLEPP_BUILD_BENCH=OFF >&2
+      nice -n 19 cmake --build "$build" -j "$jobs" >&2
+      ;;
+    ctest)
+      mkdir -p "$out"
+      zero_counters
+      start=$(date +%s)
+      # A failing test still counts its coverage; the report says how many failed.
+      set +e
+      nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 > "$out/ctest.log" 2>&1
+      echo $? > "$out/ctest.status"
+      set -e
+      echo $(( $(date +%s) - start )) > "$out/ctest.seconds"
+      tail -3 "$out/ctest.log" >&2
+      gcovr "${gcovr_args[@]}" --json "$out/ctest.json" --txt "$out/ctest.txt" >&2
+      ;;
+    fuzz)
+      mkdir -p "$out"
+      zero_counters
+      : > "$out/fuzz.log"
+      for t in "${targets[@]}"; do
+        dirs=()
+        for d in corpus/fuzz/$t corpus/regressions/$t "out/fuzz/$t/corpus"; do [ -d "$d" ] && dirs+=("$d"); done
+        for entry in ${LEPP_COVERAGE_CORPORA:-}; do [ "${entry%%=*}" = "$t" ] && dirs+=("${entry#*=}"); done
+        [ ${#dirs[@]} -eq 0 ] && continue
+        echo "== $t: ${dirs[*]}" >> "$out/fuzz.log"
+        # Open findings are replayed too (they still report theirs): their paths count.
+        nice -n 19 "$build/fuzz/${t}_replay" "${dirs[@]}" >> "$out/fuzz.log" 2>&1 || echo "($t replay reported findings)" >> "$out/fuzz.log"
+        if [ -d "corpus/regressions/$t/open" ]; then
+          nice -n 19 "$build/fuzz/${t}_replay" --expect-finding "corpus/regressions/$t/open" >> "$out/fuzz.log" 2>&1 || true
+        fi
+      done
+      grep -E '^(==|replayed)' "$out/fuzz.log" >&2 || true
+      gcovr "${gcovr_args[@]}" --json "$out/fuzz.json" --txt "$out/fuzz.txt" >&2
+      ;;
+    report)
+      gcovr -r "$root" --add-tracefile "$out/ctest.json" --add-tracefile "$out/fuzz.json" --json "$out/all.json" >&2
+      python3 tools/coverage/report.py --ctest "$out/ctest.json" --fuzz "$out/fuzz.json" --all "$out/all.json" \
+        --reasons tools/coverage/reasons.txt --ctest-seconds "$(cat "$out/ctest.seconds" 2>/dev/null || echo '?')" \
+        --ctest-log "$out/ctest.log" > docs/COVERAGE.md
+      echo "wrote docs/COVERAGE.md" >&2
+      ;;
+    *) echo "coverage.sh: unknown step '$step' (build ctest fuzz report)" >&2; exit 2 ;;
+  esac
+done
