@@ -290,5 +290,35 @@ TEST(DegenerateFixed, EdgeLengthTiesDecidedByIds) {
   }
 }
 
+// Validation's decisions at their boundaries (the engines' input, ALGORITHM.md 1):
+// a crossing is reported with its real partner even when an earlier segment only
+// touches the crossing one (an orientation exactly zero), and a vertex given three
+// times is merged into its first copy each time.
+TEST(DegenerateValidate, CrossingNamesItsPartnerNotASegmentItOnlyTouches) {
+  Pslg p;
+  p.vertices = {{2, 2}, {5, 5}, {0, 0}, {4, 0}, {2, -2}};
+  p.segments = {{0, 1, 0}, {2, 3, 0}, {4, 0, 0}};  // the third crosses the second and touches the first at (2, 2)
+  std::vector<std::string> warnings;
+  try {
+    validate(p, warnings);
+    FAIL() << "a crossing was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("segments 3 and 2 cross"), std::string::npos) << e.what();
+  }
+}
+
+TEST(DegenerateValidate, ThirdCopyOfAVertexMergesIntoTheFirst) {
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {0, 1}, {1, 0}, {1, 0}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  std::vector<std::string> warnings;
+  const Pslg v = validate(p, warnings);
+  EXPECT_EQ(v.vertices.size(), 3u);
+  std::string all;
+  for (const std::string& w : warnings) all += w + "\n";
+  EXPECT_NE(all.find("vertex 4 duplicates vertex 2"), std::string::npos) << all;
+  EXPECT_NE(all.find("vertex 5 duplicates vertex 2"), std::string::npos) << all;
+}
+
 }  // namespace
 }  // namespace lepp
