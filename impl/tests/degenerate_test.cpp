@@ -290,6 +290,75 @@ TEST(DegenerateFixed, EdgeLengthTiesDecidedByIds) {
   }
 }
 
+// Section 8 needs dot(u, w) > 0: an input angle near 180 degrees has a small sine
+// too, but it is no wedge. Here the bottom side bends by 2 atan(1/4) (about 28
+// degrees) at v = (0, 0), below theta = 30 as an angle, and the segment p-q closes
+// the sliver p v q: the skinny triangle above p-q has its shortest edge p-q joining
+// the two segments that meet at v. It is refined, never listed as unimprovable.
+TEST(DegenerateFixed, AngleNearOneEightyIsNoSmallInputAngle) {
+  Pslg p;
+  p.vertices = {{-4, 1}, {0, 0}, {4, 1}, {4, 40}, {-4, 41}};  // p, v, q, and a slanted top (no cocircular rectangle)
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 4, 1}, {4, 0, 1}, {0, 2, 2}};
+  p.source = "bend of 152 degrees";
+  const Pslg v = validated(p);
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    RefineOptions o;
+    o.method = m;
+    o.min_angle_deg = 30;
+    o.max_steiner = 300;
+    o.trace = true;
+    const RefineResult r = both(v, o);
+    EXPECT_GT(r.steiner_points, 0);
+    for (const UnimprovableTriangle& u : r.unimprovable) EXPECT_NE(u.apex, 1) << to_string(m);
+  }
+}
+
+// Several segment pairs qualify (ALGORITHM.md 8): the thin rhombus p v1 q v2 has
+// both triangles' shortest edge p-q joining segments that meet at small angles at
+// v1 and at v2. The smallest pair of segment ids is reported: (0, 1) at v1, for
+// both triangles, the one at v2 too.
+TEST(DegenerateFixed, SmallestQualifyingSegmentPairIsReported) {
+  Pslg p;
+  p.vertices = {{-1, 0}, {0, 16}, {1, 0}, {0, -16}};  // p, v1, q, v2
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
+  p.source = "thin rhombus";
+  const Pslg v = validated(p);
+  RefineOptions o;
+  o.min_angle_deg = 20;
+  o.trace = true;
+  const RefineResult r = both(v, o);
+  EXPECT_EQ(r.outcome, Outcome::Unimprovable);
+  ASSERT_EQ(r.unimprovable.size(), 2u);
+  for (const UnimprovableTriangle& u : r.unimprovable) {
+    EXPECT_EQ(u.segment1, 0);
+    EXPECT_EQ(u.segment2, 1);
+    EXPECT_EQ(u.apex, 1);
+  }
+}
+
+// The edge floor (ALGORITHM.md 9) at its boundary: the rounded midpoint of
+// A = (1, 0), B = (2^-60, 0) is (0.5, 0), so the half toward B is 2^-60 shorter
+// than the half toward A, and a floor of exactly 0.5 is crossed by that half
+// only. Both sides of the boundary edge (the triangle above it, then below it):
+// the new point's star meets the short half from either direction.
+TEST(DegenerateFixed, EdgeFloorSeesEitherHalfOfASplitBoundaryEdge) {
+  for (double side : {1.0, -1.0}) {
+    Pslg p;
+    p.vertices = {{1, 0}, {std::ldexp(1.0, -60), 0}, {0.5, 0.6 * side}};
+    p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 0, 1}};
+    p.source = "split at the floor";
+    const Pslg v = validated(p);
+    RefineOptions o;
+    o.min_angle_deg = 20;
+    o.max_area = 0.2;  // the triangle (area 0.3) is too big: its longest edge A-B is split first
+    o.edge_floor = 0.5;
+    o.trace = true;
+    const RefineResult r = both(v, o);
+    EXPECT_EQ(r.outcome, Outcome::EdgeFloor) << side;
+    EXPECT_EQ(r.steiner_points, 1) << side;
+  }
+}
+
 // Validation's decisions at their boundaries (the engines' input, ALGORITHM.md 1):
 // a crossing is reported with its real partner even when an earlier segment only
 // touches the crossing one (an orientation exactly zero), and a vertex given three

@@ -184,7 +184,7 @@ def main():
                 if area_of(n) == area:
                     t = [x + y for x, y in zip(t, totals(lines))]
             row += [fmt_pct(t[1], t[0]), fmt_pct(t[3], t[2])]
-            if run == "ctest" and goal:
+            if run == "ctest" and goal and t[0]:
                 met = pct(t[1], t[0]) >= GOAL_LINES and pct(t[3], t[2]) >= GOAL_BRANCHES
         row.append("-" if met is None else ("yes" if met else "**no**"))
         w("| " + " | ".join(row) + " |")

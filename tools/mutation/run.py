@@ -158,6 +158,9 @@ def main():
     ap.add_argument("--no-sync", action="store_true", help="keep the scratch tree as it is")
     ap.add_argument("--fuzz", action="store_true")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--pass", dest="pass_", choices=["both", "quick", "full"], default="both",
+                    help="quick: only each mutant's quick tests (survivors wait as survived-quick); "
+                         "full: the whole ctest for those waiting; both (default): one after the other per mutant")
     a = ap.parse_args()
 
     mutants = parse_catalogue(CATALOGUE)
@@ -204,7 +207,11 @@ def main():
         for m in mutants:
             if only and m["id"] not in only:
                 continue
-            if m["id"] in results["mutants"] and not a.rerun and not only:
+            prev = results["mutants"].get(m["id"], {}).get("status")
+            if a.pass_ == "full":
+                if prev not in ("survived-quick", "survived") or (prev == "survived" and not a.rerun):
+                    continue
+            elif prev is not None and not a.rerun and not only:
                 continue
             path = os.path.join(scratch, m["file"])
             original = open(path, encoding="utf-8").read()
@@ -218,9 +225,10 @@ def main():
                     f.write(original.replace(m["from_text"], m["to_text"]))
                 targets = m.get("targets", "").split()
                 stages = []
-                if targets and m.get("quick"):
+                if targets and m.get("quick") and a.pass_ != "full":
                     stages.append("quick")
-                stages.append("full")
+                if a.pass_ != "quick":
+                    stages.append("full")
                 for stage in stages:
                     build_cmd = ["cmake", "--build", build, "-j", str(a.jobs)] + (["--target"] + targets if stage == "quick" else [])
                     code, out, _ = run(nice(build_cmd), log_path=log_path)
@@ -237,6 +245,8 @@ def main():
                     if code != 0:
                         r = {"status": "killed", "killed_by": failed_tests(out) or [f"ctest exit {code}"], "stage": stage}
                         break
+                if r["status"] == "survived" and a.pass_ == "quick":
+                    r["status"] = "survived-quick"
                 if r["status"] == "survived" and a.fuzz:
                     who = try_fuzz(build, log_path)
                     if who:
@@ -257,7 +267,8 @@ def main():
 
 
 def write_report(mutants, results, path):
-    res = results.get("mutants", {})
+    # A mutant that survived its quick tests and waits for the whole ctest is not run yet.
+    res = {k: v for k, v in results.get("mutants", {}).items() if v["status"] != "survived-quick"}
     run_ = [m for m in mutants if m["id"] in res and res[m["id"]]["status"] != "stillborn"]
     killed = [m for m in run_ if res[m["id"]]["status"] == "killed"]
     fuzz = [m for m in run_ if res[m["id"]]["status"] == "killed-by-fuzz"]
