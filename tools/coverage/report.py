@@ -129,6 +129,7 @@ def main():
     ap.add_argument("--reasons", required=True)
     ap.add_argument("--ctest-seconds", default="?")
     ap.add_argument("--ctest-log", default="")
+    ap.add_argument("--ctest-args", default="", help="the ctest selection, when not the whole default ctest")
     ap.add_argument("--root", default=os.getcwd())
     ap.add_argument("--without", default="", help="gcovr JSON of ctest without the --split tests")
     ap.add_argument("--split", default="", help="the ctest -R regex of the tests left out of --without")
@@ -154,8 +155,8 @@ def main():
     w("and two test runs. Measured: the libraries in core/, impl/, reference/ and")
     w("properties/certify/ (not their tests, benchmarks or the CLI).")
     w("")
-    w("- **ctest**: the default `ctest` (no LEPP_LONG_TESTS)" + (f": {failed}" if failed else "") +
-      f", {a.ctest_seconds} s wall at `-j2` in the instrumented build.")
+    which = f"`ctest {a.ctest_args}` (the default ctest restricted so)" if a.ctest_args.strip() else "the default `ctest` (no LEPP_LONG_TESTS)"
+    w(f"- **ctest**: {which}" + (f": {failed}" if failed else "") + f", {a.ctest_seconds} s wall at `-j2` in the instrumented build.")
     w("- **fuzz**: the replay of every fuzz corpus by the g++ replay drivers (`corpus/fuzz/TARGET`,")
     w("  `corpus/regressions/TARGET` with `open/`, and `out/fuzz/TARGET/corpus` where a campaign grew one).")
     w("- **all**: both.")

@@ -204,7 +204,12 @@ def main():
                 sys.exit("the default ctest fails on the unmutated tree (%s); fix that first" % results["baseline"]["failed"])
         tests = test_map(build)
         only = set(x for x in a.only.split(",") if x)
+        # Round-robin over the areas: a run cut short still samples every area.
+        by_area = {}
         for m in mutants:
+            by_area.setdefault(area_of(m), []).append(m)
+        order = [m for k in range(max(len(v) for v in by_area.values())) for v in by_area.values() if k < len(v)]
+        for m in order:
             if only and m["id"] not in only:
                 continue
             prev = results["mutants"].get(m["id"], {}).get("status")
