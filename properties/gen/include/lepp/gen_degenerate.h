@@ -75,7 +75,7 @@ inline rc::Gen<Pslg> mirrorKite(double scale = 1) {
 }
 
 /// Hole points exactly where the domain rule (ALGORITHM.md section 2) decides
-/// something: the box [0, 8k]^2 around an inner triangle ring P0 P1 P2 with a
+/// something: the box [0, 8k]^2 (k >= 2: the ring stays off the box) around an inner triangle ring P0 P1 P2 with a
 /// vertex Q inside it (so the edges Q-Pi are unconstrained CDT edges), and one
 /// hole point: strictly inside a triangle Q Pi Pj (removes the inside of the
 /// ring), at the midpoint of Q-P0 (on an unconstrained edge: removes both
@@ -104,7 +104,7 @@ inline rc::Gen<Pslg> holeOnBoundary(double scale = 1) {
         b.hole(hole);
         return b.build("gen:hole-on", scale);
       },
-      rc::gen::inRange(1, 9), rc::gen::inRange(0, 6), rc::gen::inRange(0, 4), rc::gen::inRange(0, 4));
+      rc::gen::inRange(2, 9), rc::gen::inRange(0, 6), rc::gen::inRange(0, 4), rc::gen::inRange(0, 4));
 }
 
 /// Input angles exactly at or next to the thresholds the algorithm compares:
