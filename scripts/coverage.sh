@@ -12,6 +12,7 @@
 #   TARGET=DIR entries separated by spaces (default: out/fuzz/TARGET/corpus when it exists);
 #   LEPP_COVERAGE_TARGETS: build only these targets, with LEPP_COVERAGE_CTEST_ARGS (e.g. -L, -E)
 #   selecting the tests they hold (a cheaper, partial measure: the report says which);
+#   LEPP_COVERAGE_EXCLUDE: a ctest -E regex of tests left out (with LEPP_COVERAGE_TARGETS);
 #   LEPP_COVERAGE_SPLIT: a ctest -R regex; the report also shows coverage without those tests;
 #   LEPP_COVERAGE_BATCH_SECONDS: time cap of each batch of 50 replayed inputs (default 600).
 # Needs gcovr (Debian's, scripts/install-deps.sh).
@@ -52,7 +53,7 @@ for step in "${steps[@]}"; do
       # "without" in the report: what those tests add), then the rest on top.
       set +e
       if [ -n "${LEPP_COVERAGE_SPLIT:-}" ]; then
-        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} -E "$LEPP_COVERAGE_SPLIT" > "$out/ctest.log" 2>&1
+        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} -E "$LEPP_COVERAGE_SPLIT${LEPP_COVERAGE_EXCLUDE:+|$LEPP_COVERAGE_EXCLUDE}" > "$out/ctest.log" 2>&1
         echo $? > "$out/ctest.status"
         set -e
         gcovr "${gcovr_args[@]}" --json "$out/ctest-without.json" >&2
@@ -61,7 +62,8 @@ for step in "${steps[@]}"; do
         echo $(( $? | $(cat "$out/ctest.status") )) > "$out/ctest.status"
       else
         rm -f "$out/ctest-without.json"
-        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} > "$out/ctest.log" 2>&1
+        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} \
+          ${LEPP_COVERAGE_EXCLUDE:+-E "$LEPP_COVERAGE_EXCLUDE"} > "$out/ctest.log" 2>&1
         echo $? > "$out/ctest.status"
       fi
       set -e
@@ -97,7 +99,7 @@ for step in "${steps[@]}"; do
       gcovr -r "$root" --add-tracefile "$out/ctest.json" --add-tracefile "$out/fuzz.json" --json "$out/all.json" >&2
       python3 tools/coverage/report.py --ctest "$out/ctest.json" --fuzz "$out/fuzz.json" --all "$out/all.json" \
         --reasons tools/coverage/reasons.txt --ctest-seconds "$(cat "$out/ctest.seconds" 2>/dev/null || echo '?')" \
-        --ctest-log "$out/ctest.log" --ctest-args "${LEPP_COVERAGE_CTEST_ARGS:-}" ${LEPP_COVERAGE_SPLIT:+--without "$out/ctest-without.json" --split "$LEPP_COVERAGE_SPLIT"} \
+        --ctest-log "$out/ctest.log" --ctest-args "${LEPP_COVERAGE_CTEST_ARGS:-}${LEPP_COVERAGE_EXCLUDE:+ -E $LEPP_COVERAGE_EXCLUDE}" ${LEPP_COVERAGE_SPLIT:+--without "$out/ctest-without.json" --split "$LEPP_COVERAGE_SPLIT"} \
         > docs/COVERAGE.md
       echo "wrote docs/COVERAGE.md" >&2
       ;;
