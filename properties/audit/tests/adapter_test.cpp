@@ -4,7 +4,6 @@
 // hangs the audit; bad templates are usage errors.
 #include <signal.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -73,12 +72,10 @@ TEST(CommandAdapter, NonZeroExitKeepsStatusAndStderr) {
 }
 
 TEST(CommandAdapter, HangIsKilledAtTheTimeout) {
-  const auto t0 = std::chrono::steady_clock::now();
+  // The script never ends and its child ignores SIGTERM: returning at all (ctest's
+  // timeout would catch a hang) with TimedOut shows the whole group was killed.
   EngineRun r = run(kPrograms + "/hang.sh {in} {out}", 0.5);
-  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.status, RunStatus::TimedOut);
-  // Not a timing assertion on speed: only that the audit did not wait for the program.
-  EXPECT_LT(took, 30.0);
   CaseResult c = check_run(square(), EngineRequest{Method::Centroid, 25, 0.5, 0, ""}, r, {});
   EXPECT_EQ(c[Row::Termination].verdict, Verdict::Failed);
   CaseResult above = check_run(square(), EngineRequest{Method::Centroid, 33, 0.5, 0, ""}, r, {});
