@@ -75,7 +75,7 @@ for n in names:
         elif row["failed"]:
             cells.append(f"**fails {row['failed']}/{row['runs']}**")
         elif row["findings"]:
-            cells.append(f"holds ({row['findings']} findings above the claim)")
+            cells.append(f"holds ({row['findings']} findings outside the claim)")
         else:
             cells.append(f"holds {row['held']}/{row['runs']}")
     print(f"| {titles[n]} | " + " | ".join(cells) + f" | {r['runs']} | {r['seconds']:.0f} |")

@@ -1,0 +1,2 @@
+#!/bin/sh
+lepp audit --engine fast --method midpoint --theta 33 --timeout 5 --inputs corpus/audits/lepp-fast-midpoint/termination-1/input.poly
