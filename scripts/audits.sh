@@ -15,6 +15,15 @@ timeout=${TIMEOUT:-5}
 shrink=${SHRINK:-30}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 rm -rf corpus/audits && mkdir -p corpus/audits
+cat > corpus/audits/README.md <<'MD'
+# corpus/audits: the shrunk counterexamples of docs/AUDITS.md
+
+Written by `scripts/audits.sh` (do not edit: it is regenerated). One directory per audited
+engine, one `ROW-N/` per saved finding (docs/AUDIT.md, "A finding on disk"): `input.poly`
+(the shrunk input), the engine's output `out.*` (dropped above 256 KB), `finding.svg` and
+`finding-zoom.svg`, `finding.md` (row, paper passage, verdict) and `reproduce.sh` (one
+`lepp audit` command line, run from the source tree). `ENGINE.json` is the JSON report.
+MD
 
 # name | title | options
 audits=(
