@@ -99,7 +99,7 @@ for n in names:
         continue
     parts = []
     for row in bad:
-        what = f"{row['failed']} failures" if row["failed"] else f"{row['findings']} findings outside the claimed band"
+        what = f"failed on {row['failed']}" if row["failed"] else f"findings outside the claim on {row['findings']}"
         cx = row["counterexamples"][0] if row["counterexamples"] else None
         where = f"; smallest: `{cx['dir']}` ({cx['vertices']} vertices, theta {cx['theta']:g}): {cx['detail'][:220]}" if cx else f"; first: {row['first'][:220]}"
         parts.append(f"{row['check']} ({what} of {row['runs']} runs{where})")
