@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -149,11 +150,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const audit::RowResult& r = result[row];
     if (r.verdict != audit::Verdict::Finding && !(r.verdict == audit::Verdict::Failed && known_loop(row))) continue;
     const std::string cls = class_of(row, run);
+    const std::vector<std::uint8_t> baked = encode(input);  // replays without LEPP_FUZZ_METHOD/THETA
     std::string reason =
         unclaimed_loop_reason(request.method, request.theta, min_input_angle < 60 ? "small-angle-cascade" : "");
     if (reason.empty()) reason = "audit-finding";
     report_known_finding("fuzz_engine", cls, reason, known_finding_key("fuzz_engine", cls, request.method, request.theta),
-                         fmt::format("{} row={}: {}", what, audit::row_key(row), r.detail), data, size);
+                         fmt::format("{} row={}: {}", what, audit::row_key(row), r.detail), baked.data(),
+                         baked.size());
     break;  // one report per run
   }
   fs::remove_all(dir);

@@ -74,10 +74,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                             theta_band(options.min_angle_deg), lepp::to_string(result.outcome),
                                             result.steiner_points, result.stuck);
     // Outside the paper's claims: keep one example per class and band, go on.
+    // Kept baked (method and theta as pinned by the environment), so it replays without it.
+    const std::vector<std::uint8_t> baked = encode(input);
     if (const std::string reason = unclaimed_loop_reason(options.method, options.min_angle_deg, cls); !reason.empty())
       report_known_finding("fuzz_refine", "loop-" + cls, reason,
                            known_finding_key("fuzz_refine", "loop-" + cls, options.method, options.min_angle_deg),
-                           message, data, size);
+                           message, baked.data(), baked.size());
     else
       finding("loop-" + cls, message);
   }

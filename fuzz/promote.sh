@@ -13,7 +13,8 @@
 # directory makes the next build re-run cmake. --open / --fixed force the place;
 # --note adds words to the name. The target comes from --target, else from a
 # path component or file-name prefix naming one (out/fuzz/fuzz_refine/...,
-# fuzz_refine-loop-...bin). LEPP_BUILD picks the build, LEPP_REGRESSIONS the
+# fuzz_refine-loop-...bin). Run it with the LEPP_FUZZ_METHOD / LEPP_FUZZ_THETA of
+# the fuzzing run: they are baked into the copy. LEPP_BUILD picks the build, LEPP_REGRESSIONS the
 # destination (default corpus/regressions).
 set -euo pipefail
 usage() { echo "usage: fuzz/promote.sh [--target T] [--open | --fixed] [--note WORDS] FILE" >&2; exit 2; }
@@ -50,11 +51,22 @@ if [[ ! -x $replay ]]; then
   ninja -C "$build" "${target}_replay" >/dev/null
 fi
 
+# An input found with LEPP_FUZZ_METHOD / LEPP_FUZZ_THETA pinned decodes to
+# another method or theta without them: bake them into the file first (run
+# promote.sh with the same environment as the fuzzing run).
+src=$file
+if [[ $target != fuzz_parse && ( -n ${LEPP_FUZZ_METHOD:-} || -n ${LEPP_FUZZ_THETA:-} ) ]]; then
+  [[ -x $build/fuzz/fuzz_make_seeds ]] || ninja -C "$build" fuzz_make_seeds >/dev/null
+  baked=$(mktemp)
+  "$build/fuzz/fuzz_make_seeds" --bake "$file" "$baked" >&2
+  file=$baked
+fi
+
 # Replay once, expecting a finding: exit 0 = reported, 1 = ran clean, >128 = crashed.
 log=$(mktemp)
-trap 'rm -f "$log"' EXIT
+trap 'rm -f "$log" ${baked:-}' EXIT
 status=0
-"$replay" --expect-finding "$file" >/dev/null 2>"$log" || status=$?
+env -u LEPP_FUZZ_METHOD -u LEPP_FUZZ_THETA -u LEPP_FUZZ_MIN_INPUT_ANGLE "$replay" --expect-finding "$file" >/dev/null 2>"$log" || status=$?
 line=$(grep -m1 '^LEPP-FINDING' "$log" || true)
 if [[ $status -eq 0 && -n $line ]]; then
   cls=$(sed -n 's/.* class=\([^ ]*\).*/\1/p' <<<"$line")
@@ -83,7 +95,7 @@ if [[ -n $line ]]; then
 fi
 [[ -n $note ]] && what=$what-$(tr -cs 'A-Za-z0-9.' '-' <<<"$note" | sed 's/-$//')
 sha=$(sha1sum "$file" | cut -c1-8)
-base=$(basename "$file")
+base=$(basename "$src")
 ext=bin
 [[ $base == *.* ]] && ext=${base##*.}
 [[ $ext == txt || $ext == md ]] && { echo "promote.sh: $file looks like a note, not an input" >&2; exit 2; }
