@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "lepp/certify.h"
+#include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
 #include "lepp/version.h"
@@ -24,6 +25,7 @@ struct CertifyArgs {
   bool json = false;
   bool exempt = false;
   std::size_t max_listed = 50;
+  DomainOptions domain;
 };
 
 nlohmann::json to_json(const certify::Report& r, std::size_t max_listed) {
@@ -89,7 +91,7 @@ int run_certify(const CertifyArgs& args) {
   certify::Options options;
   std::vector<std::string> warnings;
   try {
-    input = validate(read_poly(args.input), warnings);
+    input = validate(read_input(args.input, warnings), args.domain, warnings);
     mesh = read_mesh(args.mesh);
     options.unimprovable = read_unimprovable(args.mesh);
   } catch (const InputError& e) {
@@ -121,7 +123,7 @@ int run_certify(const CertifyArgs& args) {
 void add_certify_command(CLI::App& app, int& status) {
   auto args = std::make_shared<CertifyArgs>();
   auto* cmd = app.add_subcommand("certify", "Check a mesh of a .poly file exactly (topology, input, constraints, Delaunay, angles, Theorem 2)");
-  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format")->required();
+  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set")->required();
   cmd->add_option("mesh", args->mesh, "Mesh prefix: reads PREFIX.node, PREFIX.ele, PREFIX.poly and PREFIX.unimprovable if present")
       ->required();
   cmd->add_option("--min-angle", args->min_angle, "Check every smallest angle >= this many degrees (0: no angle check)")
@@ -134,6 +136,10 @@ void add_certify_command(CLI::App& app, int& status) {
   cmd->add_flag("--exempt-small-input-angles", args->exempt,
                 "Triangles below --min-angle whose shortest edge lies near an input angle below 60 degrees are exempt, "
                 "counted apart (docs/CERTIFIER.md: the rule depends only on the input and the mesh)");
+  cmd->add_flag("--convex-hull", args->domain.convex_hull,
+                "The domain has the convex hull's edges as segments (as refine --convex-hull, Triangle's -c)");
+  cmd->add_flag("--split-crossings", args->domain.split_crossings,
+                "Crossing segments are split at their rounded intersection (as refine --split-crossings)");
   cmd->add_flag("--json", args->json, "Print the report as JSON");
   cmd->footer("Exit status: 0 certified; 1 violations found (each listed); 2 unreadable input. docs/CERTIFIER.md says what each check tests.");
   cmd->callback([args, &status] { status = run_certify(*args); });

@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "lepp/fast.h"
+#include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/reference.h"
 #include "lepp/stats.h"
@@ -32,18 +33,30 @@ struct RefineArgs {
   bool json = false;
   bool quiet = false;
   bool trace = false;
+  DomainOptions domain;
 };
+
+std::string detail_where(const Pslg& p, std::size_t region) {
+  const int line = region < p.region_lines.size() ? p.region_lines[region] : 0;
+  return line > 0 ? p.source + ":" + std::to_string(line) : p.source;
+}
 
 int run_refine(const RefineArgs& args) {
   Pslg input;
   std::vector<std::string> warnings;
   try {
-    input = validate(read_poly(args.input), warnings);
+    input = validate(read_input(args.input, warnings), args.domain, warnings);
   } catch (const InputError& e) {
     std::fprintf(stderr, "lepp refine: %s\n", e.what());
     return 2;
   }
   for (const std::string& w : warnings) std::fprintf(stderr, "lepp refine: warning: %s\n", w.c_str());
+  for (std::size_t r = 0; r < input.regions.size(); ++r)
+    if (input.regions[r].max_area > 0) {
+      std::fprintf(stderr, "lepp refine: warning: %s: regional area bounds are read but not used by the engines; use --max-area for one bound everywhere\n",
+                   detail_where(input, r).c_str());
+      break;
+    }
 
   RefineOptions options;
   options.min_angle_deg = args.min_angle;
@@ -68,6 +81,13 @@ int run_refine(const RefineArgs& args) {
     result = reference::refine(input, options);
   }
   if (options.on_progress) std::fprintf(stderr, "\r\033[K");
+  if (args.domain.split_crossings) {
+    // Both pieces of a split segment keep its identity: the marker of each
+    // constrained edge is the file's segment number (docs/FORMATS.md).
+    for (ConstrainedEdge& e : result.mesh.constrained_edges)
+      if (e.segment >= 0 && static_cast<std::size_t>(e.segment) < input.segment_origin.size())
+        e.segment = input.segment_origin[static_cast<std::size_t>(e.segment)];
+  }
   try {
     write_mesh(args.output, result.mesh);
     write_unimprovable(args.output, result.unimprovable);
@@ -135,7 +155,7 @@ int run_refine(const RefineArgs& args) {
 void add_refine_command(CLI::App& app, int& status) {
   auto args = std::make_shared<RefineArgs>();
   auto* cmd = app.add_subcommand("refine", "Refine a .poly file into a quality mesh (writes PREFIX.node/.ele/.poly)");
-  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format")->required()->check(CLI::ExistingFile);
+  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly")->required();
   cmd->add_option("--min-angle", args->min_angle, "Smallest angle wanted, degrees (a triangle below it is bad)")
       ->default_val(30)
@@ -155,6 +175,12 @@ void add_refine_command(CLI::App& app, int& status) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds (outcome time-limit, exit 3)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--convex-hull", args->domain.convex_hull,
+                "Add the convex hull's edges as segments, so open boundaries mesh (Triangle's -c); a point set (a .node, "
+                "or a .poly with no segments) always meshes its convex hull");
+  cmd->add_flag("--split-crossings", args->domain.split_crossings,
+                "Split crossing segments at their exact intersection rounded to doubles (default: rejected); output "
+                "markers are then the file's segment numbers");
   cmd->add_flag("--json", args->json, "Print the statistics as JSON");
   cmd->add_flag("--trace", args->trace, "Also write PREFIX.trace: the Steiner points in insertion order (docs/FORMATS.md)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");

@@ -71,6 +71,7 @@ std::size_t LineReader::lines_left() const {
 }
 
 void LineReader::fail(const std::string& what) const { throw InputError(path_, line_, what); }
+void LineReader::fail_at(int line, const std::string& what) const { throw InputError(path_, line, what); }
 
 double LineReader::real(std::string_view token, const char* what) const {
   std::string s(token);

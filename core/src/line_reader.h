@@ -25,6 +25,7 @@ class LineReader {
   std::size_t lines_left() const;
 
   [[noreturn]] void fail(const std::string& what) const;
+  [[noreturn]] void fail_at(int line, const std::string& what) const;  // an earlier line
   double real(std::string_view token, const char* what) const;          // finite double
   std::int64_t integer(std::string_view token, const char* what) const;
   // Checks the field count of the last line: at least min, at most max.

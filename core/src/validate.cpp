@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "lepp/input.h"
 #include "lepp/io.h"
 #include "validate_geometry.h"
 
@@ -40,7 +41,9 @@ bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 }  // namespace
 
-Pslg validate(const Pslg& input, std::vector<std::string>& warnings) {
+Pslg validate(const Pslg& input, std::vector<std::string>& warnings) { return detail::validate(input, false, warnings); }
+
+Pslg detail::validate(const Pslg& input, bool split, std::vector<std::string>& warnings) {
   const std::string& file = input.source;
   const std::size_t n = input.vertices.size();
   // Generated PSLGs skip the parser: check what it would have.
@@ -61,6 +64,8 @@ Pslg validate(const Pslg& input, std::vector<std::string>& warnings) {
   out.source = input.source;
   out.holes = input.holes;
   out.hole_lines = input.hole_lines;
+  out.regions = input.regions;  // crossing_vertices: set by split_crossings() below
+  out.region_lines = input.region_lines;
 
   // Duplicate vertices (exactly equal coordinates) merge into the first in file order.
   std::vector<std::size_t> order(n);
@@ -104,6 +109,7 @@ Pslg validate(const Pslg& input, std::vector<std::string>& warnings) {
     out.segment_lines.push_back(line_at(input.segment_lines, s));
   }
 
+  if (split) split_crossings(out, warnings);
   // Splits at vertices, repeats and overlaps, crossings, collinear input, holes.
   detail::check_geometry(out, warnings);
   return out;

@@ -59,11 +59,11 @@ std::string at_line(const std::vector<int>& lines, std::size_t i) {
     int o3 = CGAL::orientation(c, d, a), o4 = CGAL::orientation(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0)
       throw InputError(pslg.source, line_at(pslg.segment_lines, s),
-                       fmt::format("segments {} and {}{} cross; segments may meet only at vertices", s + 1, j + 1,
+                       fmt::format("segments {} and {}{} cross; segments may meet only at vertices (option --split-crossings splits them at the intersection)", s + 1, j + 1,
                                    at_line(pslg.segment_lines, j)));
   }
   throw InputError(pslg.source, line_at(pslg.segment_lines, s),
-                   fmt::format("segment {} crosses an earlier segment; segments may meet only at vertices", s + 1));
+                   fmt::format("segment {} crosses an earlier segment; segments may meet only at vertices (option --split-crossings splits them at the intersection)", s + 1));
 }
 
 // The constrained edges around each vertex, sorted by direction, so that the
@@ -183,7 +183,7 @@ void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
   // Each segment becomes the pieces between the vertices on it; a piece
   // already owned by an earlier segment (a repeat or an overlap) is kept once.
   std::vector<Segment> pieces;
-  std::vector<int> piece_lines;
+  std::vector<int> piece_lines, piece_origin;
   std::unordered_map<std::uint64_t, std::size_t> owner;  // piece (min id, max id) -> input segment
   owner.reserve(pslg.segments.size() * 2);
   WarningSink splits(warnings, "vertex inside a segment"), repeats(warnings, "repeated segment"),
@@ -211,6 +211,7 @@ void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
       }
       pieces.push_back({chain[k], chain[k + 1], seg.marker});
       piece_lines.push_back(line_at(pslg.segment_lines, s));
+      piece_origin.push_back(s < pslg.segment_origin.size() ? pslg.segment_origin[s] : static_cast<int>(s));
     }
     if (covered == 0) continue;
     const std::string other = fmt::format("segment {}{}", earlier + 1, at_line(pslg.segment_lines, earlier));
@@ -224,6 +225,7 @@ void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
   }
   pslg.segments = std::move(pieces);
   pslg.segment_lines = std::move(piece_lines);
+  pslg.segment_origin = std::move(piece_origin);
 
   // The domain, as ALGORITHM.md section 2 defines it: flood from outside the
   // convex hull, then from each hole point, never across a constrained edge.

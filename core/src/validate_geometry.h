@@ -38,4 +38,7 @@ std::string where(const std::string& file, int line);
 // collinear input and an empty domain.
 void check_geometry(Pslg& pslg, std::vector<std::string>& warnings);
 
+// validate(), splitting crossing segments first when `split_crossings` is set.
+Pslg validate(const Pslg& input, bool split_crossings, std::vector<std::string>& warnings);
+
 }  // namespace lepp::detail

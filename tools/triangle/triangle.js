@@ -4,7 +4,11 @@
 // way the native `triangle` command does, for lepp's comparisons.
 //
 //   node triangle.js IN.poly SWITCHES OUT_PREFIX      e.g.  node triangle.js square400.poly -pq30 out/sq
+//   node triangle.js IN.node SWITCHES OUT_PREFIX      a point set (no -p), e.g. -cq30
 //
+// The input is read as Triangle's own file reader reads it (first vertex's
+// number sets 0- or 1-based numbering, missing attributes and markers are 0,
+// extra fields ignored, regions after the holes).
 // Writes OUT_PREFIX.node, OUT_PREFIX.ele and OUT_PREFIX.poly (1-based, Triangle's
 // formats) and prints "points added N" (output vertices minus input vertices)
 // on stdout. Triangle is given segment markers 1..n (the file's own markers are
@@ -53,28 +57,45 @@ function bad(file, what) {
   process.exit(2);
 }
 
-// Reads vertices starting at lines[at]; returns {points, markers, ids, next}.
+// Reads vertices starting at lines[at] as Triangle's readnodes() does: the
+// first vertex's number (0 or 1) sets the numbering, later numbers are not
+// read; attributes and the marker default to 0 when missing; fields beyond
+// them are ignored. Returns {points, attributes, nattr, markers, first, next, count}.
 function readVertices(file, lines, at) {
   if (at >= lines.length) bad(file, 'missing vertex header');
-  const [n, dim, nattr, nmark] = lines[at].map(Number);
+  const head = lines[at].map(Number);
+  const n = head[0];
+  const dim = head.length > 1 ? head[1] : 2;
+  const nattr = head.length > 2 ? head[2] : 0;
+  const nmark = head.length > 3 ? head[3] : 0;
   if (!(n >= 0) || (n > 0 && dim !== 2)) bad(file, 'bad vertex header');
   const points = [];
+  const attributes = [];
   const markers = [];
-  const ids = new Map(); // file id -> 0-based index
+  let first = 1;
   for (let i = 0; i < n; i++) {
     const row = lines[at + 1 + i];
     if (!row || row.length < 3) bad(file, `vertex ${i + 1} missing or short`);
-    ids.set(Number(row[0]), i);
+    if (i === 0 && (Number(row[0]) === 0 || Number(row[0]) === 1)) first = Number(row[0]);
     points.push(Number(row[1]), Number(row[2]));
-    markers.push(nmark > 0 ? Number(row[3 + (nattr || 0)]) || 0 : 0);
+    for (let a = 0; a < nattr; a++) attributes.push(row.length > 3 + a ? Number(row[3 + a]) : 0);
+    markers.push(nmark > 0 && row.length > 3 + nattr ? Number(row[3 + nattr]) || 0 : 0);
   }
-  return { points, markers, ids, next: at + 1 + n, count: n };
+  return { points, attributes, nattr, markers, first, next: at + 1 + n, count: n };
 }
 
+// A .poly as Triangle's readpoly/readholes read it (segments with a bad
+// endpoint are skipped with a warning, as Triangle does), or a .node alone (no
+// segments). Regions are read when the section is there.
 function readPoly(file) {
   const lines = readLines(file);
   let v = readVertices(file, lines, 0);
   let at = v.next;
+  const segments = [];
+  const segmentMarkers = [];
+  const holes = [];
+  const regions = [];
+  if (/\.node$/.test(file)) return { ...v, segments, segmentMarkers, holes, regions };
   if (v.count === 0) {
     // The vertices live in the .node file beside the .poly.
     const nodeFile = file.replace(/\.poly$/, '.node');
@@ -82,19 +103,19 @@ function readPoly(file) {
   }
   if (at >= lines.length) bad(file, 'missing segment header');
   const nseg = Number(lines[at][0]);
-  const segments = [];
-  const segmentMarkers = [];
   for (let i = 0; i < nseg; i++) {
     const row = lines[at + 1 + i];
     if (!row || row.length < 3) bad(file, `segment ${i + 1} missing or short`);
-    const a = v.ids.get(Number(row[1]));
-    const b = v.ids.get(Number(row[2]));
-    if (a === undefined || b === undefined) bad(file, `segment ${i + 1} names an unknown vertex`);
+    const a = Number(row[1]) - v.first;
+    const b = Number(row[2]) - v.first;
+    if (!(a >= 0 && a < v.count && b >= 0 && b < v.count)) {
+      process.stderr.write(`triangle.js: warning: ${file}: segment ${i + 1} has an invalid endpoint; skipped\n`);
+      continue;
+    }
     segments.push(a, b);
     segmentMarkers.push(i + 1);
   }
   at += 1 + nseg;
-  const holes = [];
   if (at < lines.length) {
     const nholes = Number(lines[at][0]);
     for (let i = 0; i < nholes; i++) {
@@ -102,38 +123,77 @@ function readPoly(file) {
       if (!row || row.length < 3) bad(file, `hole ${i + 1} missing or short`);
       holes.push(Number(row[1]), Number(row[2]));
     }
+    at += 1 + nholes;
   }
-  return { points: v.points, markers: v.markers, segments, segmentMarkers, holes };
+  if (at < lines.length) {
+    const nregions = Number(lines[at][0]);
+    for (let i = 0; i < nregions; i++) {
+      const row = lines[at + 1 + i];
+      if (!row || row.length < 4) bad(file, `region ${i + 1} missing or short`);
+      // With one value, Triangle takes it as both the attribute and the area bound.
+      regions.push(Number(row[1]), Number(row[2]), Number(row[3]), Number(row.length > 4 ? row[4] : row[3]));
+    }
+  }
+  return { ...v, segments, segmentMarkers, holes, regions };
 }
 
-function writeOutput(prefix, out) {
+// %.17g, as Triangle's writers print reals.
+function g17(x) {
+  if (Number.isInteger(x) && Math.abs(x) < 1e17) return x.toString();
+  const s = x.toPrecision(17);
+  // toPrecision pads with zeros where %g would not: trim them.
+  if (s.includes('e')) return s.replace(/\.?0+e/, 'e').replace(/e\+?(-?)(\d)$/, 'e$10$2');
+  return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
+}
+
+// The output files as Triangle's writenodes/writeelements/writepoly write them
+// (1-based): .node with attributes and markers, .ele with triangle attributes,
+// .poly with no vertices (they are in the .node), its segments, holes, regions.
+function writeOutput(prefix, out, regions) {
   const np = out.numberofpoints;
   const pts = out.pointlist;
+  const na = out.numberofpointattributes;
+  const pa = out.pointattributelist;
   const pm = out.pointmarkerlist;
-  const node = [`${np} 2 0 1`];
+  const node = [`${np}  2  ${na}  1`];
   for (let i = 0; i < np; i++) {
-    node.push(`${i + 1} ${pts[2 * i].toString()} ${pts[2 * i + 1].toString()} ${pm ? pm[i] : 0}`);
+    let line = `${i + 1}    ${g17(pts[2 * i])}  ${g17(pts[2 * i + 1])}`;
+    for (let a = 0; a < na; a++) line += `  ${g17(pa[na * i + a])}`;
+    node.push(`${line}    ${pm ? pm[i] : 0}`);
   }
+  node.push('# Generated by triangle.js (triangle-wasm)');
   fs.writeFileSync(`${prefix}.node`, node.join('\n') + '\n');
 
   const nt = out.numberoftriangles;
   const corners = out.numberofcorners;
   const tl = out.trianglelist;
-  const ele = [`${nt} 3 0`];
+  const nta = out.numberoftriangleattributes;
+  const ta = out.triangleattributelist;
+  const ele = [`${nt}  ${corners}  ${nta}`];
   for (let i = 0; i < nt; i++) {
-    ele.push(`${i + 1} ${tl[corners * i] + 1} ${tl[corners * i + 1] + 1} ${tl[corners * i + 2] + 1}`);
+    let line = `${i + 1}`;
+    for (let c = 0; c < corners; c++) line += `  ${tl[corners * i + c] + 1}`;
+    for (let a = 0; a < nta; a++) line += `  ${g17(ta[nta * i + a])}`;
+    ele.push(line);
   }
+  ele.push('# Generated by triangle.js (triangle-wasm)');
   fs.writeFileSync(`${prefix}.ele`, ele.join('\n') + '\n');
 
   const ns = out.numberofsegments;
   const sl = out.segmentlist;
   const sm = out.segmentmarkerlist;
-  const poly = ['0 2 0 1', `${ns} 1`];
-  for (let i = 0; i < ns; i++) poly.push(`${i + 1} ${sl[2 * i] + 1} ${sl[2 * i + 1] + 1} ${sm ? sm[i] : 0}`);
+  const poly = [`0  2  ${na}  1`, `${ns}  1`];
+  for (let i = 0; i < ns; i++) poly.push(`${i + 1}    ${sl[2 * i] + 1}  ${sl[2 * i + 1] + 1}    ${sm ? sm[i] : 0}`);
   const nh = out.numberofholes;
   const hl = out.holelist;
   poly.push(`${nh}`);
-  for (let i = 0; i < nh; i++) poly.push(`${i + 1} ${hl[2 * i].toString()} ${hl[2 * i + 1].toString()}`);
+  for (let i = 0; i < nh; i++) poly.push(`${i + 1}   ${g17(hl[2 * i])}  ${g17(hl[2 * i + 1])}`);
+  if (regions.length) {
+    poly.push(`${regions.length / 4}`);
+    for (let i = 0; i < regions.length / 4; i++)
+      poly.push(`${i + 1}   ${regions.slice(4 * i, 4 * i + 4).map(g17).join('  ')}`);
+  }
+  poly.push('# Generated by triangle.js (triangle-wasm)');
   fs.writeFileSync(`${prefix}.poly`, poly.join('\n') + '\n');
 }
 
@@ -155,10 +215,12 @@ async function main() {
   await Triangle.init(path.join(path.dirname(require.resolve('triangle-wasm')), 'triangle.out.wasm'));
   const io = Triangle.makeIO({
     pointlist: pslg.points,
+    pointattributelist: pslg.nattr > 0 ? pslg.attributes : null,
     pointmarkerlist: pslg.markers,
-    segmentlist: pslg.segments,
-    segmentmarkerlist: pslg.segmentMarkers,
+    segmentlist: pslg.segments.length ? pslg.segments : null,
+    segmentmarkerlist: pslg.segments.length ? pslg.segmentMarkers : null,
     holelist: pslg.holes.length ? pslg.holes : null,
+    regionlist: pslg.regions.length ? pslg.regions : null,
   });
   const out = Triangle.makeIO();
   try {
@@ -168,7 +230,7 @@ async function main() {
     process.exit(1);
   }
   if (path.dirname(prefix)) fs.mkdirSync(path.dirname(prefix), { recursive: true });
-  writeOutput(prefix, out);
+  writeOutput(prefix, out, pslg.regions);
   process.stdout.write(`points added ${out.numberofpoints - inputPoints}\n`);
   Triangle.freeIO(io, true);
   Triangle.freeIO(out);

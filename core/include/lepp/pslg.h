@@ -18,17 +18,35 @@ struct Segment {
   int marker = 0;  // Triangle's boundary marker, kept, never interpreted
 };
 
+// A regional attribute / area constraint of Triangle's .poly (its section after
+// the holes): the region of the domain around `at`, bounded by segments.
+struct Region {
+  Point at;
+  double attribute = 0;
+  double max_area = -1;  // <= 0: no area bound (Triangle's convention)
+};
+
 struct Pslg {
   std::vector<Point> vertices;
   std::vector<int> vertex_markers;  // empty, or one per vertex
   std::vector<Segment> segments;
   std::vector<Point> holes;
+  std::vector<Region> regions;  // read from the .poly; the engines do not use them (docs/FORMATS.md)
 
   // Where each item was read (file name and 1-based line), so that errors found
   // after parsing (crossing segments, ...) can still name the line. Empty for
   // PSLGs that were generated rather than read.
   std::string source;
-  std::vector<int> vertex_lines, segment_lines, hole_lines;
+  std::vector<int> vertex_lines, segment_lines, hole_lines, region_lines;
+
+  // After validate(): for each segment (a piece), the 0-based number of the
+  // file's segment it is part of (pieces of one segment are consecutive, from
+  // its first endpoint to its second). Empty before validation.
+  std::vector<int> segment_origin;
+  // After validate() with --split-crossings: the last `crossing_vertices`
+  // vertices are crossing points, the exact intersections rounded to doubles
+  // (another mesher may have rounded them otherwise: the certifier allows it).
+  std::size_t crossing_vertices = 0;
 };
 
 }  // namespace lepp

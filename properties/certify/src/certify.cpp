@@ -56,6 +56,7 @@ class Certifier {
     check_unused_vertices();
     build_adjacency();
     find_chains();
+    check_split_points();
     check_listed_constrained_edges();
     check_coverage();
     check_euler();
@@ -216,18 +217,34 @@ class Certifier {
       } else {
         auto it = where.find(p);
         if (it != where.end()) input_to_mesh_[i] = it->second;
+        else if (i + pslg_.crossing_vertices >= n) input_to_mesh_[i] = nearest_mesh_vertex(p);
       }
       const int m = input_to_mesh_[i];
       if (m >= 0) mesh_to_input_[static_cast<std::size_t>(m)] = static_cast<int>(i);
       const bool moved = m >= 0 && mesh_.vertices[static_cast<std::size_t>(m)] != p;
       const bool present = m >= 0 && used_[static_cast<std::size_t>(m)];
-      if (!present && !moved && domain_.vertex_in_domain[i])
+      if (!present && (!moved || i + pslg_.crossing_vertices >= n) && domain_.vertex_in_domain[i])
         add({Reason::InputVertexMissing, fmt::format("input vertex {} {} (in the domain) is not a vertex of any triangle", i, pt(p)),
              {}, {}, {static_cast<int>(i)}, {p}, -1});
     }
     if (mesh_.input_vertices > n)
       add({Reason::InputVertexMoved,
            fmt::format("the mesh claims {} input vertices, the input has {}", mesh_.input_vertices, n), {}, {}, {}, {}, -1});
+  }
+
+  // A crossing point another mesher rounded otherwise: the mesh vertex nearest
+  // to ours, if within 2^-40 of it (relative). Only a candidate: check_split_points
+  // then holds it to the chain tolerance of both segments. Linear: crossing
+  // points missing exactly are few.
+  int nearest_mesh_vertex(const Point& p) const {
+    const double radius = std::ldexp(std::max({1.0, std::abs(p.x), std::abs(p.y)}), -40);
+    int best = -1;
+    double best_d = radius;
+    for (std::size_t v = 0; v < mesh_.vertices.size(); ++v) {
+      const double d = std::max(std::abs(mesh_.vertices[v].x - p.x), std::abs(mesh_.vertices[v].y - p.y));
+      if (d <= best_d) best = static_cast<int>(v), best_d = d;
+    }
+    return best;
   }
 
   void check_unused_vertices() {
@@ -318,6 +335,37 @@ class Certifier {
     chain.push_back(v);  // marks where the walk stopped
     chain.insert(chain.begin(), -1);
     return chain;
+  }
+
+  // Where validate() split a file's segment (at a vertex on it, or with
+  // --split-crossings at a crossing rounded to doubles), the pieces must stay
+  // on that segment: each joint within the chain tolerance of the line through
+  // the segment's ends (segment_tolerance with the joints as interior
+  // vertices). A rounded crossing is within half an ulp per coordinate.
+  void check_split_points() {
+    const std::vector<int>& origin = pslg_.segment_origin;
+    if (origin.size() != pslg_.segments.size()) return;
+    for (std::size_t first = 0; first < origin.size();) {
+      std::size_t last = first;
+      while (last + 1 < origin.size() && origin[last + 1] == origin[first]) ++last;
+      if (last > first) {
+        const int a = input_to_mesh_[static_cast<std::size_t>(pslg_.segments[first].a)];
+        const int b = input_to_mesh_[static_cast<std::size_t>(pslg_.segments[last].b)];
+        if (a >= 0 && b >= 0) {
+          const double tol = segment_tolerance(P(a), P(b), last - first);
+          for (std::size_t k = first; k < last; ++k) {
+            const int v = input_to_mesh_[static_cast<std::size_t>(pslg_.segments[k].b)];
+            if (v < 0 || within(P(a), P(b), P(v), tol)) continue;
+            add({Reason::SteinerOffSegment,
+                 fmt::format("vertex {} {} where segment {} of the input was split is off it ({} {}) by more than the "
+                             "tolerance {} per coordinate",
+                             v, pt(P(v)), origin[first] + 1, pt(P(a)), pt(P(b)), tol),
+                 {}, {}, {v, a, b}, {}, static_cast<int>(k)});
+          }
+        }
+      }
+      first = last + 1;
+    }
   }
 
   void find_chains() {
