@@ -142,7 +142,7 @@ function g17(x) {
   if (Number.isInteger(x) && Math.abs(x) < 1e17) return x.toString();
   const s = x.toPrecision(17);
   // toPrecision pads with zeros where %g would not: trim them.
-  if (s.includes('e')) return s.replace(/\.?0+e/, 'e').replace(/e\+?(-?)(\d)$/, 'e$10$2');
+  if (s.includes('e')) return s.replace(/\.?0+e/, 'e').replace(/e([+-])(\d)$/, 'e$10$2');
   return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
 }
 
