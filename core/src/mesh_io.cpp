@@ -133,6 +133,12 @@ void write_poly(const std::string& path, const Pslg& pslg) {
     out.print("{} {} {} {}\n", i + 1, pslg.segments[i].a + 1, pslg.segments[i].b + 1, pslg.segments[i].marker);
   out.print("{}\n", pslg.holes.size());
   for (std::size_t i = 0; i < pslg.holes.size(); ++i) out.print("{} {} {}\n", i + 1, pslg.holes[i].x, pslg.holes[i].y);
+  if (pslg.regions.empty()) return;
+  out.print("{}\n", pslg.regions.size());
+  for (std::size_t i = 0; i < pslg.regions.size(); ++i) {
+    const Region& r = pslg.regions[i];
+    out.print("{} {} {} {} {}\n", i + 1, r.at.x, r.at.y, r.attribute, r.max_area);
+  }
 }
 
 void write_unimprovable(const std::string& prefix, const std::vector<UnimprovableTriangle>& list) {

@@ -77,6 +77,13 @@ TEST(TriangleFormats, RegionsAreKept) {
   EXPECT_TRUE(warnings.empty());
   Pslg v = validate(p, warnings);
   EXPECT_EQ(v.regions.size(), 2u);
+  // write_poly keeps them.
+  const std::string path = write_temp("regions-back.poly", "");
+  write_poly(path, p);
+  Pslg back = read_poly(path);
+  ASSERT_EQ(back.regions.size(), 2u);
+  EXPECT_EQ(back.regions[1].at, p.regions[1].at);
+  EXPECT_EQ(back.regions[1].max_area, 2.0);
 }
 
 TEST(TriangleFormats, ZeroBasedAndAttributes) {
