@@ -264,7 +264,8 @@ void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
   for (Fh f : cdt.finite_face_handles()) any = any || f->info() == kInDomain;
   if (!any)
     throw InputError(file, 0,
-                     pslg.holes.empty() ? "the domain is empty: no region is enclosed by segments (nothing to mesh)"
+                     pslg.holes.empty() ? "the domain is empty: no region is enclosed by segments (nothing to mesh; option "
+                                          "--convex-hull encloses the convex hull)"
                                         : "the domain is empty: no region is enclosed by segments, or the hole points "
                                           "remove all of it (nothing to mesh)");
 }

@@ -30,7 +30,7 @@ CASES = [
 ]
 # Without its option, each of these is rejected (exit 2) with this in the message.
 REJECTED_WITHOUT = {
-    "open-boundary.poly": "domain is empty",
+    "open-boundary.poly": "--convex-hull",
     "crossing.poly": "--split-crossings",
 }
 
