@@ -249,6 +249,31 @@ TEST(CertifyRejects, SteinerToleranceIsTight) {
   }
 }
 
+TEST(CertifyAccepts, ChainIgnoresAVertexNearTheSegmentButOffIt) {
+  // Segment AB with its midpoint P and a vertex Q beside it, 2^-47 off the line:
+  // within the loosest tolerance (6 ulp(8) = 3 * 2^-48, six mesh vertices) and
+  // nearer A than P, but not on the segment. The chain is A P B (listed, and
+  // nearest the line when nothing is listed), not A Q: far from the origin
+  // (corpus/hostile/far-from-origin.poly at 33 degrees) the loosest tolerance
+  // reaches interior vertices and the walk took them.
+  Pslg p;
+  p.vertices = {{0, 0}, {8, 0}, {4, 4}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  Mesh m;
+  m.vertices = {{0, 0}, {8, 0}, {4, 4}, {4, 0}, {2, std::ldexp(1.0, -47)}};
+  m.input_vertices = 3;
+  m.triangles = {{0, 3, 4}, {3, 1, 2}, {3, 2, 4}, {4, 2, 0}};
+  m.constrained_edges = {{0, 3, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+  expect_certified(run(p, m));
+  m.constrained_edges.clear();  // a bare mesh: found by geometry alone
+  expect_certified(run(p, m));
+  // Q on the chain instead (the edge A-P replaced by A-Q-P): now it is off the segment.
+  m.vertices[4].y = -std::ldexp(1.0, -47);  // below AB: on the chain, a sliver outside the domain
+  m.triangles = {{0, 4, 3}, {0, 3, 2}, {3, 1, 2}};
+  m.constrained_edges = {{0, 4, 0}, {4, 3, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+  expect_rejected_for(run(p, m), Reason::SteinerOffSegment);
+}
+
 TEST(CertifyRejects, AngleJustUnderTheta) {
   // A lone triangle whose smallest angle is 30 degrees minus 1e-7 degrees.
   const double rad = (30 - 1e-7) * M_PI / 180;

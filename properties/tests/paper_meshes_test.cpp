@@ -59,6 +59,25 @@ TEST(CertifyPaperMeshes, FastEngine) {
   engine_meshes_certify(true);
 }
 
+// The letter A at (1e9, 1e9), 1.6e-3 across: the loosest segment tolerance of the
+// chain walk (103 ulp there) reached interior vertices, and the certifier took
+// them for chain vertices and reported gaps in a correct mesh (docs/CERTIFIER.md).
+TEST(CertifyHostileMeshes, FarFromOriginAt33Degrees) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(read_poly(LEPP_SOURCE_DIR "/corpus/hostile/far-from-origin.poly"), warnings);
+  RefineOptions o;
+  o.min_angle_deg = 33;
+  certify::Options c;
+  c.min_angle_deg = 33;
+  const RefineResult ref = reference::refine(p, o);
+  ASSERT_EQ(ref.outcome, Outcome::Converged);
+  expect_certified(p, ref.mesh, c, "reference");
+  if (!fast::available()) return;
+  const RefineResult fast_result = fast::refine(p, o);
+  ASSERT_EQ(fast_result.outcome, Outcome::Converged);
+  expect_certified(p, fast_result.mesh, c, "fast");
+}
+
 // Triangle's -pq<theta> output, written to files and read back as any mesh would be.
 TEST(CertifyOtherPrograms, TriangleOnPaperProblems) {
   const fs::path runner = LEPP_SOURCE_DIR "/tools/triangle/triangle.js";

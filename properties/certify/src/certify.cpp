@@ -308,11 +308,19 @@ class Certifier {
   }
 
   // Walks from a to b: at each vertex, the next vertex strictly ahead along AB and
-  // strictly before B, joined by a listed constrained edge near the line or within
-  // the loosest tolerance, the nearest one first. Empty when there is no chain.
+  // strictly before B, the nearest one first among, in this order: the vertices
+  // joined by a listed constrained edge near the line (within 2^-20 |AB| or the
+  // loosest tolerance), then those within 1, 2, 4, ... ulp up to the loosest
+  // tolerance. Far from the origin the loosest tolerance ((k+1) ulp with k the
+  // number of mesh vertices) reaches mesh vertices that are not on the segment:
+  // the nearest ahead among all of them is not the chain's next vertex.
+  // Empty when there is no chain.
   std::vector<int> walk(int a, int b) const {
     const Point &A = P(a), &B = P(b);
     const double loose = segment_tolerance(A, B, mesh_.vertices.size());
+    std::vector<double> tiers;  // 1, 2, 4, ... ulp, then the loosest
+    for (std::size_t k = 0; k < mesh_.vertices.size(); k = 2 * k + 1) tiers.push_back(segment_tolerance(A, B, k));
+    tiers.push_back(loose);
     std::vector<int> chain{a};
     int v = a;
     while (chain.size() <= mesh_.vertices.size()) {
@@ -320,14 +328,22 @@ class Certifier {
         chain.push_back(b);
         return chain;
       }
-      int best = -1;
+      std::vector<int> ahead_of_v;
       for (int i = adj_begin_[static_cast<std::size_t>(v)]; i < adj_begin_[static_cast<std::size_t>(v) + 1]; ++i) {
         const int w = adj_[static_cast<std::size_t>(i)];
-        if (ahead(A, B, P(v), P(w)) <= 0 || ahead(A, B, P(w), B) <= 0) continue;
-        const bool listed = listed_.count(edge_key(v, w)) && near_line(A, B, P(w));
-        if (!listed && !within(A, B, P(w), loose)) continue;
-        if (best < 0 || ahead(A, B, P(w), P(best)) > 0) best = w;
+        if (ahead(A, B, P(v), P(w)) > 0 && ahead(A, B, P(w), B) > 0) ahead_of_v.push_back(w);
       }
+      auto nearest = [&](auto&& qualifies) {
+        int best = -1;
+        for (int w : ahead_of_v)
+          if (qualifies(w) && (best < 0 || ahead(A, B, P(w), P(best)) > 0)) best = w;
+        return best;
+      };
+      int best = nearest([&](int w) {
+        return listed_.count(edge_key(v, w)) && (near_line(A, B, P(w)) || within(A, B, P(w), loose));
+      });
+      for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
+        best = nearest([&](int w) { return within(A, B, P(w), tiers[t]); });
       if (best < 0) break;
       chain.push_back(best);
       v = best;
