@@ -15,7 +15,10 @@ work="$(cd "$build" && pwd)/package-check"
 rm -rf "$work"
 mkdir -p "$work/debs"
 
-# 1. The packages.
+# 1. The packages. cpack installs the headers from the source tree and the libraries from the
+# build: bring `lepp` (which links every packaged library) up to date first, or a stale build
+# pairs new headers with old libraries (a no-op after scripts/build.sh).
+cmake --build "$build" --target lepp > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 if ! (cd "$build" && cpack -G DEB -B "$work/debs") > "$work/cpack.log" 2>&1; then
   cat "$work/cpack.log"
   exit 1
