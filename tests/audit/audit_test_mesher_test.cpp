@@ -146,6 +146,10 @@ void expect_caught(const AuditRun& r, const std::string& bug, const std::string&
     }
     ASSERT_TRUE(fs::exists(origin_path)) << "the input the counterexample was found on is not known: " << origin;
     const Sizes before = sizes_of(origin_path);
+    // The report gives the size as found too.
+    EXPECT_EQ(cx.at("original_vertices").get<std::size_t>(), before.vertices) << cx.dump();
+    EXPECT_EQ(cx.at("original_segments").get<std::size_t>(), before.segments) << cx.dump();
+    EXPECT_EQ(cx.at("original_holes").get<std::size_t>(), before.holes) << cx.dump();
     EXPECT_LE(after.vertices, before.vertices);
     EXPECT_LE(after.segments, before.segments);
     EXPECT_LE(after.holes, before.holes);
@@ -218,9 +222,9 @@ TEST_P(AuditCatches, BugInItsRowShrunk) {
 INSTANTIATE_TEST_SUITE_P(
     SeededBugs, AuditCatches,
     ::testing::Values(BugCase{"non-delaunay", "certificate", "delaunay", "--theta 30 --cases 5", true},
-                      BugCase{"drop-segment", "certificate", "segment", "--theta 30 --cases 5"},
+                      BugCase{"drop-segment", "certificate", "segment", "--theta 30 --cases 5", true},
                       BugCase{"skinny", "min-angle", "", "--theta 30 --cases 5", true},
-                      BugCase{"loop", "termination", "", "--theta 30 --cases 5 --timeout 0.5 --shrink-seconds 8", true},
+                      BugCase{"loop", "termination", "", "--theta 30 --cases 5 --timeout 0.5 --shrink-seconds 4", true},
                       BugCase{"crash", "certificate", "crash", "--theta 30 --cases 5", true},
                       BugCase{"garbage", "certificate", "unreadable", "--theta 30 --cases 5", true},
                       BugCase{"triangle-centroid", "conformance", "", "--theta 30 --cases 5", true},
@@ -234,8 +238,10 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // The same bugs on RapidCheck's generated inputs: shrinking goes through the
-// generators' shrink trees, then the greedy shrinker. The input as found comes
-// from the same audit run with --no-shrink (same seed, same first failure).
+// generators' shrink trees, then the greedy shrinker, whose splices take a
+// polygon's corners out while keeping it closed (seed 3 finds three of the bugs
+// on a 36-vertex convex polygon: saved at 4 or 5 vertices). The input as found
+// comes from the same audit run with --no-shrink (same seed, same first failure).
 class AuditCatchesOnGenerated : public ::testing::TestWithParam<BugCase> {};
 
 TEST_P(AuditCatchesOnGenerated, BugInItsRowShrunk) {
@@ -244,15 +250,15 @@ TEST_P(AuditCatchesOnGenerated, BugInItsRowShrunk) {
   const AuditRun found = audit("gen-unshrunk-" + c.bug, mesher("--bug " + c.bug), args + " --no-shrink");
   ASSERT_FALSE(found.report.is_discarded()) << found.err;
   const AuditRun r = audit("gen-bug-" + c.bug, mesher("--bug " + c.bug), args);
-  expect_caught(r, c.bug, c.row, c.detail, &found.report);
+  expect_caught(r, c.bug, c.row, c.detail, &found.report, c.strictly_smaller);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     SeededBugs, AuditCatchesOnGenerated,
-    ::testing::Values(BugCase{"non-delaunay", "certificate", "delaunay", "--theta 25,30 --cases 24"},
-                      BugCase{"skinny", "min-angle", "", "--theta 25,30 --cases 24"},
-                      BugCase{"triangle-centroid", "conformance", "", "--theta 25,30 --cases 24"},
-                      BugCase{"no-remark10", "conformance", "", "--theta 25,30 --cases 24"}),
+    ::testing::Values(BugCase{"non-delaunay", "certificate", "delaunay", "--theta 25,30 --cases 24", true},
+                      BugCase{"skinny", "min-angle", "", "--theta 25,30 --cases 24", true},
+                      BugCase{"triangle-centroid", "conformance", "", "--theta 25,30 --cases 24", true},
+                      BugCase{"no-remark10", "conformance", "", "--theta 25,30 --cases 24", true}),
     [](const ::testing::TestParamInfo<BugCase>& info) {
       std::string name = info.param.bug;
       for (char& ch : name)

@@ -194,6 +194,9 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
         cx.vertices = smallest.vertices.size();
         cx.segments = smallest.segments.size();
         cx.holes = smallest.holes.size();
+        cx.original_vertices = input.pslg.vertices.size();
+        cx.original_segments = input.pslg.segments.size();
+        cx.original_holes = input.pslg.holes.size();
         cx.shrink_steps = sh.steps;
         cx.shrink_runs = sh.runs;
         cx.detail = last_result[row].detail;

@@ -24,7 +24,8 @@ std::string verdict_of(const RowSummary& r) {
 std::string smallest_cell(const RowSummary& r) {
   if (r.counterexamples.empty()) return r.first_detail.empty() ? "" : md_cell(r.first_detail);
   const Counterexample& c = r.counterexamples.front();
-  return fmt::format("`{}` ({} vertices, {} segments, theta {})", c.dir, c.vertices, c.segments, theta_text(c.theta));
+  return fmt::format("`{}` ({} vertices, {} segments, from {} and {}; theta {})", c.dir, c.vertices, c.segments,
+                     c.original_vertices, c.original_segments, theta_text(c.theta));
 }
 
 std::string xml_escape(const std::string& s) {
@@ -85,9 +86,10 @@ std::string markdown_report(const AuditReport& rep) {
     for (const Counterexample& c : r.counterexamples) {
       if (!any) md += "\n## Findings (shrunk)\n\n";
       any = true;
-      md += fmt::format("- **{}** theta {}: {} ({} vertices, {} segments, {} holes; {} shrink steps in {} runs; from {})\n",
+      md += fmt::format("- **{}** theta {}: {} ({} vertices, {} segments, {} holes, shrunk from {} vertices, {} segments, {} holes; "
+                        "{} shrink steps in {} runs; from {})\n",
                         row_key(c.row), theta_text(c.theta), md_cell(c.detail), c.vertices, c.segments, c.holes,
-                        c.shrink_steps, c.shrink_runs, c.input);
+                        c.original_vertices, c.original_segments, c.original_holes, c.shrink_steps, c.shrink_runs, c.input);
       md += fmt::format("  files: `{}/`", c.dir);
       if (!c.reproduce.empty()) md += fmt::format("; reproduce: `{}`", c.reproduce);
       md += "\n";
@@ -112,6 +114,9 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"vertices", c.vertices},
                     {"segments", c.segments},
                     {"holes", c.holes},
+                    {"original_vertices", c.original_vertices},
+                    {"original_segments", c.original_segments},
+                    {"original_holes", c.original_holes},
                     {"shrink_steps", c.shrink_steps},
                     {"shrink_runs", c.shrink_runs},
                     {"detail", c.detail},

@@ -56,6 +56,7 @@ struct Counterexample {
   std::string dir;          // OUT/ROW-N: input.poly, out.*, finding.svg, reproduce.sh, finding.md
   double theta = 0;
   std::size_t vertices = 0, segments = 0, holes = 0;  // of the shrunk input
+  std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;  // of the input as found
   std::size_t shrink_steps = 0, shrink_runs = 0;
   std::string detail;       // the row's one line on the shrunk input
   std::string reproduce;    // one command line
