@@ -24,8 +24,8 @@ std::string verdict_of(const RowSummary& r) {
 std::string smallest_cell(const RowSummary& r) {
   if (r.counterexamples.empty()) return r.first_detail.empty() ? "" : md_cell(r.first_detail);
   const Counterexample& c = r.counterexamples.front();
-  return fmt::format("`{}` ({} vertices, {} segments, from {} and {}; theta {})", c.dir, c.vertices, c.segments,
-                     c.original_vertices, c.original_segments, theta_text(c.theta));
+  return fmt::format("`{}` ({} vertices, {} segments, shrunk from {} vertices, {} segments; theta {})", c.dir, c.vertices,
+                     c.segments, c.original_vertices, c.original_segments, theta_text(c.theta));
 }
 
 std::string xml_escape(const std::string& s) {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -79,6 +80,14 @@ TEST(Audit, BrokenEngineIsCaughtAndShrunk) {
   nlohmann::json j = nlohmann::json::parse(json_report(r).dump());
   EXPECT_EQ(j["rows"].size(), kRows);
   EXPECT_FALSE(j["holds"].get<bool>());
+  // The size as found, next to the shrunk size.
+  EXPECT_GE(c.original_vertices, c.vertices);
+  EXPECT_GE(c.original_vertices, 3u);
+  const auto& jc = j["rows"][0]["counterexamples"][0];
+  EXPECT_EQ(jc["original_vertices"].get<std::size_t>(), c.original_vertices);
+  EXPECT_EQ(jc["original_segments"].get<std::size_t>(), c.original_segments);
+  EXPECT_EQ(jc["original_holes"].get<std::size_t>(), c.original_holes);
+  EXPECT_NE(markdown_report(r).find(fmt::format("shrunk from {} vertices", c.original_vertices)), std::string::npos);
   std::string x = junit_report(r);
   EXPECT_NE(x.find("<failure"), std::string::npos);
   EXPECT_NE(markdown_report(r).find("FAILED"), std::string::npos);
