@@ -212,7 +212,7 @@ def main():
         by_area = {}
         for m in mutants:
             by_area.setdefault(area_of(m), []).append(m)
-        order = [m for k in range(max(len(v) for v in by_area.values())) for v in by_area.values() if k < len(v)]
+        order = [v[k] for k in range(max(len(v) for v in by_area.values())) for v in by_area.values() if k < len(v)]
         for m in order:
             if only and m["id"] not in only:
                 continue
@@ -316,6 +316,11 @@ def write_report(mutants, results, path):
             L.append(f"Left out of every run (they fail on the unmutated tree too, not this harness's business): "
                      f"tests matching `{results['excluded']}`.")
         L.append("")
+    waiting = [m for m in mutants if results.get("mutants", {}).get(m["id"], {}).get("status") == "survived-quick"]
+    notes = os.path.join(ROOT, "tools", "mutation", "notes.md")
+    if os.path.exists(notes):
+        L.append(open(notes, encoding="utf-8").read().rstrip())
+        L.append("")
     L.append("## Score")
     L.append("")
     L.append("| | count |")
@@ -328,8 +333,10 @@ def write_report(mutants, results, path):
     L.append(f"| survived, not equivalent (a test is owed) | {len(survived) - len(equivalent)} |")
     if stillborn:
         L.append(f"| stillborn (did not compile; not counted) | {len(stillborn)} |")
+    if waiting:
+        L.append(f"| survived their quick tests, waiting for the whole ctest (not counted yet) | {len(waiting)} |")
     if pending:
-        L.append(f"| not run yet | {len(pending)} |")
+        L.append(f"| not decided yet (incl. those waiting) | {len(pending)} |")
     L.append("")
     L.append(f"**Mutation score (default ctest alone): {len(killed)} / {scored} = {pct(len(killed), scored)}** "
              f"of the non-equivalent mutants run; with the fuzz corpora: {pct(len(killed) + len(fuzz), scored)}.")
@@ -344,6 +351,14 @@ def write_report(mutants, results, path):
         e = sum(1 for m in s if m.get("equivalent"))
         L.append(f"| {area} | {len(ms)} | {k} | {len(s)} ({e}) |")
     L.append("")
+    if waiting:
+        L.append("## Waiting for the whole ctest")
+        L.append("")
+        L.append("These survived the tests of their own executables; the whole default ctest has not been run on them yet:")
+        L.append("")
+        for m in waiting:
+            L.append(f"- `{m['id']}` ({m['file']}): {m['bug']}.")
+        L.append("")
     if survived:
         L.append("## Survivors")
         L.append("")
