@@ -71,7 +71,7 @@ class Quality {
   // fills *out with the smallest qualifying segment pair (s1 < s2).
   bool unimprovable(const TriMesh& m, int ti, int shortest, UnimprovableTriangle* out) const {
     const FTri& f = m.t(ti);
-    const int p = f.v[next3(shortest)], q = f.v[prev3(shortest)];
+    const int p = f.v[next3(shortest)], q = f.v[prev3(shortest)], r = f.v[shortest];
     if (!mem_.on_any(p) || !mem_.on_any(q)) return false;
     bool found = false;
     int best1 = 0, best2 = 0, best_apex = -1;
@@ -82,6 +82,8 @@ class Quality {
         if (found && std::make_pair(lo, hi) >= std::make_pair(best1, best2)) return;
         int apex = small_angle_apex(s1, s2);
         if (apex < 0 || apex == p || apex == q) return;
+        // Inside the wedge: the third vertex on the apex's side of pq (section 8).
+        if (orient(m.p(p), m.p(q), m.p(r)) != orient(m.p(p), m.p(q), pt(apex))) return;
         found = true, best1 = lo, best2 = hi, best_apex = apex;
       });
     });

@@ -72,6 +72,7 @@ bool is_too_big(FH f, const FT& twice_max_area) {
 std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, const FT& sin2) {
   int i = shortest_edge(f);
   VH p = f->vertex(Cdt::ccw(i)), q = f->vertex(Cdt::cw(i));
+  const CPoint& r = f->vertex(i)->point();
   std::optional<UnimprovableTriangle> best;
   for (int s1 : p->info().segments) {
     for (int s2 : q->info().segments) {
@@ -90,6 +91,8 @@ std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, 
       K::Vector_2 w = tr.vertex[static_cast<std::size_t>(eb)]->point() - pv;
       FT dot = u * w, cross = u.x() * w.y() - u.y() * w.x();
       if (!(dot > 0 && cross * cross < sin2 * u.squared_length() * w.squared_length())) continue;
+      // Inside the wedge: the third vertex on the apex's side of pq (Section 8).
+      if (CGAL::orientation(p->point(), q->point(), r) != CGAL::orientation(p->point(), q->point(), pv)) continue;
       int lo = std::min(s1, s2), hi = std::max(s1, s2);
       if (best && std::make_pair(best->segment1, best->segment2) <= std::make_pair(lo, hi)) continue;
       UnimprovableTriangle u_t;
