@@ -576,6 +576,7 @@ class Certifier {
       return static_cast<int>(3 * t) + best;
     }();
     const int p = from(shortest_half), q = to(shortest_half);
+    const int r = T(t)[static_cast<std::size_t>((shortest_half % 3 + 2) % 3)];
     for (int s1 : segments_of(p))
       for (int s2 : segments_of(q)) {
         if (s1 == s2) continue;
@@ -587,6 +588,8 @@ class Certifier {
           const Point& V = pslg_.vertices[static_cast<std::size_t>(v_in)];
           const Point& U = pslg_.vertices[static_cast<std::size_t>(x.a == v_in ? x.b : x.a)];
           const Point& W = pslg_.vertices[static_cast<std::size_t>(y.a == v_in ? y.b : y.a)];
+          // Inside the wedge: the third vertex on the apex's side of pq.
+          if (exact::orient(P(p), P(q), P(r)) != exact::orient(P(p), P(q), V)) continue;
           if (exact::acute_angle_sin2_below(V, U, W, s_hi)) return true;
         }
       }
@@ -608,14 +611,21 @@ class Certifier {
     if (std::abs(X.x - V.x) > 2 * a.radius || std::abs(X.y - V.y) > 2 * a.radius) return false;  // far: cheap
     return exact::compare_squared_length(V, X, V, pslg_.vertices[static_cast<std::size_t>(a.near_end)]) <= 0;
   }
+  // Triangle pqr, pq joining the two arms of a, lies inside the wedge: r on the apex's
+  // side of pq (exact; the apex on the line pq is not inside).
+  bool inside_wedge(int p, int q, int r, const SmallInputAngle& a) const {
+    const Point& V = pslg_.vertices[static_cast<std::size_t>(a.apex)];
+    return exact::orient(P(p), P(q), P(r)) == exact::orient(P(p), P(q), V);
+  }
   // The first small input angle (Report::small_angles order) that exempts triangle t, or -1.
   // Every shortest edge is tried (exact ties kept), so the answer does not depend on the
   // mesh's vertex numbering. Exempt iff, for some angle a and some shortest edge pq:
-  //  span: p is on one arm of a and q on the other (the edge crosses the wedge), or
+  //  span: p is on one arm of a and q on the other (the edge crosses the wedge) and the
+  //        third vertex lies on the apex's side of pq (the triangle is inside the wedge), or
   //  near: p and q lie in the disk of a (within the shorter segment's length of the apex).
   int exempting_angle(std::size_t t) const {
     const Tri& x = T(t);
-    std::array<std::array<int, 2>, 3> shortest{};
+    std::array<std::array<int, 3>, 3> shortest{};  // p, q, and the third vertex
     int count = 0;
     for (int i = 0; i < 3; ++i) {
       const int p = x[static_cast<std::size_t>(i)], q = x[static_cast<std::size_t>((i + 1) % 3)];
@@ -624,16 +634,17 @@ class Certifier {
         if (j != i)
           is_shortest = exact::compare_squared_length(P(p), P(q), P(x[static_cast<std::size_t>(j)]),
                                                       P(x[static_cast<std::size_t>((j + 1) % 3)])) <= 0;
-      if (is_shortest) shortest[static_cast<std::size_t>(count++)] = {p, q};
+      if (is_shortest) shortest[static_cast<std::size_t>(count++)] = {p, q, x[static_cast<std::size_t>((i + 2) % 3)]};
     }
     const auto& angles = report_.small_angles;
     for (std::size_t k = 0; k < angles.size(); ++k) {
       const SmallInputAngle& a = angles[k];
       for (int e = 0; e < count; ++e) {
         const int p = shortest[static_cast<std::size_t>(e)][0], q = shortest[static_cast<std::size_t>(e)][1];
+        const int r = shortest[static_cast<std::size_t>(e)][2];
         const bool span = (on_arm(p, a.segment1, a.end1) && on_arm(q, a.segment2, a.end2)) ||
                           (on_arm(p, a.segment2, a.end2) && on_arm(q, a.segment1, a.end1));
-        if (span) return static_cast<int>(k);
+        if (span && inside_wedge(p, q, r, a)) return static_cast<int>(k);
         if (in_disk(p, a) && in_disk(q, a)) return static_cast<int>(k);
       }
     }
