@@ -18,6 +18,7 @@
 #include "cgal_mesh.h"
 #include "cgal_mesher.h"
 #include "lepp/certify.h"
+#include "lepp/fast.h"
 #include "lepp/io.h"
 #include "lepp/reference.h"
 #include "lepp/small_input_angles.h"
@@ -299,6 +300,65 @@ TEST(SmallAngleExemption, SameVerdictWhateverTheNumberingOrTheProgramsList) {
     const certify::Report listed = certify::certify(p, lepp.mesh, with_list);
     EXPECT_EQ(exempt_set(lepp.mesh, listed), exempt_set(lepp.mesh, certify_at(p, lepp.mesh, 30, true))) << name;
     EXPECT_TRUE(listed.certified()) << certify::format_report(listed);
+  }
+}
+
+// ALGORITHM.md section 8 and the span clause leave a triangle only inside the wedge. On
+// a 10.08-degree corner (apex (0, 0), arms to (10, 0) and (9, 1.6)) the initial CDT has
+// triangle (10, 0) (10, 10) (9, 1.6), 6.79 degrees: its shortest edge joins the two arms
+// but it lies beyond the wedge's mouth. Both engines refine it (the same mesh), whose
+// smallest angle is then the input angle itself; the certifier neither exempts it nor
+// accepts it as unimprovable when a list names it.
+TEST(SmallAngleExemption, TriangleBeyondTheWedgesMouthIsRefined) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(read_poly(LEPP_SOURCE_DIR "/tests/audit/inputs/small-angle-corner.poly"), warnings);
+  auto has_beyond = [](const Mesh& m) {
+    std::set<std::pair<double, double>> want{{10, 0}, {10, 10}, {9, 1.6}};
+    for (const Tri& x : m.triangles) {
+      std::set<std::pair<double, double>> c;
+      for (int v : x) c.insert({m.vertices[static_cast<std::size_t>(v)].x, m.vertices[static_cast<std::size_t>(v)].y});
+      if (c == want) return true;
+    }
+    return false;
+  };
+  // The initial CDT has it; the rule does not exempt it, and a list naming it is refused.
+  const Mesh cdt = test::cgal_cdt(p);
+  ASSERT_TRUE(has_beyond(cdt));
+  const certify::Report initial = certify_at(p, cdt, 30, true);
+  EXPECT_EQ(initial.count(certify::Reason::AngleBelowTheta), 1u) << certify::format_report(initial);
+  EXPECT_GE(initial.exempt_count, 1u);  // the triangle at the apex, inside the wedge, is exempt
+  certify::Options listing;
+  listing.min_angle_deg = 30;
+  for (const Tri& x : cdt.triangles) {
+    UnimprovableTriangle u;
+    u.triangle = x;
+    listing.unimprovable.push_back(u);  // every triangle claimed unimprovable
+  }
+  const certify::Report claimed = certify::certify(p, cdt, listing);
+  EXPECT_EQ(claimed.count(certify::Reason::UnimprovableRuleFails), 1u) << certify::format_report(claimed);
+  EXPECT_EQ(claimed.unimprovable_accepted.size(), 1u) << certify::format_report(claimed);
+  for (Method method : {Method::Centroid, Method::Midpoint}) {
+    RefineOptions o;
+    o.min_angle_deg = 30;
+    o.method = method;
+    const RefineResult ref = reference::refine(p, o), fast = fast::refine(p, o);
+    const std::string what = to_string(method);
+    EXPECT_EQ(ref.mesh.vertices, fast.mesh.vertices) << what;
+    EXPECT_EQ(ref.mesh.triangles, fast.mesh.triangles) << what;
+    EXPECT_EQ(ref.outcome, Outcome::Unimprovable) << what;
+    EXPECT_GT(ref.steiner_points, 0) << what;
+    EXPECT_FALSE(has_beyond(ref.mesh)) << what;
+    const certify::Report r = certify_at(p, ref.mesh, 30, true);
+    EXPECT_TRUE(r.certified()) << what << "\n" << certify::format_report(r);
+    EXPECT_GE(r.exempt_count, ref.unimprovable.size()) << what;
+    EXPECT_GT(r.stats.min_angle_deg, 10.08) << what;  // the input angle, 10.0806 degrees
+    certify::Options with_list;
+    with_list.min_angle_deg = 30;
+    with_list.exempt_small_input_angles = true;
+    with_list.unimprovable = ref.unimprovable;
+    const certify::Report listed = certify::certify(p, ref.mesh, with_list);
+    EXPECT_TRUE(listed.certified()) << what << "\n" << certify::format_report(listed);
+    EXPECT_EQ(listed.unimprovable_accepted.size(), ref.unimprovable.size()) << what;
   }
 }
 
