@@ -80,10 +80,10 @@ class Quality {
         if (s1 == s2) return;
         int lo = std::min(s1, s2), hi = std::max(s1, s2);
         if (found && std::make_pair(lo, hi) >= std::make_pair(best1, best2)) return;
-        int apex = small_angle_apex(s1, s2);
+        int end1 = -1, end2 = -1;
+        int apex = small_angle_apex(s1, s2, &end1, &end2);
         if (apex < 0 || apex == p || apex == q) return;
-        // Inside the wedge: the third vertex on the apex's side of pq (section 8).
-        if (orient(m.p(p), m.p(q), m.p(r)) != orient(m.p(p), m.p(q), pt(apex))) return;
+        if (!in_wedge(m.p(r), r, s1, s2, apex, end1, end2)) return;
         found = true, best1 = lo, best2 = hi, best_apex = apex;
       });
     });
@@ -97,8 +97,19 @@ class Quality {
   }
 
  private:
-  // The shared endpoint of segments s1, s2 if the angle between them there is below theta, else -1.
-  int small_angle_apex(int s1, int s2) const {
+  // The triangle lies in the wedge (section 8): its third vertex r on one of the two
+  // segments, or in the closed sector at the apex between them (two orientation tests).
+  bool in_wedge(const Point& pr, int r, int s1, int s2, int apex, int end1, int end2) const {
+    bool on_arm = false;
+    mem_.for_each(r, [&](int s) { on_arm = on_arm || s == s1 || s == s2; });
+    if (on_arm) return true;
+    const Point &v = pt(apex), &e1 = pt(end1), &e2 = pt(end2);
+    const int sigma = orient(v, e1, e2);
+    return orient(v, e1, pr) * sigma >= 0 && orient(v, pr, e2) * sigma >= 0;
+  }
+  // The shared endpoint of segments s1, s2 if the angle between them there is below theta, else -1;
+  // *end1, *end2 their other endpoints.
+  int small_angle_apex(int s1, int s2, int* end1, int* end2) const {
     const Segment& a = pslg_.segments[static_cast<std::size_t>(s1)];
     const Segment& b = pslg_.segments[static_cast<std::size_t>(s2)];
     int v, oa, ob;
@@ -108,6 +119,7 @@ class Quality {
     else if (a.b == b.b) v = a.b, oa = a.a, ob = b.a;
     else return -1;
     const Point &pv = pt(v), &pa = pt(oa), &pb = pt(ob);
+    *end1 = oa, *end2 = ob;
     return dot_sign(pv, pa, pb) > 0 && skinny_at(pv, pa, pb, s_) ? v : -1;
   }
   double angle_deg(int apex, int s1, int s2) const {

@@ -91,8 +91,15 @@ std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, 
       K::Vector_2 w = tr.vertex[static_cast<std::size_t>(eb)]->point() - pv;
       FT dot = u * w, cross = u.x() * w.y() - u.y() * w.x();
       if (!(dot > 0 && cross * cross < sin2 * u.squared_length() * w.squared_length())) continue;
-      // Inside the wedge: the third vertex on the apex's side of pq (Section 8).
-      if (CGAL::orientation(p->point(), q->point(), r) != CGAL::orientation(p->point(), q->point(), pv)) continue;
+      // Inside the wedge (Section 8): the third vertex on s1 or s2, or in the closed
+      // sector at v between them.
+      const std::vector<int>& on = f->vertex(i)->info().segments;
+      if (std::find(on.begin(), on.end(), s1) == on.end() && std::find(on.begin(), on.end(), s2) == on.end()) {
+        const CPoint &e1 = tr.vertex[static_cast<std::size_t>(ea)]->point(), &e2 = tr.vertex[static_cast<std::size_t>(eb)]->point();
+        const int sigma = static_cast<int>(CGAL::orientation(pv, e1, e2));
+        if (static_cast<int>(CGAL::orientation(pv, e1, r)) * sigma < 0 || static_cast<int>(CGAL::orientation(pv, r, e2)) * sigma < 0)
+          continue;
+      }
       int lo = std::min(s1, s2), hi = std::max(s1, s2);
       if (best && std::make_pair(best->segment1, best->segment2) <= std::make_pair(lo, hi)) continue;
       UnimprovableTriangle u_t;

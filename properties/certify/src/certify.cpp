@@ -588,8 +588,12 @@ class Certifier {
           const Point& V = pslg_.vertices[static_cast<std::size_t>(v_in)];
           const Point& U = pslg_.vertices[static_cast<std::size_t>(x.a == v_in ? x.b : x.a)];
           const Point& W = pslg_.vertices[static_cast<std::size_t>(y.a == v_in ? y.b : y.a)];
-          // Inside the wedge: the third vertex on the apex's side of pq.
-          if (exact::orient(P(p), P(q), P(r)) != exact::orient(P(p), P(q), V)) continue;
+          // Inside the wedge: the third vertex on s1 or s2, or in the closed sector at v between them.
+          const std::vector<int> on = segments_of(r);
+          if (std::find(on.begin(), on.end(), s1) == on.end() && std::find(on.begin(), on.end(), s2) == on.end()) {
+            const int sigma = exact::orient(V, U, W);
+            if (exact::orient(V, U, P(r)) * sigma < 0 || exact::orient(V, P(r), W) * sigma < 0) continue;
+          }
           if (exact::acute_angle_sin2_below(V, U, W, s_hi)) return true;
         }
       }
@@ -611,17 +615,19 @@ class Certifier {
     if (std::abs(X.x - V.x) > 2 * a.radius || std::abs(X.y - V.y) > 2 * a.radius) return false;  // far: cheap
     return exact::compare_squared_length(V, X, V, pslg_.vertices[static_cast<std::size_t>(a.near_end)]) <= 0;
   }
-  // Triangle pqr, pq joining the two arms of a, lies inside the wedge: r on the apex's
-  // side of pq (exact; the apex on the line pq is not inside).
-  bool inside_wedge(int p, int q, int r, const SmallInputAngle& a) const {
+  // Triangle pqr, pq joining the two arms of a, lies in the wedge: r is on an arm (or is
+  // the apex), or in the closed sector from segment1 counter-clockwise to segment2 (exact).
+  bool inside_wedge(int r, const SmallInputAngle& a) const {
+    if (on_arm(r, a.segment1, a.end1) || on_arm(r, a.segment2, a.end2)) return true;
     const Point& V = pslg_.vertices[static_cast<std::size_t>(a.apex)];
-    return exact::orient(P(p), P(q), P(r)) == exact::orient(P(p), P(q), V);
+    const Point &E1 = pslg_.vertices[static_cast<std::size_t>(a.end1)], &E2 = pslg_.vertices[static_cast<std::size_t>(a.end2)];
+    return exact::orient(V, E1, P(r)) >= 0 && exact::orient(V, P(r), E2) >= 0;
   }
   // The first small input angle (Report::small_angles order) that exempts triangle t, or -1.
   // Every shortest edge is tried (exact ties kept), so the answer does not depend on the
   // mesh's vertex numbering. Exempt iff, for some angle a and some shortest edge pq:
   //  span: p is on one arm of a and q on the other (the edge crosses the wedge) and the
-  //        third vertex lies on the apex's side of pq (the triangle is inside the wedge), or
+  //        triangle lies in the wedge (its third vertex on an arm or in the sector), or
   //  near: p and q lie in the disk of a (within the shorter segment's length of the apex).
   int exempting_angle(std::size_t t) const {
     const Tri& x = T(t);
@@ -644,7 +650,7 @@ class Certifier {
         const int r = shortest[static_cast<std::size_t>(e)][2];
         const bool span = (on_arm(p, a.segment1, a.end1) && on_arm(q, a.segment2, a.end2)) ||
                           (on_arm(p, a.segment2, a.end2) && on_arm(q, a.segment1, a.end1));
-        if (span && inside_wedge(p, q, r, a)) return static_cast<int>(k);
+        if (span && inside_wedge(r, a)) return static_cast<int>(k);
         if (in_disk(p, a) && in_disk(q, a)) return static_cast<int>(k);
       }
     }
