@@ -30,6 +30,7 @@ struct RefineArgs {
   std::int64_t max_steiner = -1;
   double max_area = 0;
   double time_limit = 0;
+  double edge_floor = -1;
   bool json = false;
   bool quiet = false;
   bool trace = false;
@@ -65,6 +66,7 @@ int run_refine(const RefineArgs& args) {
   options.max_steiner = args.max_steiner;
   options.max_area = args.max_area;
   options.time_limit_seconds = args.time_limit;
+  options.edge_floor = args.edge_floor;
   options.trace = args.trace;
   if (!args.quiet && !args.json) {
     options.on_progress = [](std::int64_t n) { std::fprintf(stderr, "\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
@@ -174,6 +176,10 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->add_option("--max-area", args->max_area, "Size bound: a triangle larger than this is bad too (Triangle's -a)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds (outcome time-limit, exit 3)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--edge-floor", args->edge_floor,
+                  "Stop (outcome edge-floor, exit 3) when an edge shorter than this appears; default 2^-20 x the "
+                  "input's smallest feature (docs/ALGORITHM.md)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--convex-hull", args->domain.convex_hull,
                 "Add the convex hull's edges as segments, so open boundaries mesh (Triangle's -c); a point set (a .node, "

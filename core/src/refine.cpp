@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace lepp {
 
@@ -26,15 +27,56 @@ std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& optio
   return budget;
 }
 
-double default_edge_floor(const Pslg& pslg) {
-  double shortest = std::numeric_limits<double>::infinity();
+namespace {
+
+// Distance from p to the closed segment ab (doubles; only sizes a guard).
+double distance_to_segment(const Point& p, const Point& a, const Point& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+// The input's smallest feature: the shortest segment, the closest two vertices,
+// and the closest vertex to a segment it does not end (zero distances, which a
+// validated input does not have, are skipped). Vertices sorted by x and pruned
+// by the best distance so far: near n log n on spread-out input.
+double smallest_feature(const Pslg& pslg) {
+  const auto& v = pslg.vertices;
+  double best = std::numeric_limits<double>::infinity();
+  auto keep = [&](double d) {
+    if (d > 0 && d < best) best = d;
+  };
+  for (const Segment& s : pslg.segments)
+    keep(std::hypot(v[static_cast<std::size_t>(s.a)].x - v[static_cast<std::size_t>(s.b)].x,
+                    v[static_cast<std::size_t>(s.a)].y - v[static_cast<std::size_t>(s.b)].y));
+  std::vector<std::size_t> by_x(v.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t i, std::size_t j) { return v[i].x < v[j].x || (v[i].x == v[j].x && i < j); });
+  for (std::size_t i = 0; i < by_x.size(); ++i)
+    for (std::size_t j = i + 1; j < by_x.size() && v[by_x[j]].x - v[by_x[i]].x < best; ++j)
+      keep(std::hypot(v[by_x[j]].x - v[by_x[i]].x, v[by_x[j]].y - v[by_x[i]].y));
   for (const Segment& s : pslg.segments) {
-    const Point& a = pslg.vertices[static_cast<std::size_t>(s.a)];
-    const Point& b = pslg.vertices[static_cast<std::size_t>(s.b)];
-    shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y));
+    const Point& a = v[static_cast<std::size_t>(s.a)];
+    const Point& b = v[static_cast<std::size_t>(s.b)];
+    const double x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x);
+    const double y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
+    auto first = std::lower_bound(by_x.begin(), by_x.end(), x0 - best, [&](std::size_t i, double x) { return v[i].x < x; });
+    for (auto it = first; it != by_x.end() && v[*it].x <= x1 + best; ++it) {
+      const std::size_t i = *it;
+      if (static_cast<int>(i) == s.a || static_cast<int>(i) == s.b || v[i].y < y0 - best || v[i].y > y1 + best) continue;
+      keep(distance_to_segment(v[i], a, b));
+    }
   }
-  if (!std::isfinite(shortest)) return 0;
-  return std::ldexp(shortest, -20);  // a million times shorter than the shortest input segment
+  return best;
+}
+
+}  // namespace
+
+double default_edge_floor(const Pslg& pslg) {
+  const double feature = smallest_feature(pslg);
+  if (!std::isfinite(feature)) return 0;
+  return std::ldexp(feature, -20);  // a million times shorter than the input's smallest feature
 }
 
 const char* to_string(Outcome outcome) {

@@ -125,8 +125,17 @@ TEST(GuardCli, TimeLimit) {
 }
 
 TEST(GuardCli, EdgeFloor) {
-  // Tips 1e-12 apart: the edges refinement needs there are far below 2^-20 x the shortest segment.
-  expect_stopped_and_certified(kSource + "/corpus/hostile/near-touching.poly", "--min-angle 30", "edge-floor");
+  // Tips 1e-12 apart: refinement there needs edges far below a floor of 1e-9.
+  expect_stopped_and_certified(kSource + "/corpus/hostile/near-touching.poly", "--min-angle 30 --edge-floor 1e-9", "edge-floor");
+}
+
+TEST(GuardCli, DefaultEdgeFloorFollowsTheSmallestFeature) {
+  // The same input converges with the default floor: 2^-20 x the 1e-12 between the
+  // tips, not 2^-20 x the shortest segment (0.2), which stopped it at 20 to 30 degrees.
+  const std::string prefix = (scratch() / "near-touching").string();
+  CliRun r = refine(kSource + "/corpus/hostile/near-touching.poly -o " + prefix + " -q --min-angle 30");
+  if (engine_missing(r)) GTEST_SKIP() << r.err;
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 TEST(GuardCli, Unimprovable) {
