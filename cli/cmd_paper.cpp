@@ -5,7 +5,6 @@
 //
 // Every number on the page comes from the runs made here; the paper's own
 // numbers are the only constants (they sit beside ours, with the difference).
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cgal_mesher.h"
+#include "shell_command.h"
 #include "triangle_wasm.h"
 #include "commands.h"
 #include "lepp/fast.h"
@@ -149,24 +149,6 @@ std::vector<int> quality_histogram(const Mesh& mesh) {
 constexpr double kAngleSlack = 1e-3;
 
 std::string theta_tag(double theta) { return fmt::format("{:g}", theta); }
-
-// Runs a shell command, its stdout into `output`; returns the exit status.
-int shell(const std::string& command, std::string& output) {
-  output.clear();
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  char buf[4096];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) output.append(buf, n);
-  int status = pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 class Study {
  public:
@@ -738,9 +720,9 @@ int run_paper(const PaperArgs& args) {
   std::string output;
   bool plots_ok = false;
   if (!args.no_plots) {
-    std::string cmd = fmt::format("/usr/bin/python3 {} {} {} 2>&1", quote(args.root + "/paper/plots.py"),
-                                  quote((figdir / "results.json").string()), quote(figdir.string()));
-    plots_ok = shell(cmd, output) == 0;
+    std::string cmd = fmt::format("/usr/bin/python3 {} {} {} 2>&1", others::shell_quote(args.root + "/paper/plots.py"),
+                                  others::shell_quote((figdir / "results.json").string()), others::shell_quote(figdir.string()));
+    plots_ok = others::run_shell(cmd, output) == 0;
     if (!plots_ok) std::fprintf(stderr, "lepp paper: plots failed:\n%s\n", output.c_str());
   }
   for (const std::string method : {"centroid", "triangle"}) {
@@ -751,9 +733,9 @@ int run_paper(const PaperArgs& args) {
       continue;
     }
     std::string cmd = fmt::format("{} render {} -o {} --color quality --highlight bad --min-angle 32 --width 700 --title {} 2>&1",
-                                  quote(self_exe()), quote(r->mesh_prefix), quote(svg.string()),
-                                  quote(fmt::format("Circles240, {}, 32°", method == "centroid" ? "Lepp-centroid" : "Triangle")));
-    if (shell(cmd, output) != 0) std::fprintf(stderr, "lepp paper: render failed:\n%s\n", output.c_str());
+                                  others::shell_quote(self_exe()), others::shell_quote(r->mesh_prefix), others::shell_quote(svg.string()),
+                                  others::shell_quote(fmt::format("Circles240, {}, 32°", method == "centroid" ? "Lepp-centroid" : "Triangle")));
+    if (others::run_shell(cmd, output) != 0) std::fprintf(stderr, "lepp paper: render failed:\n%s\n", output.c_str());
   }
 
   double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
