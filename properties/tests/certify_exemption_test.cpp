@@ -49,7 +49,7 @@ Mesh lepp_mesh(const Pslg& p, double theta) {
   return reference::refine(p, o).mesh;  // its unimprovable list is not given to the certifier
 }
 
-// Triangle (triangle-wasm under node, as cli/cmd_paper.cpp runs it), or nullopt when not installed.
+// Triangle (triangle-wasm under node, as `lepp paper` runs it), or nullopt when not installed.
 std::optional<Mesh> triangle_mesh(const std::string& name, int theta) {
   const fs::path modules = LEPP_SOURCE_DIR "/tools/triangle/node_modules/triangle-wasm";
   if (!fs::exists(modules)) return std::nullopt;

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lepp/paper/figures.h"
+
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "lepp/io.h"
+#include "lepp/render.h"
+#include "shell_command.h"
+
+namespace fs = std::filesystem;
+
+namespace lepp::paper {
+
+bool make_plots(const std::string& root, const std::string& figdir, std::string& output) {
+  std::string cmd = fmt::format("/usr/bin/python3 {} {} {} 2>&1", others::shell_quote(root + "/paper/plots.py"),
+                                others::shell_quote((fs::path(figdir) / "results.json").string()), others::shell_quote(figdir));
+  return others::run_shell(cmd, output) == 0;
+}
+
+void draw_fig13(const Results& res, const std::string& figdir, const std::function<void(const std::string&)>& note) {
+  for (const std::string method : {"centroid", "triangle"}) {
+    const Run* r = res.find("circles240", method, 32);
+    fs::path svg = fs::path(figdir) / fmt::format("fig13_circles240_{}_32.svg", method);
+    if (!r || r->stats.triangles == 0) {
+      fs::remove(svg);
+      continue;
+    }
+    render::RenderOptions options;
+    options.color = render::ColorBy::Quality;
+    options.highlight_bad = true;
+    options.min_angle_deg = 32;
+    options.width = 700;
+    options.title = fmt::format("Circles240, {}, 32°", method == "centroid" ? "Lepp-centroid" : "Triangle");
+    try {
+      std::string drawing = render::render_svg(read_mesh(r->mesh_prefix), options);
+      std::ofstream out(svg);
+      out << drawing;
+      if (!out) throw std::runtime_error("cannot write " + svg.string());
+    } catch (const std::exception& e) {
+      if (note) note(fmt::format("render failed:\n{}: {}\n", r->mesh_prefix, e.what()));
+    }
+  }
+}
+
+}  // namespace lepp::paper

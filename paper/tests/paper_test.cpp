@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The pure parts of lepp::paper: the paper's numbers, the distance to them, the
+// angle up to which a method works, the table cells, the quality histogram.
+#include <gtest/gtest.h>
+
+#include "lepp/paper/cells.h"
+#include "lepp/paper/measures.h"
+#include "lepp/paper/numbers.h"
+#include "lepp/paper/runner.h"
+#include "lepp/paper/summary_table.h"
+
+namespace lepp::paper {
+namespace {
+
+// (Inside a TEST body, Run is testing::Test::Run: runs are paper::Run there.)
+Run finished_run(const std::string& problem, const std::string& method, double theta, std::int64_t steiner,
+                 const std::string& reading = "") {
+  Run r;
+  r.problem = problem;
+  r.reading = reading;
+  r.method = method;
+  r.theta = theta;
+  r.steiner = steiner;
+  r.finished = true;
+  r.outcome = "converged";
+  r.stats.triangles = 100;
+  r.stats.min_angle_deg = theta + 0.5;
+  return r;
+}
+
+TEST(PaperNumbers, TableOneAndFig12) {
+  EXPECT_EQ(paper_number("A", "triangle", 30), 47);        // Table 1 (the Triangle runner smoke test's 47)
+  EXPECT_EQ(paper_number("rect162", "centroid", 36), 5473);
+  EXPECT_EQ(paper_number("square400", "centroid", 10), 185);  // Fig. 12's caption, not in Table 1
+  EXPECT_EQ(paper_number("square400", "midpoint", 25), 668);
+  EXPECT_EQ(paper_number("square400", "centroid", 25), 491);  // both say so
+  EXPECT_FALSE(paper_number("square400", "triangle", 36));  // "-" in Table 1
+  EXPECT_FALSE(paper_number("circles240", "midpoint", 25));
+  EXPECT_FALSE(paper_number("A", "centroid", 33));
+  EXPECT_FALSE(paper_number("nosuch", "centroid", 30));
+  for (const auto& p : paper_problems()) {
+    EXPECT_EQ(p.centroid.size(), table_angles().size()) << p.name;
+    EXPECT_EQ(p.triangle.size(), table_angles().size()) << p.name;
+  }
+}
+
+// A's centroid column: 30, 43, 44, 49, 57 at 20, 25, 28, 30, 32 degrees.
+TEST(MedianRelativeGap, OddAndEvenCountsOnlyFinishedRunsOfTheReading) {
+  Results res;
+  res.add(finished_run("A", "centroid", 20, 33));  // gap 0.1
+  res.add(finished_run("A", "centroid", 25, 43));  // 0
+  res.add(finished_run("A", "centroid", 28, 55));  // 0.25
+  paper::Run unfinished = finished_run("A", "centroid", 30, 4900);
+  unfinished.finished = false;
+  res.add(unfinished);                                       // not counted
+  res.add(finished_run("A", "centroid", 15, 1000));          // no paper number: not counted
+  res.add(finished_run("A", "centroid", 32, 5700, "A-other"));  // another reading
+  res.add(finished_run("A", "midpoint", 32, 5700));          // another method
+
+  auto g = median_relative_gap(res, "A", "centroid", "");
+  ASSERT_TRUE(g);
+  EXPECT_EQ(g->angles, 3);
+  EXPECT_DOUBLE_EQ(g->median, 0.1);
+
+  res.add(finished_run("A", "centroid", 32, 57 + 57 / 2));  // gap 28/57, the largest: median of 4 is (0.1 + 0.25) / 2
+  g = median_relative_gap(res, "A", "centroid", "");
+  ASSERT_TRUE(g);
+  EXPECT_EQ(g->angles, 4);
+  EXPECT_DOUBLE_EQ(g->median, (0.1 + 0.25) / 2);
+
+  auto other = median_relative_gap(res, "A", "centroid", "A-other");
+  ASSERT_TRUE(other);
+  EXPECT_EQ(other->angles, 1);
+  EXPECT_DOUBLE_EQ(other->median, (5700.0 - 57) / 57);
+
+  EXPECT_FALSE(median_relative_gap(res, "A", "midpoint", ""));  // no paper column for midpoint
+  EXPECT_FALSE(median_relative_gap(res, "A", "triangle", ""));  // no run
+}
+
+TEST(ConvergesUpTo, StopsAtTheFirstRunThatFailsOrLeavesAnAngleBelowTheta) {
+  const std::vector<double> angles = {10, 15, 20, 25, 28, 30};
+  Results res;
+  EXPECT_FALSE(converges_up_to(res, "A", "centroid", angles));
+  res.add(finished_run("A", "centroid", 10, 5));
+  res.add(finished_run("A", "centroid", 20, 9));  // 15 missing: skipped
+  EXPECT_EQ(converges_up_to(res, "A", "centroid", angles), 20.0);
+
+  paper::Run below = finished_run("A", "centroid", 25, 12);
+  below.stats.min_angle_deg = 25 - 2 * kAngleSlack;  // finished by its own rule, an angle left below theta
+  res.add(below);
+  res.add(finished_run("A", "centroid", 28, 14));  // after the failure: not counted
+  EXPECT_EQ(converges_up_to(res, "A", "centroid", angles), 20.0);
+
+  Results slack;
+  paper::Run within = finished_run("A", "cgal", 10, 5);
+  within.stats.min_angle_deg = 10 - kAngleSlack / 2;  // within the slack: meets theta
+  slack.add(within);
+  paper::Run unfinished = finished_run("A", "cgal", 15, 5000);
+  unfinished.finished = false;
+  slack.add(unfinished);
+  slack.add(finished_run("A", "cgal", 20, 50));
+  EXPECT_EQ(converges_up_to(slack, "A", "cgal", angles), 10.0);
+  EXPECT_FALSE(converges_up_to(slack, "A", "centroid", angles));
+}
+
+TEST(Cells, PointsAddedAndWhyARunStopped) {
+  EXPECT_EQ(points_cell(nullptr), "");
+  paper::Run r = finished_run("A", "centroid", 30, 49);
+  EXPECT_EQ(points_cell(&r), "49");
+  r.stats.min_angle_deg = 29;
+  EXPECT_EQ(points_cell(&r), "49 †");
+
+  paper::Run stopped = finished_run("A", "centroid", 36, 5000);
+  stopped.finished = false;
+  for (auto [outcome, cell] : std::vector<std::pair<std::string, std::string>>{{"steiner-budget", "> 5000 (budget)"},
+                                                                             {"edge-floor", "> 5000 (edge floor)"},
+                                                                             {"time-limit", "> 5000 (time)"},
+                                                                             {"did-not-finish", "> 5000 (dnf)"}}) {
+    stopped.outcome = outcome;
+    EXPECT_EQ(points_cell(&stopped), cell) << outcome;
+  }
+  stopped.outcome = "engine error: boom";
+  EXPECT_EQ(points_cell(&stopped), "n/a");
+  paper::Run failed;
+  failed.outcome = "triangle failed (1): no";
+  EXPECT_EQ(points_cell(&failed), "failed");
+}
+
+TEST(Cells, DifferenceToThePaper) {
+  paper::Run r = finished_run("A", "centroid", 30, 55);
+  EXPECT_EQ(difference_cell(&r, 50), "+5 (+10%)");
+  r.steiner = 40;
+  EXPECT_EQ(difference_cell(&r, 50), "-10 (-20%)");
+  r.steiner = 50;
+  EXPECT_EQ(difference_cell(&r, 50), "+0 (+0%)");
+  EXPECT_EQ(difference_cell(&r, std::nullopt), "");
+  EXPECT_EQ(difference_cell(nullptr, 50), "");
+  r.finished = false;
+  EXPECT_EQ(difference_cell(&r, 50), "");
+}
+
+TEST(SummaryTable, OneLinePerRunInProblemMethodAngleOrder) {
+  Results res;
+  res.add(finished_run("A", "triangle", 30, 47));
+  res.add(finished_run("square400", "centroid", 10, 204));
+  res.add(finished_run("A", "centroid", 15, 20, "A-other"));  // a reading: not in the table
+  std::string table = summary_table(res, {10, 15, 30});
+  EXPECT_EQ(table,
+            "problem      method    theta   steiner   paper  min_angle outcome\n"
+            "square400    centroid     10       204     185     10.500 converged\n"
+            "A            triangle     30        47      47     30.500 converged\n");
+}
+
+TEST(QualityHistogram, EquilateralInTheTopBinNeedleInTheBottom) {
+  Mesh m;
+  m.vertices = {{0, 0}, {1, 0}, {0.5, 0.8660254037844386}, {2, 0}, {1.5, 1e-6}};
+  m.triangles = {{0, 1, 2}, {1, 3, 4}};
+  std::vector<int> h = quality_histogram(m);
+  ASSERT_EQ(h.size(), 20u);
+  EXPECT_EQ(h[19], 1);
+  EXPECT_EQ(h[0], 1);
+  int total = 0;
+  for (int n : h) total += n;
+  EXPECT_EQ(total, 2);
+}
+
+}  // namespace
+}  // namespace lepp::paper
