@@ -10,23 +10,12 @@
 
 #include "lepp/io.h"
 #include "lepp/render.h"
+#include "xml_escape.h"
 
 namespace fs = std::filesystem;
 
 namespace lepp::audit {
 namespace {
-
-std::string xml_escape(const std::string& s) {
-  std::string r;
-  for (char c : s) {
-    if (c == '<') r += "&lt;";
-    else if (c == '>') r += "&gt;";
-    else if (c == '&') r += "&amp;";
-    else if (c == '"') r += "&quot;";
-    else r += c;
-  }
-  return r;
-}
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path);
@@ -90,7 +79,7 @@ std::string finding_svg(const Pslg& input, const Mesh* mesh, const RowResult& re
         s += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"5\" fill=\"none\" stroke=\"red\" stroke-width=\"2\"/>\n", X(p.x), Y(p.y));
   }
   s += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" font-family=\"sans-serif\" font-size=\"13\">{}</text>\n", margin,
-                   h - 10, xml_escape(title));
+                   h - 10, detail::xml_escape(title));
   s += "</svg>\n";
   return s;
 }

@@ -4,9 +4,12 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/command_engine.h"
+#include "xml_escape.h"
 
 namespace lepp::audit {
 namespace {
+
+using detail::xml_escape;
 
 std::string thetas_text(const std::vector<double>& thetas) {
   std::string s;
@@ -26,20 +29,6 @@ std::string smallest_cell(const RowSummary& r) {
   const Counterexample& c = r.counterexamples.front();
   return fmt::format("`{}` ({} vertices, {} segments, shrunk from {} vertices, {} segments; theta {})", c.dir, c.vertices,
                      c.segments, c.original_vertices, c.original_segments, theta_text(c.theta));
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string r;
-  for (char c : s) {
-    if (c == '<') r += "&lt;";
-    else if (c == '>') r += "&gt;";
-    else if (c == '&') r += "&amp;";
-    else if (c == '"') r += "&quot;";
-    else if (c == '\'') r += "&apos;";
-    else if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') r += ' ';
-    else r += c;
-  }
-  return r;
 }
 
 }  // namespace

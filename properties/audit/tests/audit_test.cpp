@@ -12,6 +12,7 @@
 
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
+#include "lepp/audit/finding.h"
 #include "lepp/audit/report.h"
 
 namespace fs = std::filesystem;
@@ -92,6 +93,23 @@ TEST(Audit, BrokenEngineIsCaughtAndShrunk) {
   EXPECT_NE(x.find("<failure"), std::string::npos);
   EXPECT_NE(markdown_report(r).find("FAILED"), std::string::npos);
   fs::remove_all(o.out_dir);
+}
+
+// Text into XML, the JUnit report's and the plain finding picture's alike: the
+// five specials as entities, control characters (not allowed in XML) as spaces.
+TEST(Report, XmlTextEscapedInJUnitAndSvg) {
+  const std::string text = "a<b>&\"c'd\x01" "e";
+  const std::string escaped = "a&lt;b&gt;&amp;&quot;c&apos;d e";
+  AuditReport r;
+  r.engine = text;
+  std::string x = junit_report(r);
+  EXPECT_NE(x.find("classname=\"lepp.audit." + escaped + "\""), std::string::npos) << x;
+  EXPECT_EQ(x.find('\x01'), std::string::npos);
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {0, 1}};
+  std::string svg = finding_svg(p, nullptr, RowResult{}, text);
+  EXPECT_NE(svg.find(">" + escaped + "</text>"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find('\x01'), std::string::npos);
 }
 
 }  // namespace
