@@ -123,7 +123,7 @@ int run_certify(const CertifyArgs& args) {
 void add_certify_command(CLI::App& app, int& status) {
   auto args = std::make_shared<CertifyArgs>();
   auto* cmd = app.add_subcommand("certify", "Check a mesh of a .poly file exactly (topology, input, constraints, Delaunay, angles, Theorem 2)");
-  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set")->required();
+  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set, or a bare prefix X (X.poly, else X.node)")->required();
   cmd->add_option("mesh", args->mesh, "Mesh prefix: reads PREFIX.node, PREFIX.ele, PREFIX.poly and PREFIX.unimprovable if present")
       ->required();
   cmd->add_option("--min-angle", args->min_angle, "Check every smallest angle >= this many degrees (0: no angle check)")

@@ -157,7 +157,7 @@ int run_refine(const RefineArgs& args) {
 void add_refine_command(CLI::App& app, int& status) {
   auto args = std::make_shared<RefineArgs>();
   auto* cmd = app.add_subcommand("refine", "Refine a .poly file into a quality mesh (writes PREFIX.node/.ele/.poly)");
-  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set")->required()->check(CLI::ExistingFile);
+  cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set, or a bare prefix X (X.poly, else X.node)")->required();
   cmd->add_option("-o,--output", args->output, "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly")->required();
   cmd->add_option("--min-angle", args->min_angle, "Smallest angle wanted, degrees (a triangle below it is bad)")
       ->default_val(30)

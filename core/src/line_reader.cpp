@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -33,6 +34,9 @@ std::string printable(std::string_view token) {
 }  // namespace
 
 LineReader::LineReader(std::string path) : path_(std::move(path)) {
+  // A directory opens as an empty stream on Linux: name it rather than report an empty file.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec)) throw InputError(path_, 0, "is a directory, not a file");
   std::ifstream in(path_, std::ios::binary);
   if (!in) throw InputError(path_, 0, "cannot open file");
   std::ostringstream buffer;

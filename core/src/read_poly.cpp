@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Triangle's .poly and .node readers: syntax only (geometry is validate()'s job).
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -146,6 +147,18 @@ bool ends_with(const std::string& s, const char* tail) {
   return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
 }
 
+// True unless the path is known not to exist: a path we cannot stat (no
+// permission on a parent, ...) counts as there, so reading it gives the real error.
+bool may_exist(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec) || ec;
+}
+
+bool is_directory(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_directory(path, ec);
+}
+
 }  // namespace
 
 Pslg read_node(const std::string& path, std::vector<std::string>& warnings) {
@@ -274,7 +287,16 @@ Pslg read_poly(const std::string& path) {
 }
 
 Pslg read_input(const std::string& path, std::vector<std::string>& warnings) {
-  return ends_with(path, ".node") ? read_node(path, warnings) : read_poly(path, warnings);
+  if (ends_with(path, ".node")) return read_node(path, warnings);
+  const bool directory = is_directory(path);
+  if (ends_with(path, ".poly") || (may_exist(path) && !directory)) return read_poly(path, warnings);
+  // A bare prefix, as Triangle takes one (`triangle -p X` reads X.poly,
+  // `triangle X` reads X.node): X.poly if it is there, else X.node.
+  const std::string poly = path + ".poly", node = path + ".node";
+  if (may_exist(poly)) return read_poly(poly, warnings);
+  if (may_exist(node)) return read_node(node, warnings);
+  throw InputError(path, 0, fmt::format("{}; read as a prefix, neither {} nor {} exists",
+                                        directory ? "is a directory" : "no such file", poly, node));
 }
 
 }  // namespace lepp

@@ -2,12 +2,14 @@
 // Reading as Triangle does (issue 12): a column of extra fields ignored with
 // one warning, optional fields missing read as 0, regions kept, a .node alone,
 // the convex hull of a point set, crossing segments split at the rounded
-// exact intersection.
+// exact intersection, a bare prefix read as Triangle reads one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+
+#include <unistd.h>
 
 #include "lepp/input.h"
 #include "lepp/io.h"
@@ -167,6 +169,124 @@ TEST(TriangleFormats, CrossingPolygonsRejectedByDefaultSplitOnRequest) {
   EXPECT_EQ(v.vertices.size(), 16u);  // 8 crossings, as Triangle finds
   EXPECT_EQ(v.segments.size(), 24u);
   for (std::size_t s = 0; s < v.segments.size(); ++s) EXPECT_EQ(v.segment_origin[s], static_cast<int>(s / 3));
+}
+
+// A fresh directory of its own for each test of a bare prefix (and each
+// process: worktrees share /tmp), holding copies of corpus files under the
+// names the test gives them; removed at the end of the test.
+struct ScratchDir {
+  std::string path;
+  explicit ScratchDir(const std::string& name) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("lepp-formats-prefix-" + std::to_string(::getpid()) + "-" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    path = dir.string() + "/";
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
+void copy_corpus(const std::string& corpus_name, const std::string& to) {
+  std::filesystem::copy_file(kFormats + corpus_name, to, std::filesystem::copy_options::overwrite_existing);
+}
+
+TEST(TriangleFormats, BarePrefixReadsThePoly) {
+  const ScratchDir scratch("poly");
+  const std::string& dir = scratch.path;
+  copy_corpus("zero-based.poly", dir + "x.poly");
+  std::vector<std::string> warnings;
+  Pslg p = read_input(dir + "x", warnings);
+  EXPECT_EQ(p.source, dir + "x.poly");
+  EXPECT_EQ(p.vertices.size(), 5u);
+  EXPECT_EQ(p.segments.size(), 5u);
+}
+
+TEST(TriangleFormats, BarePrefixReadsTheNodeWhenThereIsNoPoly) {
+  const ScratchDir scratch("node");
+  const std::string& dir = scratch.path;
+  copy_corpus("points.node", dir + "x.node");
+  std::vector<std::string> warnings;
+  Pslg p = read_input(dir + "x", warnings);
+  EXPECT_EQ(p.source, dir + "x.node");
+  EXPECT_EQ(p.vertices.size(), 12u);
+  EXPECT_TRUE(p.segments.empty());
+}
+
+TEST(TriangleFormats, BarePrefixPrefersThePolyToTheNode) {
+  const ScratchDir scratch("both");
+  const std::string& dir = scratch.path;
+  copy_corpus("zero-based.poly", dir + "x.poly");
+  copy_corpus("points.node", dir + "x.node");
+  std::vector<std::string> warnings;
+  Pslg p = read_input(dir + "x", warnings);
+  EXPECT_EQ(p.source, dir + "x.poly");
+  EXPECT_EQ(p.vertices.size(), 5u);  // the .poly's own vertices, not the .node's 12
+  EXPECT_EQ(p.segments.size(), 5u);
+}
+
+TEST(TriangleFormats, AnExistingFileIsReadAsItIsNotAsAPrefix) {
+  const ScratchDir scratch("existing");
+  const std::string& dir = scratch.path;
+  copy_corpus("zero-based.poly", dir + "x");
+  copy_corpus("attributes.poly", dir + "x.poly");
+  std::vector<std::string> warnings;
+  Pslg p = read_input(dir + "x", warnings);
+  EXPECT_EQ(p.source, dir + "x");
+  EXPECT_EQ(p.vertices.size(), 5u);
+}
+
+TEST(TriangleFormats, BarePrefixWithNeitherFileNamesThePathAndBothFiles) {
+  const ScratchDir scratch("neither");
+  const std::string& dir = scratch.path;
+  std::vector<std::string> warnings;
+  try {
+    read_input(dir + "x", warnings);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.file(), dir + "x");
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_NE(what.find(dir + "x.poly"), std::string::npos) << what;
+    EXPECT_NE(what.find(dir + "x.node"), std::string::npos) << what;
+  }
+  // A missing name with an extension is not a prefix: x.poly.poly is not tried.
+  copy_corpus("zero-based.poly", dir + "y.poly.poly");
+  try {
+    read_input(dir + "y.poly", warnings);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), dir + "y.poly");
+    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TriangleFormats, ADirectoryIsAPrefixNotAFile) {
+  // `lepp refine box` with a directory box/ beside box.poly reads box.poly.
+  const ScratchDir scratch("directory");
+  const std::string& dir = scratch.path;
+  std::filesystem::create_directory(dir + "x");
+  std::vector<std::string> warnings;
+  try {
+    read_input(dir + "x", warnings);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("is a directory"), std::string::npos) << what;
+    EXPECT_NE(what.find(dir + "x.node"), std::string::npos) << what;
+  }
+  copy_corpus("zero-based.poly", dir + "x.poly");
+  EXPECT_EQ(read_input(dir + "x", warnings).source, dir + "x.poly");
+  // Named as a file, a directory is an error that says so.
+  std::filesystem::create_directory(dir + "d.poly");
+  try {
+    read_input(dir + "d.poly", warnings);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

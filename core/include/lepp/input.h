@@ -15,7 +15,10 @@ namespace lepp {
 // them), optional fields left out.
 Pslg read_poly(const std::string& path, std::vector<std::string>& warnings);
 Pslg read_node(const std::string& path, std::vector<std::string>& warnings);
-// A .node file is a point set; anything else is read as a .poly.
+// A .node file is a point set; anything else is read as a .poly. A path that
+// names no file (nothing there, or a directory) and ends in neither .poly nor
+// .node is a prefix, as Triangle takes one: PATH.poly if it exists, else
+// PATH.node (InputError naming the path and both files when neither does).
 Pslg read_input(const std::string& path, std::vector<std::string>& warnings);
 
 struct DomainOptions {
