@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cgal_mesh.h"
 #include "lepp/certify.h"
@@ -33,6 +35,22 @@ void expect_rejected_for(const certify::Report& r, Reason reason) {
   auto it = std::find_if(r.violations.begin(), r.violations.end(), [&](const certify::Violation& v) { return v.reason == reason; });
   ASSERT_NE(it, r.violations.end());
   EXPECT_FALSE(it->message.empty());
+}
+
+// The mutation breaks one thing: the reason asked for is the only one reported.
+void expect_rejected_only_for(const certify::Report& r, Reason reason, std::size_t count = 1) {
+  expect_rejected_for(r, reason);
+  std::size_t total = 0;
+  for (std::size_t c : r.count_by_reason) total += c;
+  EXPECT_EQ(r.count(reason), count) << certify::format_report(r);
+  EXPECT_EQ(total, r.count(reason)) << "other reasons too:\n" << certify::format_report(r);
+}
+
+// The input segment id of edge a-b of an unsplit segment, or -1.
+int segment_id(const Pslg& p, int a, int b) {
+  for (std::size_t s = 0; s < p.segments.size(); ++s)
+    if ((p.segments[s].a == a && p.segments[s].b == b) || (p.segments[s].a == b && p.segments[s].b == a)) return static_cast<int>(s);
+  return -1;
 }
 
 // Triangles (a,b,c) and (b,a,d) sharing edge ab; the flip makes (a,d,c), (d,b,c).
@@ -346,6 +364,85 @@ TEST(CertifyRejects, ListedConstrainedEdgeOffSegments) {
       break;
     }
   expect_rejected_for(run(p, bad), Reason::ConstrainedEdgeNotOnSegment);
+}
+
+TEST(CertifyRejects, DuplicateMeshVertex) {
+  const Pslg p = test::square_with_crack();
+  const Mesh good = test::cgal_cdt(p);
+  expect_certified(run(p, good));
+  // A second copy of the interior vertex on no segment (the last input vertex),
+  // used in place of the original by one of its triangles: the mesh is then cut
+  // open around the copy, but the copy itself must be reported.
+  Mesh bad = good;
+  const int original = static_cast<int>(p.vertices.size()) - 1;
+  const int copy = static_cast<int>(bad.vertices.size());
+  bad.vertices.push_back(bad.vertices[static_cast<std::size_t>(original)]);
+  auto it = std::find_if(bad.triangles.begin(), bad.triangles.end(),
+                         [&](const Tri& t) { return std::find(t.begin(), t.end(), original) != t.end(); });
+  ASSERT_NE(it, bad.triangles.end());
+  std::replace(it->begin(), it->end(), original, copy);
+  const auto r = run(p, bad);
+  expect_rejected_for(r, Reason::DuplicateMeshVertex);
+  EXPECT_EQ(r.count(Reason::DuplicateMeshVertex), 1u);
+  auto v = std::find_if(r.violations.begin(), r.violations.end(), [](const certify::Violation& x) { return x.reason == Reason::DuplicateMeshVertex; });
+  ASSERT_NE(v, r.violations.end());
+  EXPECT_EQ(v->vertices, (std::vector<int>{original, copy}));
+  // An unused copy alone: a duplicate (and an unused Steiner vertex), nothing else.
+  Mesh unused = good;
+  unused.vertices.push_back(unused.vertices[static_cast<std::size_t>(original)]);
+  const auto u = run(p, unused);
+  expect_rejected_for(u, Reason::DuplicateMeshVertex);
+  EXPECT_EQ(u.count(Reason::DuplicateMeshVertex) + u.count(Reason::UnusedVertex), 2u) << certify::format_report(u);
+}
+
+TEST(CertifyRejects, MoreInputVerticesClaimedThanTheInputHas) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_refined(p);  // Steiner vertices after the input ones
+  expect_certified(run(p, bad, 20));
+  ASSERT_GT(bad.vertices.size(), p.vertices.size());
+  bad.input_vertices = p.vertices.size() + 1;  // a Steiner vertex claimed as an input vertex
+  const auto r = run(p, bad, 20);
+  expect_rejected_only_for(r, Reason::InputVertexMoved);
+  EXPECT_NE(certify::format_report(r).find("claims " + std::to_string(p.vertices.size() + 1) + " input vertices"), std::string::npos)
+      << certify::format_report(r);
+}
+
+TEST(CertifyRejects, ConstrainedEdgeTaggedWithAnotherSegment) {
+  const Pslg p = test::square_with_crack();
+  Mesh m = test::cgal_cdt(p);  // every segment one edge, listed with id -1
+  ASSERT_EQ(m.constrained_edges.size(), p.segments.size());
+  for (ConstrainedEdge& e : m.constrained_edges) {
+    e.segment = segment_id(p, e.a, e.b);
+    ASSERT_GE(e.segment, 0);
+  }
+  expect_certified(run(p, m));  // the right ids
+  const int crack = static_cast<int>(p.segments.size()) - 1;
+  auto it = std::find_if(m.constrained_edges.begin(), m.constrained_edges.end(), [&](const ConstrainedEdge& e) { return e.segment == crack; });
+  ASSERT_NE(it, m.constrained_edges.end());
+  it->segment = 0;  // the crack tagged as the bottom side
+  const auto r = run(p, m);
+  expect_rejected_only_for(r, Reason::ConstrainedEdgeWrongSegment);
+  const auto v = std::find_if(r.violations.begin(), r.violations.end(),
+                              [](const certify::Violation& x) { return x.reason == Reason::ConstrainedEdgeWrongSegment; });
+  ASSERT_NE(v, r.violations.end());
+  EXPECT_EQ(v->segment, crack);  // the segment it lies on
+}
+
+TEST(CertifyRejects, ConstrainedEdgeLeftOffTheList) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  const Segment crack = p.segments.back();
+  auto it = std::find_if(bad.constrained_edges.begin(), bad.constrained_edges.end(), [&](const ConstrainedEdge& e) {
+    return (e.a == crack.a && e.b == crack.b) || (e.a == crack.b && e.b == crack.a);
+  });
+  ASSERT_NE(it, bad.constrained_edges.end());
+  bad.constrained_edges.erase(it);  // the crack is still an edge, on the segment, but no longer listed
+  const auto r = run(p, bad);
+  expect_rejected_only_for(r, Reason::ConstrainedEdgeUnlisted);
+  EXPECT_EQ(r.violations.front().segment, static_cast<int>(p.segments.size()) - 1);
+  // A mesh that lists no constrained edge at all says nothing: found by geometry alone.
+  bad.constrained_edges.clear();
+  expect_certified(run(p, bad));
 }
 
 TEST(CertifyUnimprovable, RuleCheckedNotTrusted) {
