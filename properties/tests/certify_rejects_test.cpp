@@ -439,6 +439,7 @@ TEST(CertifyRejects, ConstrainedEdgeLeftOffTheList) {
   bad.constrained_edges.erase(it);  // the crack is still an edge, on the segment, but no longer listed
   const auto r = run(p, bad);
   expect_rejected_only_for(r, Reason::ConstrainedEdgeUnlisted);
+  ASSERT_EQ(r.violations.size(), 1u);
   EXPECT_EQ(r.violations.front().segment, static_cast<int>(p.segments.size()) - 1);
   // A mesh that lists no constrained edge at all says nothing: found by geometry alone.
   bad.constrained_edges.clear();
