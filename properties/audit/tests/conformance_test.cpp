@@ -3,14 +3,18 @@
 // (lepp/trace_io.h): lepp's own traces conform, in every order and method;
 // exactly rounded choices conform; points moved too far, the triangle's
 // centroid, ignoring Remark 10 and a Lepp along shortest edges do not; both
-// resolutions of a tie do.
+// resolutions of a tie do. The replay (lepp/reference_replay.h) follows a mesh
+// two cocircular flips away, or CGAL's tie rule, and reports a choice it
+// cannot insert.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <string>
+#include <utility>
 
 #include <unistd.h>
 
@@ -531,6 +535,173 @@ TEST(Conformance, AcceptsTheEnginesTraceOnAGrid) {
   ASSERT_FALSE(trace.empty());
   ConformanceReport own = check_conformance(p, trace, options(Method::Centroid, 25));
   EXPECT_TRUE(own.conforms) << describe(own);
+}
+
+// ---- the replay's rarer paths, each with what it changes ----
+
+using Edge = std::pair<int, int>;
+Edge edge(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+using EdgeSet = std::set<Edge>;
+EdgeSet edges_of(const Mesh& m) {
+  EdgeSet out;
+  for (const Tri& t : m.triangles)
+    for (int i = 0; i < 3; ++i) out.insert(edge(t[i], t[(i + 1) % 3]));
+  return out;
+}
+std::size_t missing_from(const EdgeSet& a, const EdgeSet& b) {
+  std::size_t n = 0;
+  for (const auto& e : a) n += b.count(e) == 0;
+  return n;
+}
+
+// A convex lattice polygon with cocircular quads. CGAL's CDT breaks their ties
+// by the points' lexicographic order, which the reflection (x, y) -> (-y, -x)
+// changes: the reference engine run on the reflected polygon starts from
+// another Delaunay mesh, two diagonals away from the replay's where its first
+// point is chosen. Reflected back, its trace conforms only if the replay flips
+// both there: no single flip makes the point a choice, and CGAL's own tie rule
+// is the replay's initial mesh already.
+Point reflect(Point q) { return {-q.y, -q.x}; }  // its own inverse
+
+TEST(Replay, FollowsTwoCocircularFlipsAtOneStep) {
+  Pslg p = polygon({{0, 4}, {1, 2}, {2, 0}, {3, 0}, {4, 0}, {4, 1}, {4, 2}, {3, 3}, {2, 4}, {1, 4}});
+  Pslg reflected = p;
+  for (Point& v : reflected.vertices) v = reflect(v);
+  RefineResult r = run(reflected, false, Method::Centroid, QueueOrder::Fifo, 25);
+  std::vector<Point> trace;
+  for (const TraceStep& s : r.trace) trace.push_back(reflect(s.point));
+  ASSERT_FALSE(trace.empty());
+
+  reference::ReplayRules rules;
+  rules.method = Method::Centroid;
+  rules.min_angle_deg = 25;
+  reference::Replay replay(p, rules);
+  EdgeSet before = edges_of(replay.mesh());
+  reference::ReplayChoice choice;
+  ASSERT_TRUE(replay.match(trace[0], choice));
+  EXPECT_EQ(replay.cocircular_flips(), 2);
+  EdgeSet after = edges_of(replay.mesh());
+  EXPECT_EQ(after.size(), before.size());
+  EXPECT_EQ(missing_from(before, after), 2u) << "the replay's mesh should lose exactly two diagonals";
+  EXPECT_EQ(missing_from(after, before), 2u) << "and gain the two other ones";
+  EXPECT_EQ(replay.steiner_points(), 0u);
+  replay.insert(trace[0], choice);
+  EXPECT_EQ(replay.steiner_points(), 1u);
+
+  ConformanceReport followed = check_conformance(p, trace, options(Method::Centroid, 25));
+  EXPECT_TRUE(followed.conforms) << describe(followed);
+  EXPECT_EQ(followed.cocircular_flips, 2);
+  ConformanceOptions o = options(Method::Centroid, 25);
+  o.follow_cocircular_flips = false;
+  ConformanceReport rigid = check_conformance(p, trace, o);
+  ASSERT_FALSE(rigid.conforms);
+  EXPECT_EQ(rigid.failure->step, 0u) << describe(rigid);
+}
+
+// A trace of tests/audit's lepp_test_mesher (CGAL's CDT on Epick: its
+// insertions break cocircular ties by CGAL's symbolic perturbation, where the
+// replay leaves them), kept here so that the test does not move with the
+// mesher: `lepp_test_mesher IN.poly OUT 25 midpoint` on the polygon below.
+// At step 14 its mesh differs from the replay's in ties that no one or two
+// local flips resolve: the replay switches to CGAL's tie rule over the whole
+// mesh (five flips at once), and keeps it: a later insertion flips a tie
+// (step 26). Without following flips the check fails at step 14.
+TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
+  std::vector<Point> ring{{0, 4}, {1, 2}, {2, 0}};
+  for (int x = 3; x <= 10; ++x) ring.push_back({double(x), 0});
+  ring.push_back({11, 1});
+  for (int y = 4; y <= 11; ++y) ring.push_back({12, double(y)});
+  for (int x = 8; x >= 0; --x) ring.push_back({double(x), 12});
+  for (int y = 11; y >= 5; --y) ring.push_back({0, double(y)});
+  ASSERT_EQ(ring.size(), 36u);
+  Pslg p = polygon(ring);
+  const std::vector<Point> trace{  // 34 points
+      {6, 6}, {9, 7}, {6.5, 9}, {8.5, 9.5}, {6.75, 10.5}, {3.25, 8.5}, {4.125, 10.25},
+      {2.625, 10.25}, {1.625, 8.75}, {3.5, 4}, {3.375, 6.25}, {1.75, 4.5}, {1.6875, 6.625}, {0.875, 5.25},
+      {9, 3.5}, {6.25, 3.75}, {8, 1.75}, {4.25, 2}, {6.125, 1.875}, {2.625, 2}, {3.625, 1},
+      {11.5, 2.5}, {10, 2.25}, {9.5, 1.125}, {10.5, 6}, {10.5, 8}, {10, 11.5}, {10.25, 9.75},
+      {10.5, 3.75}, {1.3125, 10.625}, {4.625, 7.25}, {4.375, 8.75}, {5.3125, 9.625}, {5.65625, 10.8125}};
+
+  reference::ReplayRules rules;
+  rules.method = Method::Midpoint;
+  rules.min_angle_deg = 25;
+  rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
+  reference::Replay replay(p, rules);
+  std::size_t switched = trace.size(), flipped_on_insert = trace.size();
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    reference::ReplayChoice choice;
+    std::int64_t f0 = replay.cocircular_flips();
+    ASSERT_TRUE(replay.match(trace[i], choice)) << "step " << i;
+    std::int64_t f1 = replay.cocircular_flips();
+    replay.insert(trace[i], choice);
+    std::int64_t f2 = replay.cocircular_flips();
+    EXPECT_EQ(replay.steiner_points(), i + 1);
+    // More than two flips in one match: only the switch to CGAL's rule does that.
+    if (f1 - f0 > 2 && switched == trace.size()) switched = i;
+    // Insertions flip ties only under CGAL's rule.
+    if (f2 > f1 && flipped_on_insert == trace.size()) flipped_on_insert = i;
+  }
+  ASSERT_LT(switched, trace.size()) << "no step needed CGAL's tie rule";
+  EXPECT_LT(flipped_on_insert, trace.size()) << "no insertion after the switch flipped a tie";
+  EXPECT_GT(flipped_on_insert, switched);
+  EXPECT_LT(switched + 1, trace.size()) << "no insertion after the switch";
+
+  ConformanceReport report = check_conformance(p, trace, options(Method::Midpoint, 25));
+  EXPECT_TRUE(report.conforms) << describe(report);
+  EXPECT_EQ(report.cocircular_flips, replay.cocircular_flips());
+  ConformanceOptions o = options(Method::Midpoint, 25);
+  o.follow_cocircular_flips = false;
+  ConformanceReport rigid = check_conformance(p, trace, o);
+  ASSERT_FALSE(rigid.conforms);
+  EXPECT_EQ(rigid.failure->step, switched) << describe(rigid);
+}
+
+// A choice the replay cannot insert: the triangle A E B is flat (E 1e-15
+// below AB), its longest edge AB constrained, so AB's midpoint (1, 0) is the
+// choice. (1, -3e-15) is within the point tolerance of it (8 ulps of 2), but
+// below E: splitting AB there would fold the triangle A E over. The check
+// reports the step as a choice that cannot be inserted, never aborts.
+TEST(Replay, ReportsAChoiceThatCannotBeInserted) {
+  Pslg p = polygon({{0, 0}, {1, -1e-15}, {2, 0}});
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    ConformanceReport exact = check_conformance(p, {{1, 0}}, options(m, 25));
+    EXPECT_TRUE(exact.conforms) << describe(exact);
+    ConformanceReport folded = check_conformance(p, {{1, -3e-15}}, options(m, 25));
+    ASSERT_FALSE(folded.conforms);
+    EXPECT_EQ(folded.failure->step, 0u);
+    EXPECT_NE(folded.failure->reason.find("cannot be inserted"), std::string::npos) << folded.failure->reason;
+    EXPECT_NE(folded.failure->reason.find(to_string(Rule::TerminalConstrainedMidpoint)), std::string::npos)
+        << folded.failure->reason;
+  }
+}
+
+// all_choices (the reports' list) walks every Lepp forward to its ends. Here
+// the skinny triangle A C D's longest edge AC is unconstrained and not the
+// longest of A B C, whose longest edge AB is constrained: one Lepp, ending on
+// a constrained edge one triangle on, and its choice is AB's midpoint.
+TEST(Replay, AllChoicesFollowALeppToAConstrainedEnd) {
+  Pslg p = polygon({{0, 0}, {10, 0}, {5, 3}, {-0.25, 0.875}});
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    reference::ReplayRules rules;
+    rules.method = m;
+    rules.min_angle_deg = 25;
+    reference::Replay replay(p, rules);
+    std::size_t total = 0;
+    std::vector<reference::ReplayChoice> all = replay.all_choices({5, 0}, 10, total);
+    ASSERT_EQ(total, 1u);
+    ASSERT_EQ(all.size(), 1u);
+    const reference::ReplayChoice& c = all[0];
+    EXPECT_EQ(c.rule, Rule::TerminalConstrainedMidpoint);
+    EXPECT_EQ(c.point, (Point{5, 0}));
+    EXPECT_EQ(c.distance, 0);
+    EXPECT_EQ(c.bad, (Tri{{0, 2, 3}}));
+    ASSERT_EQ(c.lepp.size(), 2u);
+    EXPECT_EQ(c.lepp[1], (Tri{{0, 1, 2}}));
+    EXPECT_EQ(c.t1, (Tri{{0, 1, 2}}));
+    EXPECT_EQ(c.t2[0], -1);
+    EXPECT_EQ(edge(c.split_edge[0], c.split_edge[1]), edge(0, 1));
+    EXPECT_EQ(edge(c.terminal_edge[0], c.terminal_edge[1]), edge(0, 1));
+  }
 }
 
 }  // namespace
