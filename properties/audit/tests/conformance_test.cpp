@@ -9,9 +9,11 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -606,21 +608,26 @@ TEST(Replay, FollowsTwoCocircularFlipsAtOneStep) {
 // local flips resolve: the replay switches to CGAL's tie rule over the whole
 // mesh (five flips at once), and keeps it: a later insertion flips a tie
 // (step 26). Without following flips the check fails at step 14.
-TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
+Pslg convex36() {
   std::vector<Point> ring{{0, 4}, {1, 2}, {2, 0}};
   for (int x = 3; x <= 10; ++x) ring.push_back({double(x), 0});
   ring.push_back({11, 1});
   for (int y = 4; y <= 11; ++y) ring.push_back({12, double(y)});
   for (int x = 8; x >= 0; --x) ring.push_back({double(x), 12});
   for (int y = 11; y >= 5; --y) ring.push_back({0, double(y)});
-  ASSERT_EQ(ring.size(), 36u);
-  Pslg p = polygon(ring);
-  const std::vector<Point> trace{  // 34 points
-      {6, 6}, {9, 7}, {6.5, 9}, {8.5, 9.5}, {6.75, 10.5}, {3.25, 8.5}, {4.125, 10.25},
-      {2.625, 10.25}, {1.625, 8.75}, {3.5, 4}, {3.375, 6.25}, {1.75, 4.5}, {1.6875, 6.625}, {0.875, 5.25},
-      {9, 3.5}, {6.25, 3.75}, {8, 1.75}, {4.25, 2}, {6.125, 1.875}, {2.625, 2}, {3.625, 1},
-      {11.5, 2.5}, {10, 2.25}, {9.5, 1.125}, {10.5, 6}, {10.5, 8}, {10, 11.5}, {10.25, 9.75},
-      {10.5, 3.75}, {1.3125, 10.625}, {4.625, 7.25}, {4.375, 8.75}, {5.3125, 9.625}, {5.65625, 10.8125}};
+  return polygon(ring);
+}
+const std::vector<Point> kConvex36MidpointTrace{  // 34 points
+    {6, 6}, {9, 7}, {6.5, 9}, {8.5, 9.5}, {6.75, 10.5}, {3.25, 8.5}, {4.125, 10.25},
+    {2.625, 10.25}, {1.625, 8.75}, {3.5, 4}, {3.375, 6.25}, {1.75, 4.5}, {1.6875, 6.625}, {0.875, 5.25},
+    {9, 3.5}, {6.25, 3.75}, {8, 1.75}, {4.25, 2}, {6.125, 1.875}, {2.625, 2}, {3.625, 1},
+    {11.5, 2.5}, {10, 2.25}, {9.5, 1.125}, {10.5, 6}, {10.5, 8}, {10, 11.5}, {10.25, 9.75},
+    {10.5, 3.75}, {1.3125, 10.625}, {4.625, 7.25}, {4.375, 8.75}, {5.3125, 9.625}, {5.65625, 10.8125}};
+
+TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
+  Pslg p = convex36();
+  ASSERT_EQ(p.vertices.size(), 36u);
+  const std::vector<Point>& trace = kConvex36MidpointTrace;
 
   reference::ReplayRules rules;
   rules.method = Method::Midpoint;
@@ -702,6 +709,165 @@ TEST(Replay, AllChoicesFollowALeppToAConstrainedEnd) {
     EXPECT_EQ(edge(c.split_edge[0], c.split_edge[1]), edge(0, 1));
     EXPECT_EQ(edge(c.terminal_edge[0], c.terminal_edge[1]), edge(0, 1));
   }
+}
+
+// A point that is no choice, at the step where the replay would switch to
+// CGAL's tie rule (it switches, finds no choice on that mesh either, and
+// fails there), and after the switch (no second switch: it fails at once).
+TEST(Replay, RejectsANonChoiceAtAndAfterTheSwitchToCgalsTieRule) {
+  Pslg p = convex36();
+  ConformanceReport clean = check_conformance(p, kConvex36MidpointTrace, options(Method::Midpoint, 25));
+  ASSERT_TRUE(clean.conforms) << describe(clean);
+  for (std::size_t k : {std::size_t(14), std::size_t(20)}) {
+    std::vector<Point> trace = kConvex36MidpointTrace;
+    trace[k] = {5.3, 7.7};  // inside, far from every choice
+    ConformanceReport r = check_conformance(p, trace, options(Method::Midpoint, 25));
+    ASSERT_FALSE(r.conforms) << k;
+    EXPECT_EQ(r.failure->step, k) << describe(r);
+    EXPECT_GT(r.cocircular_flips, 2) << k << ": the switch flips more than two edges";
+    EXPECT_NE(r.failure->reason.find("not the paper's choice"), std::string::npos) << r.failure->reason;
+  }
+}
+
+// The public stepping API on points the conformance check never hands it:
+// match() says no, insert() throws, the mesh stays as it was.
+TEST(Replay, InsertAndMatchRefuseWhatCannotBeInserted) {
+  Pslg p = polygon({{0, 10}, {-1, 0}, {1, 0}});  // skinny: the legs' midpoints are choices
+  reference::ReplayRules rules;
+  rules.min_angle_deg = 20;
+  reference::Replay replay(p, rules);
+  reference::ReplayChoice choice;
+  const double nan = std::nan("");
+  for (Point q : {Point{nan, 1}, Point{1, nan}, Point{HUGE_VAL, 0}}) {
+    EXPECT_FALSE(replay.match(q, choice));
+    EXPECT_THROW(replay.insert(q, reference::ReplayChoice{}), std::runtime_error);
+  }
+  EXPECT_THROW(replay.insert({0, 10}, reference::ReplayChoice{}), std::runtime_error);  // a vertex
+  reference::ReplayChoice not_an_edge;
+  not_an_edge.split_edge = {0, 0};
+  EXPECT_THROW(replay.insert({0, 5}, not_an_edge), std::runtime_error);
+  EXPECT_EQ(replay.steiner_points(), 0u);
+  EXPECT_EQ(replay.mesh().triangles.size(), 1u);
+  // A report for a point with one coordinate not finite: every choice infinitely far.
+  std::size_t total = 0;
+  std::vector<reference::ReplayChoice> all = replay.all_choices({0.5, nan}, 5, total);
+  ASSERT_EQ(total, 2u);
+  for (const auto& c : all) EXPECT_EQ(c.distance, HUGE_VAL);
+  // And the real choice still goes in.
+  ASSERT_TRUE(replay.match({0.5, 5}, choice));
+  replay.insert({0.5, 5}, choice);
+  EXPECT_EQ(replay.steiner_points(), 1u);
+}
+
+// Edge lengths are compared in doubles first; squares that overflow (2^600;
+// at 2^510 only the longer edges' do) or fall below the filter's range
+// (2^-500) are compared exactly. The same polygon at each scale: the
+// engine's traces (the unscaled run's, scaled) conform, a point moved by a
+// millionth does not.
+TEST(Replay, ComparesLengthsExactlyWhereDoublesOverflowOrUnderflow) {
+  const std::vector<Point> ring{{-1, 0}, {1, 0}, {6, 5}, {0, 10}, {-6, 5}};
+  for (Method m : {Method::Centroid, Method::Midpoint}) {
+    const std::vector<Point> unscaled = points_of(run(polygon(ring), false, m, QueueOrder::Fifo, 25));
+    ASSERT_GT(unscaled.size(), 2u);
+    for (int e : {600, 510, -500}) {
+      std::vector<Point> scaled = ring;
+      for (Point& q : scaled) q = {std::ldexp(q.x, e), std::ldexp(q.y, e)};
+      Pslg p = polygon(scaled);
+      std::vector<Point> trace = points_of(run(p, false, m, QueueOrder::Fifo, 25));
+      ASSERT_EQ(trace.size(), unscaled.size()) << e;
+      for (std::size_t i = 0; i < trace.size(); ++i)
+        EXPECT_EQ(trace[i], (Point{std::ldexp(unscaled[i].x, e), std::ldexp(unscaled[i].y, e)})) << e << " " << i;
+      ConformanceReport ok = check_conformance(p, trace, options(m, 25));
+      EXPECT_TRUE(ok.conforms) << e << " " << to_string(m) << ": " << describe(ok);
+      trace[1].x += std::abs(trace[1].x) * 1e-6;
+      ConformanceReport moved = check_conformance(p, trace, options(m, 25));
+      ASSERT_FALSE(moved.conforms) << e;
+      EXPECT_EQ(moved.failure->step, 1u) << describe(moved);
+    }
+  }
+}
+
+// The 55 lattice points of the upper half of x^2 + y^2 = 1105^2: CGAL's CDT
+// fans them out from (-1105, 0), and every one of the fan's 52 diagonals is a
+// cocircular edge around a point next to it, more than the replay's search of
+// one or two flips tries in full (it stops after 400 pairs). A point that is
+// no choice there is still rejected, and the mesh is left as it was; an
+// engine's points are still accepted.
+TEST(Replay, BoundsTheFlipSearchAmongManyCocircularEdges) {
+  const long r = 1105;
+  std::vector<Point> half;
+  for (long x = r; x >= -r; --x) {
+    long y = std::lround(std::sqrt(double(r * r - x * x)));
+    if (x * x + y * y == r * r) half.push_back({double(x), double(y)});
+  }
+  ASSERT_EQ(half.size(), 55u);
+  Pslg p = polygon(half);
+  Mesh fan = mesh_before(p, {}, 0, Method::Centroid, 25);
+  std::vector<int> degree(fan.vertices.size());
+  for (const Tri& t : fan.triangles)
+    for (int v : t) ++degree[std::size_t(v)];
+  ASSERT_EQ(*std::max_element(degree.begin(), degree.end()), 53) << "not a fan: the test needs another input";
+
+  ConformanceReport wrong = check_conformance(p, {{-1100, 1}}, options(Method::Centroid, 25));
+  ASSERT_FALSE(wrong.conforms);
+  EXPECT_EQ(wrong.failure->step, 0u);
+  EXPECT_EQ(wrong.cocircular_flips, 0);
+  EXPECT_EQ(wrong.failure->mesh.triangles, fan.triangles) << "the trial flips were not undone";
+  RefineResult own = run(p, true, Method::Centroid, QueueOrder::Fifo, 25, 100);
+  ConformanceReport ok = check_conformance(p, points_of(own), options(Method::Centroid, 25));
+  EXPECT_TRUE(ok.conforms) << describe(ok);
+}
+
+// A fan of 12 triangles around the centre of x^2 + y^2 = 25: every spoke is
+// a longest edge of both its triangles (all spokes tie), so under some tie
+// resolution a Lepp may go round the centre. The reports' forward walk never
+// enters a triangle twice.
+TEST(Replay, AllChoicesNeverWalksRoundAVertex) {
+  Pslg p;
+  p.vertices = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  for (int i = 0; i < 12; ++i) p.segments.push_back({i, (i + 1) % 12, 0});
+  p.vertices.push_back({0, 0});
+  std::vector<std::string> warnings;
+  p = validate(p, warnings);
+  reference::ReplayRules rules;
+  rules.min_angle_deg = 20;  // the six thin triangles (16.3 degrees at the centre) are bad
+  reference::Replay replay(p, rules);
+  ASSERT_EQ(replay.mesh().triangles.size(), 12u);
+  std::size_t total = 0;
+  std::vector<reference::ReplayChoice> all = replay.all_choices({0, 0}, 1000, total);
+  ASSERT_GT(total, 6u);
+  std::size_t longest = 0;
+  for (const auto& c : all) {
+    std::set<Tri> seen(c.lepp.begin(), c.lepp.end());
+    EXPECT_EQ(seen.size(), c.lepp.size()) << "a Lepp enters a triangle twice";
+    longest = std::max(longest, c.lepp.size());
+  }
+  EXPECT_GE(longest, 6u);  // round half the fan at least: the ties are followed
+}
+
+// A strip of 100 isosceles triangles whose legs (longest, tied) are shared:
+// under the ties, the Lepp of a bad end triangle may end at any of the strip's
+// interior edges. The reports list at most 64 ends per bad triangle.
+TEST(Replay, AllChoicesCapsTheEndsOfOneLepp) {
+  Pslg p;
+  const int n = 50;
+  for (int i = 0; i <= n; ++i) p.vertices.push_back({2.0 * i, 0});
+  for (int i = n; i >= 0; --i) p.vertices.push_back({2.0 * i + 1, 3});
+  p.vertices.push_back({-0.5, 3});  // a bad triangle at the left end
+  for (std::size_t i = 0; i < p.vertices.size(); ++i)
+    p.segments.push_back({int(i), int((i + 1) % p.vertices.size()), 0});
+  std::vector<std::string> warnings;
+  p = validate(p, warnings);
+  reference::ReplayRules rules;
+  rules.min_angle_deg = 30;  // the strip's triangles: 36.9 degrees at the apex, good
+  reference::Replay replay(p, rules);
+  std::size_t total = 0;
+  std::vector<reference::ReplayChoice> all = replay.all_choices({0, 0}, 100000, total);
+  ASSERT_EQ(all.size(), total);
+  std::map<Tri, std::size_t> per_bad;
+  for (const auto& c : all) ++per_bad[c.bad];
+  ASSERT_EQ(per_bad.size(), 1u) << "one bad triangle";
+  EXPECT_EQ(per_bad.begin()->second, 64u);
 }
 
 }  // namespace
