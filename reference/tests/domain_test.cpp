@@ -40,6 +40,15 @@ TEST(Domain, HolePointOnASegmentOrOutsideRemovesNothing) {
   EXPECT_EQ(testing::twice_area(build_cdt(square_with_hole({{20, 5}}))), 2 * 100);  // outside
 }
 
+// On a vertex (of the hole, or of the outer square), or beyond the bounding
+// box the CDT is built in: located neither in a face nor on an edge.
+TEST(Domain, HolePointOnAVertexOrFarOutsideRemovesNothing) {
+  for (Point h : {Point{4, 4}, Point{10, 10}, Point{1e6, 5}})
+    EXPECT_EQ(testing::twice_area(build_cdt(square_with_hole({h}))), 2 * 100) << h.x << " " << h.y;
+  // With a hole point that does remove the hole, one of these beside it changes nothing.
+  EXPECT_EQ(testing::twice_area(build_cdt(square_with_hole({{4, 4}, {4.5, 5.2}}))), 2 * 96);
+}
+
 TEST(Domain, ConcavePolygonKeepsOnlyItsInside) {
   // An L: the CDT of its vertices covers the notch [1,2]x[1,2], the domain does not.
   Pslg p;

@@ -2,11 +2,14 @@
 // Every run ends (ALGORITHM.md Sections 8 and 9): the Steiner budget, the edge
 // floor and the time limit stop a run with their outcome and name the triangle
 // being processed; small input angles give outcome unimprovable with the
-// triangles listed; a size bound makes every triangle small.
+// triangles listed; a size bound makes every triangle small. A time limit
+// that does not expire changes nothing, and progress is reported every 1000 points.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "lepp/io.h"
 #include "lepp/reference.h"
@@ -63,6 +66,25 @@ TEST(Guards, TimeLimitStops) {
   EXPECT_EQ(result.outcome, Outcome::TimeLimit);
   EXPECT_EQ(result.steiner_points, 0);
   EXPECT_FALSE(result.stuck.empty());
+}
+
+// A limit that does not expire changes nothing; the progress callback hears
+// every thousandth Steiner point, in order.
+TEST(Guards, ProgressEveryThousandPointsAndALimitThatDoesNotExpire) {
+  RefineOptions options;
+  options.max_area = 1;  // [0,100]^2: thousands of Steiner points
+  RefineResult plain = refine(square400(), options);
+  ASSERT_EQ(plain.outcome, Outcome::Converged);
+  ASSERT_GE(plain.steiner_points, 2000) << "the test needs a longer run";
+  std::vector<std::int64_t> heard;
+  options.on_progress = [&heard](std::int64_t n) { heard.push_back(n); };
+  options.time_limit_seconds = 1e9;
+  RefineResult watched = refine(square400(), options);
+  EXPECT_EQ(watched.outcome, Outcome::Converged);
+  EXPECT_EQ(watched.steiner_points, plain.steiner_points);
+  EXPECT_TRUE(watched.mesh.triangles == plain.mesh.triangles);
+  ASSERT_EQ(heard.size(), std::size_t(plain.steiner_points / 1000));
+  for (std::size_t i = 0; i < heard.size(); ++i) EXPECT_EQ(heard[i], std::int64_t(1000 * (i + 1)));
 }
 
 TEST(Guards, SmallInputAngleIsUnimprovable) {
