@@ -56,6 +56,18 @@ TEST(CertifyNames, EveryReasonHasItsOwnNameAndBelongsToACheck) {
   EXPECT_EQ(certify::check_of(Reason::TerminalAngleOver120), Check::Theorem2);
 }
 
+TEST(CertifyReport, CountOfAReportNotFilledIsZero) {
+  // count() reads past count_by_reason (empty before certify() fills it) as zero.
+  const certify::Report r;
+  for (int k = 0; k < kReasons; ++k) EXPECT_EQ(r.count(static_cast<Reason>(k)), 0u) << k;
+  certify::Report filled;
+  filled.count_by_reason.assign(kReasons, 0);
+  filled.count_by_reason[static_cast<std::size_t>(Reason::EdgeOverused)] = 3;
+  EXPECT_EQ(filled.count(Reason::EdgeOverused), 3u);
+  EXPECT_TRUE(filled.has(Reason::EdgeOverused));
+  EXPECT_FALSE(filled.certified());
+}
+
 // A saw of `teeth` teeth on a block of unit squares: each tooth (k,0) (k+1,0)
 // (k+1/2,3) has an input angle of about 18.9 degrees at its tip, and its CDT is
 // one triangle with that angle; the block is right isosceles triangles.
