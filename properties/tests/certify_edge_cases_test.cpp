@@ -1,19 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The certifier at the edges of its checks, each a case the default ctest did not
 // reach before (docs/COVERAGE.md): ids and coordinates bad in every corner, meshes
-// with fewer vertices than they claim, segment endpoints and split points absent,
-// a segment with no domain side, listed edges with ids out of range, a zero-area
-// triangle, an empty mesh, and segment_tolerance() at zero and among subnormals.
+// with fewer vertices than they claim, segment endpoints, split points and crossing
+// points absent, a segment with no domain side, listed edges with ids out of range,
+// two candidates for the next chain vertex, a zero-area triangle, an empty mesh,
+// angles on both sides of the sin^2 bracket in one triangle, the cap on listed
+// violations, and segment_tolerance() at zero and among subnormals.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <CGAL/Gmpq.h>
+
 #include "cgal_mesh.h"
+#include "lepp/angle.h"
 #include "lepp/certify.h"
+#include "lepp/input.h"
+#include "lepp/io.h"
 #include "lepp/validate.h"
 #include "test_pslgs.h"
 
@@ -22,7 +30,11 @@ namespace {
 
 using certify::Reason;
 
-certify::Report run(const Pslg& pslg, const Mesh& mesh) { return certify::certify(pslg, mesh); }
+certify::Report run(const Pslg& pslg, const Mesh& mesh, double theta = 0) {
+  certify::Options options;
+  options.min_angle_deg = theta;
+  return certify::certify(pslg, mesh, options);
+}
 
 std::size_t total(const certify::Report& r) {
   std::size_t n = 0;
@@ -69,6 +81,21 @@ TEST(CertifyEdgeCases, BadIdsAndNonFiniteCoordinatesInEveryCorner) {
   // The two vertices are in no valid triangle: unused Steiner vertices, nothing else.
   EXPECT_EQ(r.count(Reason::UnusedVertex), 2u) << certify::format_report(r);
   EXPECT_EQ(total(r), broken.size() + 2) << certify::format_report(r);
+  // The angle check skips them too.
+  const auto at20 = run(p, bad, 20);
+  EXPECT_EQ(at20.count(Reason::BadTriangle), broken.size()) << certify::format_report(at20);
+}
+
+TEST(CertifyEdgeCases, ViolationsBeyondTheCapAreCountedNotListed) {
+  const Pslg p = test::square_with_crack();
+  Mesh bad = test::cgal_cdt(p);
+  for (int k = 0; k < 3; ++k) bad.triangles.push_back({0, 1, 99 + k});  // three bad triangles
+  certify::Options options;
+  options.max_listed_per_reason = 2;
+  const auto r = certify::certify(p, bad, options);
+  EXPECT_EQ(r.count(Reason::BadTriangle), 3u);
+  EXPECT_EQ(messages(r, Reason::BadTriangle).size(), 2u);
+  EXPECT_NE(certify::format_report(r).find("3 x bad-triangle"), std::string::npos) << certify::format_report(r);
 }
 
 TEST(CertifyEdgeCases, FewerMeshVerticesThanTheInputVerticesClaimed) {
@@ -179,12 +206,59 @@ TEST(CertifyEdgeCases, SegmentAcrossAHoleNeedsNoChain) {
 TEST(CertifyEdgeCases, ListedConstrainedEdgeWithIdsOutOfRange) {
   const Pslg p = test::square_with_crack();
   Mesh bad = test::cgal_cdt(p);
-  bad.constrained_edges.push_back({0, 999, -1});
-  bad.constrained_edges.push_back({-1, 2, -1});
+  const std::vector<ConstrainedEdge> listed = {{0, 999, -1}, {999, 0, -1}, {-1, 2, -1}, {2, -1, -1}};
+  bad.constrained_edges.insert(bad.constrained_edges.end(), listed.begin(), listed.end());
   const auto r = run(p, bad);
-  EXPECT_EQ(r.count(Reason::ConstrainedEdgeNotOnSegment), 2u) << certify::format_report(r);
-  EXPECT_EQ(total(r), 2u) << certify::format_report(r);
+  EXPECT_EQ(r.count(Reason::ConstrainedEdgeNotOnSegment), listed.size()) << certify::format_report(r);
+  EXPECT_EQ(total(r), listed.size()) << certify::format_report(r);
   for (const std::string& m : messages(r, Reason::ConstrainedEdgeNotOnSegment)) EXPECT_NE(m.find("out of range"), std::string::npos) << m;
+}
+
+// Segment AB = (0,0)-(8,0) of the triangle A B C = (4,4), with P = (4,0) on it and
+// Q = (2, y) beside it, A joined to both P and Q, and Q to P. Q inside (y > 0):
+// triangles (A,P,Q), (P,B,C), (P,C,Q), (Q,C,A). Q outside (y < 0): the sliver
+// (A,Q,P) under the chord A-P, and (A,P,C), (P,B,C).
+Mesh two_candidates(double y) {
+  Mesh m;
+  m.vertices = {{0, 0}, {8, 0}, {4, 4}, {4, 0}, {2, y}};  // A B C P Q
+  m.input_vertices = 3;
+  if (y > 0) m.triangles = {{0, 3, 4}, {3, 1, 2}, {3, 2, 4}, {4, 2, 0}};
+  else m.triangles = {{0, 4, 3}, {0, 3, 2}, {3, 1, 2}};
+  return m;
+}
+
+Pslg triangle_abc() {
+  Pslg p;
+  p.vertices = {{0, 0}, {8, 0}, {4, 4}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  return test::validated(p);
+}
+
+TEST(CertifyEdgeCases, ChainTakesTheNearestOfTwoListedNeighbours) {
+  // Q 2^-47 off AB and both A-P and A-Q listed on segment 0: both are near the line;
+  // the walk takes the nearer, Q, and then finds it off the segment. (Taking P
+  // would leave Q's listed edge merely unexplained.)
+  const Pslg p = triangle_abc();
+  Mesh m = two_candidates(std::ldexp(1.0, -47));
+  m.constrained_edges = {{0, 3, 0}, {0, 4, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+  const auto r = run(p, m);
+  ASSERT_TRUE(r.has(Reason::SteinerOffSegment)) << certify::format_report(r);
+  const auto v = std::find_if(r.violations.begin(), r.violations.end(),
+                              [](const certify::Violation& x) { return x.reason == Reason::SteinerOffSegment; });
+  EXPECT_EQ(v->vertices.front(), 4) << v->message;
+}
+
+TEST(CertifyEdgeCases, ChainTakesTheNearestOfTwoNeighboursWithinATolerance) {
+  // A bare mesh (nothing listed), Q rounded 2^-51 outside the segment: P and Q are
+  // both within 1 ulp(8) of AB. The chain is A Q P B, nearest first, so the sliver
+  // (A,Q,P) lies inside it, in the domain; its only fault is its circumcircle, which
+  // holds C. Had the walk taken P first, the sliver would be outside the domain.
+  const Pslg p = triangle_abc();
+  const Mesh m = two_candidates(-std::ldexp(1.0, -51));
+  const auto r = run(p, m);
+  EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u) << certify::format_report(r);
+  EXPECT_EQ(total(r), 1u) << certify::format_report(r);
+  EXPECT_EQ(r.stats.constrained_edges, 5u);  // A-Q, Q-P, P-B, B-C, C-A
 }
 
 TEST(CertifyEdgeCases, ZeroAreaTriangleIsNotJudgedByInCircle) {
@@ -218,6 +292,71 @@ TEST(CertifyEdgeCases, EmptyMeshIsRejectedWithoutACrash) {
   EXPECT_TRUE(r.has(Reason::EulerCharacteristic));
   EXPECT_EQ(r.stats.triangles, 0u);
   EXPECT_EQ(r.stats.avg_lepp_size, 0.0);
+}
+
+// (a, b) near (cos theta, sin theta) with lo <= sin^2 < hi for the angle at the
+// origin between (1, 0) and (a, b): within one ulp of theta, not certified either
+// way. Searched among the ulp-neighbours of the rounded point, decided exactly.
+std::optional<Point> corner_in_bracket(double theta) {
+  const Sin2Bracket bracket = sin2_bracket(theta);
+  const double rad = theta * M_PI / 180;
+  for (int ka = -60; ka <= 60; ++ka)
+    for (int kb = -60; kb <= 60; ++kb) {
+      double a = std::cos(rad), b = std::sin(rad);
+      for (int k = 0; k < std::abs(ka); ++k) a = std::nextafter(a, ka > 0 ? 2.0 : 0.0);
+      for (int k = 0; k < std::abs(kb); ++k) b = std::nextafter(b, kb > 0 ? 2.0 : 0.0);
+      const CGAL::Gmpq A(a), B(b), s2 = B * B / (A * A + B * B);
+      if (CGAL::Gmpq(bracket.lo) <= s2 && s2 < CGAL::Gmpq(bracket.hi)) return Point{a, b};
+    }
+  return std::nullopt;
+}
+
+TEST(CertifyEdgeCases, AngleCertainlyBelowThetaWinsOverOneWithinTheBracket) {
+  // O = (0,0), P = (1/8, 0), Q near (cos 20, sin 20): the angle at O is within one ulp
+  // of 20 degrees (the scale of OP cancels exactly), the angle at Q about 2.4 degrees,
+  // certainly below. The triangle is below theta, not "not certified", whichever
+  // corner comes first.
+  const double theta = 20;
+  const auto q = corner_in_bracket(theta);
+  ASSERT_TRUE(q.has_value()) << "no corner inside the sin^2 bracket among the nudges";
+  Pslg p;
+  p.vertices = {{0, 0}, {0.125, 0}, *q};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  p = test::validated(p);
+  for (const Tri& t : {Tri{0, 1, 2}, Tri{2, 0, 1}}) {  // the uncertain corner first, then last
+    Mesh m;
+    m.vertices = p.vertices;
+    m.input_vertices = 3;
+    m.triangles = {t};
+    const auto r = run(p, m, theta);
+    EXPECT_EQ(r.count(Reason::AngleBelowTheta), 1u) << certify::format_report(r);
+    EXPECT_FALSE(r.has(Reason::AngleNotCertified)) << certify::format_report(r);
+  }
+}
+
+TEST(CertifyEdgeCases, CrossingPointMatchedToAnUnusedVertexIsMissing) {
+  // corpus/triangle-formats/crossing.poly with --split-crossings: a crossing point
+  // another mesher rounded otherwise is matched to the nearest mesh vertex within
+  // 2^-40. Here the triangles' vertex is two ulps away and an unused vertex one ulp
+  // away: the match is the unused one, so the crossing point is in no triangle.
+  std::vector<std::string> warnings;
+  DomainOptions split;
+  split.split_crossings = true;
+  const Pslg p = validate(read_poly(LEPP_SOURCE_DIR "/corpus/triangle-formats/crossing.poly"), split, warnings);
+  ASSERT_GT(p.crossing_vertices, 0u);
+  Mesh m = test::cgal_cdt(p);
+  m.input_vertices = 0;  // as read from files: vertices found by their coordinates
+  const std::size_t x = p.vertices.size() - 1;  // a crossing point
+  Point near = m.vertices[x];
+  near.x = std::nextafter(near.x, HUGE_VAL);
+  m.vertices[x].x = std::nextafter(near.x, HUGE_VAL);
+  m.vertices.push_back(near);
+  EXPECT_TRUE(run(p, test::cgal_cdt(p)).certified());
+  const auto r = run(p, m);
+  ASSERT_EQ(r.count(Reason::InputVertexMissing), 1u) << certify::format_report(r);
+  const auto v = std::find_if(r.violations.begin(), r.violations.end(),
+                              [](const certify::Violation& y) { return y.reason == Reason::InputVertexMissing; });
+  EXPECT_EQ(v->vertices.front(), static_cast<int>(x));
 }
 
 TEST(CertifyEdgeCases, SegmentToleranceAtZeroAndAmongSubnormals) {
