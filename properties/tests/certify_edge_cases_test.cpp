@@ -214,38 +214,57 @@ TEST(CertifyEdgeCases, ListedConstrainedEdgeWithIdsOutOfRange) {
   for (const std::string& m : messages(r, Reason::ConstrainedEdgeNotOnSegment)) EXPECT_NE(m.find("out of range"), std::string::npos) << m;
 }
 
-// Segment AB = (0,0)-(8,0) of the triangle A B C = (4,4), with P = (4,0) on it and
-// Q = (2, y) beside it, A joined to both P and Q, and Q to P. Q inside (y > 0):
-// triangles (A,P,Q), (P,B,C), (P,C,Q), (Q,C,A). Q outside (y < 0): the sliver
-// (A,Q,P) under the chord A-P, and (A,P,C), (P,B,C).
-Mesh two_candidates(double y) {
-  Mesh m;
-  m.vertices = {{0, 0}, {8, 0}, {4, 4}, {4, 0}, {2, y}};  // A B C P Q
-  m.input_vertices = 3;
-  if (y > 0) m.triangles = {{0, 3, 4}, {3, 1, 2}, {3, 2, 4}, {4, 2, 0}};
-  else m.triangles = {{0, 4, 3}, {0, 3, 2}, {3, 1, 2}};
-  return m;
-}
-
-Pslg triangle_abc() {
+// The triangle A B C with A = o, B = o + (len, 0), C = o + (len/2, len/2).
+Pslg triangle_abc(Point o = {0, 0}, double len = 8) {
   Pslg p;
-  p.vertices = {{0, 0}, {8, 0}, {4, 4}};
+  p.vertices = {o, {o.x + len, o.y}, {o.x + len / 2, o.y + len / 2}};
   p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
   return test::validated(p);
 }
 
+// Its mesh with P = o + (len/2, 0) on AB and Q = o + (len/4, y) beside it, A joined
+// to both and Q to P; vertex ids A B C 0 1 2, then P Q (Q P with q_first).
+// Q inside (y > 0): triangles (A,P,Q), (P,B,C), (P,C,Q), (Q,C,A). Q outside
+// (y < 0): the sliver (A,Q,P) under the chord A-P, and (A,P,C), (P,B,C).
+struct TwoCandidates {
+  Mesh mesh;
+  int P, Q;
+};
+TwoCandidates two_candidates(double y, bool q_first, Point o = {0, 0}, double len = 8) {
+  TwoCandidates t;
+  t.P = q_first ? 4 : 3;
+  t.Q = q_first ? 3 : 4;
+  const int P = t.P, Q = t.Q;
+  Mesh& m = t.mesh;
+  m.vertices = triangle_abc(o, len).vertices;
+  m.vertices.resize(5);
+  m.vertices[static_cast<std::size_t>(P)] = {o.x + len / 2, o.y};
+  m.vertices[static_cast<std::size_t>(Q)] = {o.x + len / 4, o.y + y};
+  m.input_vertices = 3;
+  if (y > 0) m.triangles = {{0, P, Q}, {P, 1, 2}, {P, 2, Q}, {Q, 2, 0}};
+  else m.triangles = {{0, Q, P}, {0, P, 2}, {P, 1, 2}};
+  return t;
+}
+
+const certify::Violation* first_of(const certify::Report& r, Reason reason) {
+  for (const certify::Violation& v : r.violations)
+    if (v.reason == reason) return &v;
+  return nullptr;
+}
+
 TEST(CertifyEdgeCases, ChainTakesTheNearestOfTwoListedNeighbours) {
   // Q 2^-47 off AB and both A-P and A-Q listed on segment 0: both are near the line;
-  // the walk takes the nearer, Q, and then finds it off the segment. (Taking P
-  // would leave Q's listed edge merely unexplained.)
+  // the walk takes the nearer, Q, whatever the numbering, and then finds it off the
+  // segment. (Taking P would leave Q's listed edge merely unexplained.)
   const Pslg p = triangle_abc();
-  Mesh m = two_candidates(std::ldexp(1.0, -47));
-  m.constrained_edges = {{0, 3, 0}, {0, 4, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
-  const auto r = run(p, m);
-  ASSERT_TRUE(r.has(Reason::SteinerOffSegment)) << certify::format_report(r);
-  const auto v = std::find_if(r.violations.begin(), r.violations.end(),
-                              [](const certify::Violation& x) { return x.reason == Reason::SteinerOffSegment; });
-  EXPECT_EQ(v->vertices.front(), 4) << v->message;
+  for (bool q_first : {false, true}) {
+    TwoCandidates t = two_candidates(std::ldexp(1.0, -47), q_first);
+    t.mesh.constrained_edges = {{0, t.P, 0}, {0, t.Q, 0}, {t.P, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+    const auto r = run(p, t.mesh);
+    const certify::Violation* v = first_of(r, Reason::SteinerOffSegment);
+    ASSERT_NE(v, nullptr) << certify::format_report(r);
+    EXPECT_EQ(v->vertices.front(), t.Q) << v->message;
+  }
 }
 
 TEST(CertifyEdgeCases, ChainTakesTheNearestOfTwoNeighboursWithinATolerance) {
@@ -254,11 +273,29 @@ TEST(CertifyEdgeCases, ChainTakesTheNearestOfTwoNeighboursWithinATolerance) {
   // (A,Q,P) lies inside it, in the domain; its only fault is its circumcircle, which
   // holds C. Had the walk taken P first, the sliver would be outside the domain.
   const Pslg p = triangle_abc();
-  const Mesh m = two_candidates(-std::ldexp(1.0, -51));
-  const auto r = run(p, m);
-  EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u) << certify::format_report(r);
-  EXPECT_EQ(total(r), 1u) << certify::format_report(r);
-  EXPECT_EQ(r.stats.constrained_edges, 5u);  // A-Q, Q-P, P-B, B-C, C-A
+  for (bool q_first : {false, true}) {
+    const auto r = run(p, two_candidates(-std::ldexp(1.0, -51), q_first).mesh);
+    EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u) << certify::format_report(r);
+    EXPECT_EQ(total(r), 1u) << certify::format_report(r);
+    EXPECT_EQ(r.stats.constrained_edges, 5u);  // A-Q, Q-P, P-B, B-C, C-A
+  }
+}
+
+TEST(CertifyEdgeCases, ListedEdgeWithinTheLoosestToleranceIsFollowed) {
+  // A segment 2^-12 long at x = 2^20 (ulp 2^-32): Q, 2^-30 off it, is not within
+  // 2^-20 |AB| = 2^-32 of the line, but within the loosest tolerance, (5 + 1) ulp
+  // with five mesh vertices. The listed edge A-Q is followed, before P (on the line,
+  // not listed from A) is, and Q is then held to the chain's own tolerance (k = 2:
+  // 3 ulp) and found off the segment.
+  const Point o{std::ldexp(1.0, 20), 0};
+  const double len = std::ldexp(1.0, -12);
+  const Pslg p = triangle_abc(o, len);
+  TwoCandidates t = two_candidates(std::ldexp(1.0, -30), false, o, len);
+  t.mesh.constrained_edges = {{0, t.Q, 0}, {t.P, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+  const auto r = run(p, t.mesh);
+  const certify::Violation* v = first_of(r, Reason::SteinerOffSegment);
+  ASSERT_NE(v, nullptr) << certify::format_report(r);
+  EXPECT_EQ(v->vertices.front(), t.Q) << v->message;
 }
 
 TEST(CertifyEdgeCases, ZeroAreaTriangleIsNotJudgedByInCircle) {
