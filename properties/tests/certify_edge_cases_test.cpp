@@ -5,7 +5,8 @@
 // points absent, a segment with no domain side, listed edges with ids out of range,
 // two candidates for the next chain vertex, a zero-area triangle, an empty mesh,
 // angles on both sides of the sin^2 bracket in one triangle, the cap on listed
-// violations, and segment_tolerance() at zero and among subnormals.
+// violations, the Theorem 2 check switched off, and segment_tolerance() at zero
+// and among subnormals.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -394,6 +395,30 @@ TEST(CertifyEdgeCases, CrossingPointMatchedToAnUnusedVertexIsMissing) {
   const auto v = std::find_if(r.violations.begin(), r.violations.end(),
                               [](const certify::Violation& y) { return y.reason == Reason::InputVertexMissing; });
   EXPECT_EQ(v->vertices.front(), static_cast<int>(x));
+}
+
+TEST(CertifyEdgeCases, TheoremTwoCheckSwitchedOff) {
+  // Two flat triangles on the common edge (-1,0)-(1,0), apexes at (0, +-0.25): a
+  // terminal pair at about 152 degrees (and not Delaunay). Options::theorem2 = false
+  // (lepp certify --no-theorem2) skips the Theorem 2 check, nothing else.
+  Pslg p;
+  p.vertices = {{-1, 0}, {1, 0}, {0, 0.25}, {0, -0.25}};
+  p.segments = {{0, 3, 0}, {3, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  p = test::validated(p);
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 4;
+  m.triangles = {{0, 1, 2}, {1, 0, 3}};
+  certify::Options options;
+  const auto with = certify::certify(p, m, options);
+  EXPECT_EQ(with.count(Reason::TerminalAngleOver120), 2u) << certify::format_report(with);
+  EXPECT_EQ(with.stats.terminal_pairs_checked, 1u);
+  options.theorem2 = false;
+  const auto without = certify::certify(p, m, options);
+  EXPECT_FALSE(without.has(Reason::TerminalAngleOver120)) << certify::format_report(without);
+  EXPECT_EQ(without.stats.terminal_pairs_checked, 0u);
+  EXPECT_EQ(without.count(Reason::NotLocallyDelaunay), with.count(Reason::NotLocallyDelaunay));
+  EXPECT_EQ(total(without), total(with) - 2);
 }
 
 TEST(CertifyEdgeCases, SegmentToleranceAtZeroAndAmongSubnormals) {
