@@ -3,10 +3,12 @@
 // reach before (docs/COVERAGE.md): ids and coordinates bad in every corner, meshes
 // with fewer vertices than they claim, segment endpoints, split points and crossing
 // points absent, a segment with no domain side, listed edges with ids out of range,
-// two candidates for the next chain vertex, a zero-area triangle, an empty mesh,
-// angles on both sides of the sin^2 bracket in one triangle, the cap on listed
-// violations, the Theorem 2 check switched off, and segment_tolerance() at zero
-// and among subnormals.
+// two candidates for the next chain vertex, vertices exactly at the tolerance and
+// near-line bounds, a zero-area triangle, an empty mesh, angles on both sides of
+// the sin^2 bracket in one triangle, the section 8 rule's three conditions (apex
+// in the mesh, input angle below theta, triangle inside the wedge), an input angle
+// within an ulp of 60 degrees, the cap on listed violations, the Theorem 2 check
+// switched off, and segment_tolerance() at zero and among subnormals.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +25,7 @@
 #include "lepp/certify.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "lepp/small_input_angles.h"
 #include "lepp/validate.h"
 #include "test_pslgs.h"
 
@@ -419,6 +422,145 @@ TEST(CertifyEdgeCases, TheoremTwoCheckSwitchedOff) {
   EXPECT_EQ(without.stats.terminal_pairs_checked, 0u);
   EXPECT_EQ(without.count(Reason::NotLocallyDelaunay), with.count(Reason::NotLocallyDelaunay));
   EXPECT_EQ(total(without), total(with) - 2);
+}
+
+TEST(CertifyEdgeCases, SteinerPointExactlyAtTheToleranceBound) {
+  // Segment (0,0)-(8,8) with one interior chain vertex P = (4 + off, 4): the bound is
+  // |cross| <= tol (|dx| + |dy|), tol = 2 ulp(8) = 2^-48, i.e. off <= 2 tol. At the
+  // bound (equality, decided as an exact zero) P is on the segment; one ulp further not.
+  const Point a{0, 0}, b{8, 8};
+  const double tol = certify::segment_tolerance(a, b, 1);
+  Pslg p;
+  p.vertices = {a, b, {8, 0}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  p = test::validated(p);
+  const double at = 4 + 2 * tol;
+  for (double x : {at, std::nextafter(at, 5.0)}) {
+    Mesh m;
+    m.vertices = {a, b, {8, 0}, {x, 4}};
+    m.input_vertices = 3;
+    m.triangles = {{0, 2, 3}, {3, 2, 1}};
+    m.constrained_edges = {{0, 3, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+    const auto r = run(p, m);
+    EXPECT_EQ(r.has(Reason::SteinerOffSegment), x != at) << certify::format_report(r);
+  }
+}
+
+TEST(CertifyEdgeCases, ListedNeighbourExactlyAtTheNearLineBound) {
+  // Q = (2, y) listed from A on segment (0,0)-(8,0): near the line iff
+  // |cross| <= 2^-20 |AB|^2, i.e. y <= 2^-17. At the bound Q is followed (and found
+  // off the segment); one ulp further it is not, and its listed edge is on no chain.
+  const Pslg p = triangle_abc();
+  const double at = std::ldexp(1.0, -17);
+  for (double y : {at, std::nextafter(at, 1.0)}) {
+    TwoCandidates t = two_candidates(y, false);
+    t.mesh.constrained_edges = {{0, t.Q, 0}, {t.P, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+    const auto r = run(p, t.mesh);
+    const certify::Violation* off = first_of(r, Reason::SteinerOffSegment);
+    if (y == at) {
+      ASSERT_NE(off, nullptr) << certify::format_report(r);
+      EXPECT_EQ(off->vertices.front(), t.Q);
+    } else {
+      EXPECT_EQ(off, nullptr) << certify::format_report(r);
+      EXPECT_TRUE(r.has(Reason::ConstrainedEdgeNotOnSegment)) << certify::format_report(r);
+    }
+  }
+}
+
+// A wedge of `deg` degrees at V = (0,0) between U = (1,0) and W = (cos, sin), closed by U-W.
+Pslg wedge(double deg) {
+  const double rad = deg * M_PI / 180;
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {std::cos(rad), std::sin(rad)}};
+  p.segments = {{0, 1, 0}, {0, 2, 0}, {1, 2, 0}};
+  return test::validated(p);
+}
+
+TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheApexInTheMesh) {
+  // The 10-degree wedge listed unimprovable at theta = 20 (accepted, RuleCheckedNotTrusted),
+  // but the apex a hair away in a mesh that does not promise ids: the two segments
+  // meet at an input vertex the mesh does not have, and the rule does not hold.
+  const Pslg p = wedge(10);
+  Mesh m;
+  m.vertices = p.vertices;
+  m.triangles = {{0, 1, 2}};
+  certify::Options options;
+  options.min_angle_deg = 20;
+  options.unimprovable = {{{0, 1, 2}, 0, 0, 1, 10}};
+  ASSERT_TRUE(certify::certify(p, m, options).certified()) << certify::format_report(certify::certify(p, m, options));
+  m.vertices[0] = {std::ldexp(1.0, -60), std::ldexp(1.0, -64)};  // still inside the wedge
+  const auto r = certify::certify(p, m, options);
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  EXPECT_TRUE(r.unimprovable_accepted.empty());
+  EXPECT_EQ(r.count(Reason::InputVertexMissing), 1u) << certify::format_report(r);
+}
+
+TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheInputAngleBelowTheta) {
+  // A 30-degree wedge with Steiner points P1 = (1/2, 0) and Q1 = W/2 on its arms:
+  // triangle (P1, U, Q1) has an angle of about 23.8 degrees at U and its shortest
+  // edge P1-Q1 joins the two segments, but they meet at 30 degrees, not below
+  // theta = 25: listed unimprovable, it is rejected.
+  const Pslg p = wedge(30);
+  const Point& w = p.vertices[2];
+  Mesh m;
+  m.vertices = p.vertices;
+  m.vertices.push_back({0.5, 0});             // P1 = 3
+  m.vertices.push_back({w.x / 2, w.y / 2});   // Q1 = 4
+  m.input_vertices = 3;
+  m.triangles = {{0, 3, 4}, {3, 1, 4}, {4, 1, 2}};
+  certify::Options options;
+  options.min_angle_deg = 25;
+  const auto plain = certify::certify(p, m, options);
+  ASSERT_EQ(plain.count(Reason::AngleBelowTheta), 1u) << certify::format_report(plain);
+  options.unimprovable = {{{3, 1, 4}, 0, 0, 1, 30}};
+  const auto r = certify::certify(p, m, options);
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  EXPECT_TRUE(r.unimprovable_accepted.empty());
+}
+
+TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedge) {
+  // Two cracks from V = (0,0) inside the square [-10,10]^2: V-U, U = (4,0), and V-W,
+  // W = 4 (cos 20, sin 20): a 20-degree input angle. Triangle (V,U,W) lies in the
+  // wedge, is skinny at V and unimprovable. Triangle (W,U,R), R = (5,-1.5), is skinny
+  // (about 13 and 11 degrees) and its shortest edge W-U joins the two segments, but R
+  // lies beyond the arm V-U (its edge W-R passes beyond U, the arm's end): outside
+  // the wedge, the rule does not hold. Only the two listed triangles matter here;
+  // the rest of the square is not meshed.
+  const double rad = 20 * M_PI / 180;
+  Pslg p;
+  p.vertices = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {4, 0}, {4 * std::cos(rad), 4 * std::sin(rad)}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 0}, {4, 6, 0}};
+  p = test::validated(p);
+  Mesh m;
+  m.vertices = p.vertices;
+  m.vertices.push_back({5, -1.5});  // R = 7
+  m.input_vertices = p.vertices.size();
+  m.triangles = {{6, 5, 7}, {4, 5, 6}};
+  certify::Options options;
+  options.min_angle_deg = 25;
+  options.unimprovable = {{{6, 5, 7}, 4, 4, 5, 20}, {{4, 5, 6}, 4, 4, 5, 20}};
+  const auto r = certify::certify(p, m, options);
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  const certify::Violation* v = first_of(r, Reason::UnimprovableRuleFails);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->triangles, std::vector<int>{0});
+  ASSERT_EQ(r.unimprovable_accepted.size(), 1u);
+  EXPECT_EQ(r.unimprovable_accepted[0].triangle, (Tri{4, 5, 6}));
+}
+
+TEST(CertifyEdgeCases, InputAngleAtTheDoubleNearestSixtyDegreesIsDecidedExactly) {
+  // W = (1/2, the double nearest sqrt(3)/2): the angle at V between U = (1,0) and W
+  // is within an ulp of 60 degrees, where the interval filter cannot decide; the
+  // exact answer (4 cross^2 < 3 |u|^2 |w|^2 in rationals) decides whether it is small.
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}};
+  p.segments = {{0, 1, 0}, {0, 2, 0}, {1, 2, 0}};
+  p = test::validated(p);
+  const CGAL::Gmpq x(p.vertices[2].x), y(p.vertices[2].y);
+  const bool below = 4 * y * y < 3 * (x * x + y * y);  // u = (1, 0): cross = y
+  const auto angles = certify::small_input_angles(p);
+  const bool found = std::any_of(angles.begin(), angles.end(), [](const certify::SmallInputAngle& a) { return a.apex == 0; });
+  EXPECT_EQ(found, below);
 }
 
 TEST(CertifyEdgeCases, SegmentToleranceAtZeroAndAmongSubnormals) {
