@@ -110,8 +110,11 @@ def sync_scratch(scratch):
     log(f"scratch {scratch}: {copied} files updated")
 
 
+NICE = 19  # --nice: how much to lower the harness's priority (19 leaves the machine to others)
+
+
 def nice(cmd):
-    return ["nice", "-n", "19"] + cmd
+    return ["nice", "-n", str(NICE)] + cmd
 
 
 def failed_tests(out):
@@ -159,10 +162,13 @@ def main():
     ap.add_argument("--fuzz", action="store_true")
     ap.add_argument("--exclude", default="", help="ctest -E regex: tests failing on the unmutated tree too, left out (named in the report)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--nice", type=int, default=19, help="niceness of builds and tests (0: compete evenly with other work)")
     ap.add_argument("--pass", dest="pass_", choices=["both", "quick", "full"], default="both",
                     help="quick: only each mutant's quick tests (survivors wait as survived-quick); "
                          "full: the whole ctest for those waiting; both (default): one after the other per mutant")
     a = ap.parse_args()
+    global NICE
+    NICE = a.nice
 
     mutants = parse_catalogue(CATALOGUE)
     scratch = os.path.abspath(a.scratch)
