@@ -15,12 +15,14 @@
 #   LEPP_COVERAGE_EXCLUDE: a ctest -E regex of tests left out (with LEPP_COVERAGE_TARGETS);
 #   LEPP_COVERAGE_SPLIT: a ctest -R regex; the report also shows coverage without those tests;
 #   LEPP_COVERAGE_BATCH_SECONDS: time cap of each batch of 50 replayed inputs (default 600).
+#   LEPP_COVERAGE_NICE: niceness of the builds and runs (default 19; 0 to compete evenly with fuzzing at 19).
 # Needs gcovr (Debian's, scripts/install-deps.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 build=${LEPP_COVERAGE_BUILD:-build-cov}
 jobs=${LEPP_COVERAGE_JOBS:-$(nproc)}
+niceness=${LEPP_COVERAGE_NICE:-19}
 out=$build/coverage
 steps=("$@")
 [ ${#steps[@]} -eq 0 ] && steps=(build ctest fuzz report)
@@ -42,7 +44,7 @@ for step in "${steps[@]}"; do
         -DCMAKE_EXE_LINKER_FLAGS=--coverage -DCMAKE_SHARED_LINKER_FLAGS=--coverage \
         -DLEPP_BUILD_BENCH=OFF >&2
       # LEPP_COVERAGE_TARGETS: build only these (then pass LEPP_COVERAGE_CTEST_ARGS to match).
-      nice -n 19 cmake --build "$build" -j "$jobs" ${LEPP_COVERAGE_TARGETS:+--target $LEPP_COVERAGE_TARGETS} >&2
+      nice -n "$niceness" cmake --build "$build" -j "$jobs" ${LEPP_COVERAGE_TARGETS:+--target $LEPP_COVERAGE_TARGETS} >&2
       ;;
     ctest)
       mkdir -p "$out"
@@ -53,16 +55,16 @@ for step in "${steps[@]}"; do
       # "without" in the report: what those tests add), then the rest on top.
       set +e
       if [ -n "${LEPP_COVERAGE_SPLIT:-}" ]; then
-        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} -E "$LEPP_COVERAGE_SPLIT${LEPP_COVERAGE_EXCLUDE:+|$LEPP_COVERAGE_EXCLUDE}" > "$out/ctest.log" 2>&1
+        nice -n "$niceness" ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} -E "$LEPP_COVERAGE_SPLIT${LEPP_COVERAGE_EXCLUDE:+|$LEPP_COVERAGE_EXCLUDE}" > "$out/ctest.log" 2>&1
         echo $? > "$out/ctest.status"
         set -e
         gcovr "${gcovr_args[@]}" --json "$out/ctest-without.json" >&2
         set +e
-        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} -R "$LEPP_COVERAGE_SPLIT" >> "$out/ctest.log" 2>&1
+        nice -n "$niceness" ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} -R "$LEPP_COVERAGE_SPLIT" >> "$out/ctest.log" 2>&1
         echo $(( $? | $(cat "$out/ctest.status") )) > "$out/ctest.status"
       else
         rm -f "$out/ctest-without.json"
-        nice -n 19 ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} \
+        nice -n "$niceness" ctest --test-dir "$build" -j "$jobs" --timeout 1200 ${LEPP_COVERAGE_CTEST_ARGS:-} \
           ${LEPP_COVERAGE_EXCLUDE:+-E "$LEPP_COVERAGE_EXCLUDE"} > "$out/ctest.log" 2>&1
         echo $? > "$out/ctest.status"
       fi
@@ -84,11 +86,11 @@ for step in "${steps[@]}"; do
         # In batches of 50 inputs, each batch capped at LEPP_COVERAGE_BATCH_SECONDS (default 600):
         # a unit that runs away costs its batch only (a killed process writes no counters).
         find "${dirs[@]}" -maxdepth 1 -type f ! -name '*.md' -print0 | sort -z |
-          xargs -0 -r -n 50 timeout "${LEPP_COVERAGE_BATCH_SECONDS:-600}" nice -n 19 "$build/fuzz/${t}_replay" \
+          xargs -0 -r -n 50 timeout "${LEPP_COVERAGE_BATCH_SECONDS:-600}" nice -n "$niceness" "$build/fuzz/${t}_replay" \
             >> "$out/fuzz.log" 2>&1 || echo "($t: some batch reported findings or timed out)" >> "$out/fuzz.log"
         # Open findings are replayed too (they still report theirs): their paths count.
         if [ -d "corpus/regressions/$t/open" ]; then
-          timeout "${LEPP_COVERAGE_BATCH_SECONDS:-600}" nice -n 19 "$build/fuzz/${t}_replay" --expect-finding \
+          timeout "${LEPP_COVERAGE_BATCH_SECONDS:-600}" nice -n "$niceness" "$build/fuzz/${t}_replay" --expect-finding \
             "corpus/regressions/$t/open" >> "$out/fuzz.log" 2>&1 || true
         fi
       done
