@@ -82,9 +82,13 @@ TEST_P(NearDegenerate, AgreeWithExactArithmetic) {
   EXPECT_EQ(undecided_by_filter_would_be_wrong, 0);
 }
 
+// 1e-78 and 1e-155: the scales where the terms of the degree-4 (in-circle, skinny) and
+// degree-2 (orientation) polynomials are subnormal but not zero, so rounding in double
+// loses most of their digits; the filter must hand them to exact arithmetic.
 INSTANTIATE_TEST_SUITE_P(Scales, NearDegenerate,
                          ::testing::Values(Scale{1, 0}, Scale{1, 1000}, Scale{1e-150, 0}, Scale{1e-300, 0},
-                                           Scale{1e150, 0}, Scale{1e-3, 0.75}));
+                                           Scale{1e150, 0}, Scale{1e-3, 0.75}, Scale{1e-78, 0},
+                                           Scale{1e-155, 0}));
 
 TEST(Predicates, ExactTiesAreZero) {
   // (3,4), (5,0), (4,-3), (-5,0) lie on the circle of radius 5.
