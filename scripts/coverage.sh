@@ -16,6 +16,7 @@
 #   LEPP_COVERAGE_SPLIT: a ctest -R regex; the report also shows coverage without those tests;
 #   LEPP_COVERAGE_BATCH_SECONDS: time cap of each batch of 50 replayed inputs (default 600).
 #   LEPP_COVERAGE_CXXFLAGS: optimisation flags of the instrumented build (default -O1 -fno-inline);
+#   LEPP_COVERAGE_INLINED: a gcovr JSON of the default ctest in a build that inlines, shown for comparison;
 #   LEPP_COVERAGE_NICE: niceness of the builds and runs (default 19; 0 to compete evenly with fuzzing at 19).
 # Needs gcovr (Debian's, scripts/install-deps.sh).
 set -euo pipefail
@@ -106,7 +107,8 @@ for step in "${steps[@]}"; do
       gcovr -r "$root" --add-tracefile "$out/ctest.json" --add-tracefile "$out/fuzz.json" --json "$out/all.json" >&2
       python3 tools/coverage/report.py --ctest "$out/ctest.json" --fuzz "$out/fuzz.json" --all "$out/all.json" \
         --reasons tools/coverage/reasons.txt --ctest-seconds "$(cat "$out/ctest.seconds" 2>/dev/null || echo '?')" \
-        --ctest-log "$out/ctest.log" --ctest-args "${LEPP_COVERAGE_CTEST_ARGS:-}${LEPP_COVERAGE_EXCLUDE:+ -E $LEPP_COVERAGE_EXCLUDE}" ${LEPP_COVERAGE_SPLIT:+--without "$out/ctest-without.json" --split "$LEPP_COVERAGE_SPLIT"} \
+        --ctest-log "$out/ctest.log" --flags="${LEPP_COVERAGE_CXXFLAGS:--O1 -fno-inline}" --build "$build" \
+        ${LEPP_COVERAGE_INLINED:+--inlined "$LEPP_COVERAGE_INLINED"} --ctest-args "${LEPP_COVERAGE_CTEST_ARGS:-}${LEPP_COVERAGE_EXCLUDE:+ -E $LEPP_COVERAGE_EXCLUDE}" ${LEPP_COVERAGE_SPLIT:+--without "$out/ctest-without.json" --split "$LEPP_COVERAGE_SPLIT"} \
         > docs/COVERAGE.md
       echo "wrote docs/COVERAGE.md" >&2
       ;;
