@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Line and branch coverage of core/, impl/, reference/ and properties/certify/
-# (docs/COVERAGE.md): an instrumented build in its own tree (g++ --coverage -O1 -fno-inline),
+# (docs/COVERAGE.md): an instrumented build in its own tree (g++ --coverage -O1),
 # measured under (a) the default ctest and (b) the replay of every fuzz corpus,
 # then the report, with each uncovered branch's reason from tools/coverage/reasons.txt.
 # Opt-in, not part of CI: a full rebuild (about 20 CPU-minutes) plus two test runs.
 #
-#   scripts/coverage.sh [STEP...]    steps: build ctest fuzz report (default: all four)
+#   scripts/coverage.sh [STEP...]    steps: build ctest fuzz llvm report (default: all five)
+# llvm: the default ctest again in a clang build with source-based coverage, whose
+# branches are the conditions written in our sources (each if, &&, ||, ?:, loop test,
+# true and false). g++'s branches also count what it inlines into our lines: CGAL's
+# lazy exact numbers and filtered predicates bring 5 to 40 branches to each arithmetic
+# line of the reference and the certifier (interval filter, exact fallback, exception
+# cleanup), which no test of ours decides. The report gives both.
 # Environment: LEPP_COVERAGE_BUILD (default build-cov), LEPP_COVERAGE_JOBS (default nproc),
 #   LEPP_COVERAGE_CORPORA: extra corpus directories per target to replay, as
 #   TARGET=DIR entries separated by spaces (default: out/fuzz/TARGET/corpus when it exists);
@@ -15,8 +21,8 @@
 #   LEPP_COVERAGE_EXCLUDE: a ctest -E regex of tests left out (with LEPP_COVERAGE_TARGETS);
 #   LEPP_COVERAGE_SPLIT: a ctest -R regex; the report also shows coverage without those tests;
 #   LEPP_COVERAGE_BATCH_SECONDS: time cap of each batch of 50 replayed inputs (default 600).
-#   LEPP_COVERAGE_CXXFLAGS: optimisation flags of the instrumented build (default -O1 -fno-inline);
-#   LEPP_COVERAGE_INLINED: a gcovr JSON of the default ctest in a build that inlines, shown for comparison;
+#   LEPP_COVERAGE_CXXFLAGS: optimisation flags of the instrumented g++ build (default -O1);
+#   LEPP_COVERAGE_LLVM_BUILD: the clang build of the llvm step (default build-cov-llvm);
 #   LEPP_COVERAGE_NICE: niceness of the builds and runs (default 19; 0 to compete evenly with fuzzing at 19).
 # Needs gcovr (Debian's, scripts/install-deps.sh).
 set -euo pipefail
@@ -27,7 +33,7 @@ jobs=${LEPP_COVERAGE_JOBS:-$(nproc)}
 niceness=${LEPP_COVERAGE_NICE:-19}
 out=$build/coverage
 steps=("$@")
-[ ${#steps[@]} -eq 0 ] && steps=(build ctest fuzz report)
+[ ${#steps[@]} -eq 0 ] && steps=(build ctest fuzz llvm report)
 targets=(fuzz_parse fuzz_refine fuzz_differential fuzz_cdt)
 
 # What is measured: the libraries, not their tests, benchmarks or the CLI.
@@ -41,12 +47,8 @@ zero_counters() { find "$build" -name '*.gcda' -delete; }
 for step in "${steps[@]}"; do
   case "$step" in
     build)
-      # -fno-inline: a branch is counted on the line that decides it. Inlined, CGAL's
-      # lazy exact numbers put 5 to 30 of their own branches (interval filter, exact
-      # fallback, reference counts) on every arithmetic line of the reference and the
-      # certifier; not inlined, those branches stay in CGAL's headers, outside the measure.
       cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=None \
-        "-DCMAKE_CXX_FLAGS=${LEPP_COVERAGE_CXXFLAGS:--O1 -fno-inline} --coverage -fprofile-update=atomic" \
+        "-DCMAKE_CXX_FLAGS=${LEPP_COVERAGE_CXXFLAGS:--O1} --coverage -fprofile-update=atomic" \
         -DCMAKE_EXE_LINKER_FLAGS=--coverage -DCMAKE_SHARED_LINKER_FLAGS=--coverage \
         -DLEPP_BUILD_BENCH=OFF >&2
       # LEPP_COVERAGE_TARGETS: build only these (then pass LEPP_COVERAGE_CTEST_ARGS to match).
@@ -103,15 +105,43 @@ for step in "${steps[@]}"; do
       grep -E '^(==|replayed)' "$out/fuzz.log" >&2 || true
       gcovr "${gcovr_args[@]}" --json "$out/fuzz.json" --txt "$out/fuzz.txt" >&2
       ;;
+    llvm)
+      lbuild=${LEPP_COVERAGE_LLVM_BUILD:-$build-llvm}
+      CC=clang CXX=clang++ cmake -S . -B "$lbuild" -G Ninja -DCMAKE_BUILD_TYPE=None \
+        "-DCMAKE_CXX_FLAGS=-O1 -fprofile-instr-generate -fcoverage-mapping" \
+        -DCMAKE_EXE_LINKER_FLAGS=-fprofile-instr-generate -DLEPP_BUILD_BENCH=OFF >&2
+      nice -n "$niceness" cmake --build "$lbuild" -j "$jobs" >&2
+      mkdir -p "$out"
+      rm -rf "$lbuild/profiles"
+      mkdir -p "$lbuild/profiles"
+      start=$(date +%s)
+      # %4m: a pool of four files per binary, merged online (the tests run in parallel).
+      set +e
+      LLVM_PROFILE_FILE="$root/$lbuild/profiles/%4m.profraw" nice -n "$niceness" \
+        ctest --test-dir "$lbuild" -j "$jobs" --timeout 1200 > "$out/llvm-ctest.log" 2>&1
+      set -e
+      echo $(( $(date +%s) - start )) > "$out/llvm-ctest.seconds"
+      tail -3 "$out/llvm-ctest.log" >&2
+      llvm-profdata merge -sparse "$lbuild"/profiles/*.profraw -o "$out/llvm.profdata"
+      # Every instrumented program the tests ran: the test executables and the CLI.
+      mapfile -t objects < <(find "$lbuild" -type f -perm -u+x ! -name '*.so*' ! -path '*/CMakeFiles/*' \
+        -exec sh -c 'head -c 4 "$1" | grep -q ELF' _ {} \; -print | sort)
+      args=()
+      for o in "${objects[@]}"; do args+=(-object "$o"); done
+      llvm-cov export -format=text -instr-profile "$out/llvm.profdata" "${args[@]}" \
+        -ignore-filename-regex='(^/usr/|/tests/|/bench/|/fuzz/|/cli/|/examples/|_deps/)' > "$out/llvm-ctest.raw.json"
+      python3 tools/coverage/llvm_json.py "$out/llvm-ctest.raw.json" --root "$root" > "$out/llvm-ctest.json"
+      rm -f "$out/llvm-ctest.raw.json"
+      ;;
     report)
       gcovr -r "$root" --add-tracefile "$out/ctest.json" --add-tracefile "$out/fuzz.json" --json "$out/all.json" >&2
       python3 tools/coverage/report.py --ctest "$out/ctest.json" --fuzz "$out/fuzz.json" --all "$out/all.json" \
         --reasons tools/coverage/reasons.txt --ctest-seconds "$(cat "$out/ctest.seconds" 2>/dev/null || echo '?')" \
-        --ctest-log "$out/ctest.log" --flags="${LEPP_COVERAGE_CXXFLAGS:--O1 -fno-inline}" --build "$build" \
-        ${LEPP_COVERAGE_INLINED:+--inlined "$LEPP_COVERAGE_INLINED"} --ctest-args "${LEPP_COVERAGE_CTEST_ARGS:-}${LEPP_COVERAGE_EXCLUDE:+ -E $LEPP_COVERAGE_EXCLUDE}" ${LEPP_COVERAGE_SPLIT:+--without "$out/ctest-without.json" --split "$LEPP_COVERAGE_SPLIT"} \
+        --ctest-log "$out/ctest.log" --flags="${LEPP_COVERAGE_CXXFLAGS:--O1}" --build "$build" \
+        $( [ -f "$out/llvm-ctest.json" ] && echo --source-branches "$out/llvm-ctest.json" ) --ctest-args "${LEPP_COVERAGE_CTEST_ARGS:-}${LEPP_COVERAGE_EXCLUDE:+ -E $LEPP_COVERAGE_EXCLUDE}" ${LEPP_COVERAGE_SPLIT:+--without "$out/ctest-without.json" --split "$LEPP_COVERAGE_SPLIT"} \
         > docs/COVERAGE.md
       echo "wrote docs/COVERAGE.md" >&2
       ;;
-    *) echo "coverage.sh: unknown step '$step' (build ctest fuzz report)" >&2; exit 2 ;;
+    *) echo "coverage.sh: unknown step '$step' (build ctest fuzz llvm report)" >&2; exit 2 ;;
   esac
 done

@@ -13,7 +13,7 @@ apt-get install -y --no-install-recommends \
   clang-14 libclang-rt-14-dev libfuzzer-14-dev \
   libcli11-dev nlohmann-json3-dev libfmt-dev \
   python3-matplotlib zip \
-  dpkg-dev file gcovr
+  dpkg-dev file gcovr llvm-14
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
 if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi

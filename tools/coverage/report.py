@@ -133,9 +133,10 @@ def main():
     ap.add_argument("--root", default=os.getcwd())
     ap.add_argument("--without", default="", help="gcovr JSON of ctest without the --split tests")
     ap.add_argument("--split", default="", help="the ctest -R regex of the tests left out of --without")
-    ap.add_argument("--flags", default="-O1 -fno-inline", help="the instrumented build's optimisation flags")
+    ap.add_argument("--flags", default="-O1", help="the instrumented build's optimisation flags")
     ap.add_argument("--build", default="build-cov", help="the instrumented build's directory")
-    ap.add_argument("--inlined", default="", help="gcovr JSON of the default ctest in a build with inlining (-O1), for comparison")
+    ap.add_argument("--source-branches", default="", help="tools/coverage/llvm_json.py's output: the default ctest's "
+                    "source-level branches (clang), which then decide the branch goal and the list of uncovered branches")
     a = ap.parse_args()
 
     runs = {"ctest": load(a.ctest), "fuzz": load(a.fuzz)}
@@ -155,7 +156,7 @@ def main():
     runs["all"] = merged
     if a.without and os.path.exists(a.without):
         runs["without"] = load(a.without)
-    inlined = load(a.inlined) if a.inlined and os.path.exists(a.inlined) else None
+    srcb = load(a.source_branches) if a.source_branches and os.path.exists(a.source_branches) else None
     reasons = load_reasons(a.reasons)
     names = sorted(n for n in runs["ctest"] if area_of(n))
     failed = ""
@@ -192,8 +193,10 @@ def main():
     if "without" in runs:
         cols = ["without"] + cols
         head = "| area | lines ctest without | branches ctest without " + head[len("| area "):]
+    if srcb is not None:
+        head += " branches ctest, source-level (clang) |"
     w(head + " goal met (ctest) |")
-    w("|" + " --- |" + " ---: |" * (2 * len(cols)) + " --- |")
+    w("|" + " --- |" + " ---: |" * (2 * len(cols) + (srcb is not None)) + " --- |")
     for area, _, goal in AREAS:
         row = [area]
         met = None
@@ -205,6 +208,15 @@ def main():
             row += [fmt_pct(t[1], t[0]), fmt_pct(t[3], t[2])]
             if run == "ctest" and goal and t[0]:
                 met = pct(t[1], t[0]) >= GOAL_LINES and pct(t[3], t[2]) >= GOAL_BRANCHES
+                lines_met = pct(t[1], t[0]) >= GOAL_LINES
+        if srcb is not None:
+            t = [0, 0, 0, 0]
+            for n, lines in srcb.items():
+                if area_of(n) == area:
+                    t = [x + y for x, y in zip(t, totals(lines))]
+            row.append(fmt_pct(t[3], t[2]))
+            if met is not None:  # lines as g++ counts them, branches as written in the source
+                met = lines_met and pct(t[3], t[2]) >= GOAL_BRANCHES
         row.append("-" if met is None else ("yes" if met else "**no**"))
         w("| " + " | ".join(row) + " |")
         # The same area over the files the measured tests enter at all (see the notes).
@@ -217,22 +229,14 @@ def main():
                     if n in entered:
                         t = [x + y for x, y in zip(t, totals(lines))]
                 row += [fmt_pct(t[1], t[0]), fmt_pct(t[3], t[2])]
+            if srcb is not None:
+                t = [0, 0, 0, 0]
+                for n in entered:
+                    t = [x + y for x, y in zip(t, totals(srcb.get(n, {})))]
+                row.append(fmt_pct(t[3], t[2]))
             row.append("")
             w("| " + " | ".join(row) + " |")
     w("")
-    if inlined is not None:
-        w("The same default ctest measured in a build that inlines (`-O1` without `-fno-inline`), where")
-        w("the branches of CGAL's inlined number types and containers are counted on our lines:")
-        w("")
-        w("| area | lines ctest, inlined | branches ctest, inlined |")
-        w("| --- | ---: | ---: |")
-        for area, _, _ in AREAS:
-            t = [0, 0, 0, 0]
-            for n, lines in inlined.items():
-                if area_of(n) == area:
-                    t = [x + y for x, y in zip(t, totals(lines))]
-            w(f"| {area} | {fmt_pct(t[1], t[0])} | {fmt_pct(t[3], t[2])} |")
-        w("")
     if "without" in runs:
         w(f"\"ctest without\": the default ctest less the tests matching `{a.split}` (the degenerate-case")
         w("tests of issue 13), run first: what the suite covered before them.")
@@ -243,13 +247,18 @@ def main():
         w("")
     w("## Per file")
     w("")
-    w("| file | lines | lines ctest | branches | branches ctest | lines all | branches all |")
-    w("| --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    extra = " source branches | source branches ctest |" if srcb is not None else ""
+    w("| file | lines | lines ctest | branches | branches ctest | lines all | branches all |" + extra)
+    w("| --- | ---: | ---: | ---: | ---: | ---: | ---: |" + (" ---: | ---: |" if srcb is not None else ""))
     for n in names:
         lt, lc, bt, bc = totals(runs["ctest"][n])
         al = runs["all"].get(n, runs["ctest"][n])
         alt, alc, abt, abc = totals(al)
-        w(f"| {n} | {lt} | {fmt_pct(lc, lt)} | {bt} | {fmt_pct(bc, bt)} | {fmt_pct(alc, alt)} | {fmt_pct(abc, abt)} |")
+        cells = ""
+        if srcb is not None:
+            _, _, sbt, sbc = totals(srcb.get(n, {}))
+            cells = f" {sbt} | {fmt_pct(sbc, sbt)} |"
+        w(f"| {n} | {lt} | {fmt_pct(lc, lt)} | {bt} | {fmt_pct(bc, bt)} | {fmt_pct(alc, alt)} | {fmt_pct(abc, abt)} |" + cells)
     w("")
     w("## What ctest leaves uncovered, and why")
     w("")
@@ -266,11 +275,15 @@ def main():
         lines = runs["ctest"][n]
         every = runs["all"].get(n, lines)
         items = []
-        for ln in sorted(lines):
-            v = lines[ln]
+        # With source-level branches, a line's branches are those written on it (clang);
+        # its count stays g++'s.
+        sl = srcb.get(n, {}) if srcb is not None else None
+        for ln in sorted(set(lines) | (set(k for k, v in sl.items() if v["branches"]) if sl else set())):
+            v = lines.get(ln, {"count": 1, "branches": []})
+            br = (sl.get(ln, {"branches": []})["branches"]) if sl is not None else v["branches"]
             missed_line = v["count"] == 0
-            nb = len(v["branches"])
-            taken = sum(1 for c in v["branches"] if c > 0)
+            nb = len(br)
+            taken = sum(1 for c in br if c > 0)
             if not missed_line and taken == nb:
                 continue
             text = source_line(a.root, n, ln)
@@ -278,7 +291,7 @@ def main():
             kind = r["kind"] if r else "owed"
             why = r["why"] if r else "no reason recorded"
             ev = every.get(ln, v)
-            fuzz = (missed_line and ev["count"] > 0) or (sum(1 for c in ev["branches"] if c > 0) > taken)
+            fuzz = (missed_line and ev["count"] > 0) or (sl is None and sum(1 for c in ev["branches"] if c > 0) > taken)
             what = "line" if missed_line else f"branch {taken}/{nb}"
             items.append((ln, what, text, kind, why, fuzz))
         if not items:

@@ -237,6 +237,35 @@ TEST(Conformance, PointToleranceIsMeasuredInUlps) {
   EXPECT_LE(s.failure->step, k);
 }
 
+// The tolerance's boundary: a point moved a quarter of the stated tolerance conforms, one
+// moved four times it does not (the engine's rounding is at most an eighth of it).
+TEST(Conformance, PointToleranceBoundary) {
+  Pslg p = paper("A");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
+  std::vector<Point> trace = points_of(r);
+  ASSERT_GT(trace.size(), 20u);
+  const std::size_t k = trace.size() / 2;
+  std::vector<Point> far = trace;
+  far[k].x += std::abs(far[k].x) * 1e-6 + 1e-9;
+  ConformanceReport probe = check_conformance(p, far, options(Method::Centroid, 30));
+  ASSERT_FALSE(probe.conforms);
+  ASSERT_FALSE(probe.failure->candidates.empty());
+  const double tol = probe.failure->candidates.front().tolerance;  // this step's choice, nearest first
+  ASSERT_GT(tol, 0);
+
+  std::vector<Point> within = trace;
+  within[k].x += tol / 4;
+  ConformanceReport ok = check_conformance(p, within, options(Method::Centroid, 30));
+  EXPECT_TRUE(ok.conforms) << describe(ok);
+
+  std::vector<Point> beyond = trace;
+  beyond[k].x += 4 * tol;
+  ConformanceReport bad = check_conformance(p, beyond, options(Method::Centroid, 30));
+  ASSERT_FALSE(bad.conforms);
+  EXPECT_EQ(bad.failure->step, k) << describe(bad);
+  EXPECT_GT(bad.failure->nearest_distance, tol);
+}
+
 TEST(Conformance, RejectsAPointWhenNoTriangleIsBad) {
   Pslg p = polygon({{0, 0}, {1, 0}, {0.5, 0.8}});  // a good triangle
   ConformanceReport r = check_conformance(p, {{0.5, 0.3}}, options(Method::Centroid, 30));
