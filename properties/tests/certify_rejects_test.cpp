@@ -10,7 +10,10 @@
 #include <string>
 #include <vector>
 
+#include <CGAL/Gmpq.h>
+
 #include "cgal_mesh.h"
+#include "lepp/angle.h"
 #include "lepp/certify.h"
 #include "lepp/validate.h"
 #include "test_pslgs.h"
@@ -362,7 +365,62 @@ TEST(CertifyRejects, MeshedHole) {
   Pslg no_hole = p;
   no_hole.holes.clear();
   const Mesh bad = test::cgal_cdt(no_hole);
-  expect_rejected_for(run(p, bad), Reason::MeshOutsideDomain);
+  const auto r = run(p, bad);
+  expect_rejected_for(r, Reason::MeshOutsideDomain);
+  // The square without its hole is a disk (V - E + F = 1), the domain an annulus (0).
+  expect_rejected_for(r, Reason::EulerCharacteristic);
+}
+
+TEST(CertifyRejects, ConformingModeChecksConstrainedEdges) {
+  // A rhombus split along its constrained long diagonal (-1,0)-(1,0): (0,-0.8) lies
+  // inside the circumcircle of (-1,0), (1,0), (0,0.8), so the diagonal is not locally
+  // Delaunay. A constrained Delaunay mesh may keep it; a conforming one may not.
+  Pslg p;
+  p.vertices = {{-1, 0}, {1, 0}, {0, 0.8}, {0, -0.8}};
+  p.segments = {{0, 3, 0}, {3, 1, 0}, {1, 2, 0}, {2, 0, 0}, {0, 1, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 4;
+  m.triangles = {{0, 1, 2}, {1, 0, 3}};
+  m.constrained_edges = {{0, 3, 0}, {3, 1, 1}, {1, 2, 2}, {2, 0, 3}, {0, 1, 4}};
+  expect_certified(run(p, m));
+  certify::Options options;
+  options.conforming = true;
+  const auto r = certify::certify(p, m, options);
+  expect_rejected_for(r, Reason::NotLocallyDelaunay);
+  EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u);
+}
+
+TEST(CertifyRejects, AngleWithinTheBracketIsNotCertified) {
+  // theta = 20: sin^2(theta) is irrational, bracketed by two adjacent doubles lo < hi.
+  // A triangle whose angle has lo <= sin^2 < hi is neither certainly below theta nor
+  // certainly not: it must be reported as not certified, never passed. Found by
+  // nudging the corner (cos 20, sin 20) by ulps, decided in exact rationals.
+  const double theta = 20;
+  const Sin2Bracket bracket = sin2_bracket(theta);
+  ASSERT_LT(bracket.lo, bracket.hi);
+  const double rad = theta * M_PI / 180;
+  std::optional<Point> corner;
+  for (int ka = -60; ka <= 60 && !corner; ++ka)
+    for (int kb = -60; kb <= 60 && !corner; ++kb) {
+      double a = std::cos(rad), b = std::sin(rad);
+      for (int k = 0; k < std::abs(ka); ++k) a = std::nextafter(a, ka > 0 ? 2.0 : 0.0);
+      for (int k = 0; k < std::abs(kb); ++k) b = std::nextafter(b, kb > 0 ? 2.0 : 0.0);
+      const CGAL::Gmpq A(a), B(b), s2 = B * B / (A * A + B * B);
+      if (CGAL::Gmpq(bracket.lo) <= s2 && s2 < CGAL::Gmpq(bracket.hi)) corner = Point{a, b};
+    }
+  ASSERT_TRUE(corner.has_value()) << "no corner with sin^2 inside the bracket among the nudges";
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, *corner};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 3;
+  m.triangles = {{0, 1, 2}};
+  m.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {0, 2, 2}};
+  const auto r = run(p, m, theta);
+  expect_rejected_for(r, Reason::AngleNotCertified);
+  EXPECT_FALSE(r.has(Reason::AngleBelowTheta));
 }
 
 TEST(CertifyRejects, BadIdsAndNonFiniteCoordinates) {
@@ -501,6 +559,33 @@ TEST(CertifyUnimprovable, RuleCheckedNotTrusted) {
   EXPECT_TRUE(certify::certify(p, m, options).certified());  // same triangle, other orientation
   options.unimprovable = {{{0, 1, 2}, 0, 0, 1, 10}, {{0, 1, 5}, 0, 0, 1, 10}};
   expect_rejected_for(certify::certify(p, m, options), Reason::UnimprovableNotInMesh);
+}
+
+TEST(CertifyUnimprovable, ShortestEdgeFromTheApexIsNotTheRule) {
+  // A 20-degree wedge at v0 (segments 0: v0-v1, 1: v0-v2, 2: v1-v2) with a Steiner
+  // point v3 on segment 0 near the apex. Triangle (0,3,2) is skinny and its shortest
+  // edge v0-v3 starts at the apex: section 8 needs both ends on the two segments away
+  // from the apex, so listing it must not excuse it. Triangle (3,1,2) is the rule's own
+  // case (shortest edge v1-v2 joins the two segments) and is accepted.
+  const double rad = 20 * M_PI / 180;
+  Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {std::cos(rad), std::sin(rad)}};
+  p.segments = {{0, 1, 0}, {0, 2, 0}, {1, 2, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.vertices.push_back({0.125, 0});
+  m.input_vertices = 3;
+  m.triangles = {{0, 3, 2}, {3, 1, 2}};
+  m.constrained_edges = {{0, 3, 0}, {3, 1, 0}, {0, 2, 1}, {1, 2, 2}};
+  certify::Options options;
+  options.min_angle_deg = 30;
+  const auto plain = certify::certify(p, m, options);
+  ASSERT_EQ(plain.count(Reason::AngleBelowTheta), 2u) << certify::format_report(plain);
+  options.unimprovable = {{{0, 3, 2}, 0, 0, 1, 20}, {{3, 1, 2}, 0, 0, 1, 20}};
+  const auto r = certify::certify(p, m, options);
+  expect_rejected_for(r, Reason::UnimprovableRuleFails);
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  EXPECT_EQ(r.unimprovable_accepted.size(), 1u);
 }
 
 TEST(CertifyUnimprovable, ListedTriangleWithoutSmallInputAngleRejected) {
