@@ -190,6 +190,25 @@ TEST(CertifyRejects, ClockwiseTriangle) {
   expect_rejected_for(run(p, bad), Reason::NotCounterClockwise);
 }
 
+TEST(CertifyRejects, ZeroAreaTriangle) {
+  // A square with a Steiner point on its bottom side, plus a flat triangle along
+  // that side: its three corners are collinear, so it is not strictly counter-clockwise.
+  Pslg p;
+  p.vertices = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.vertices.push_back({1, 0});
+  m.input_vertices = 4;
+  m.triangles = {{0, 4, 3}, {4, 2, 3}, {4, 1, 2}};
+  m.constrained_edges = {{0, 4, 0}, {4, 1, 0}, {1, 2, 1}, {2, 3, 2}, {3, 0, 3}};
+  expect_certified(run(p, m));
+  m.triangles.push_back({0, 4, 1});
+  const auto r = run(p, m);
+  expect_rejected_for(r, Reason::NotCounterClockwise);
+  EXPECT_EQ(r.count(Reason::NotCounterClockwise), 1u);
+}
+
 TEST(CertifyRejects, MissingTriangle) {
   const Pslg p = test::square_with_crack();
   Mesh bad = test::cgal_cdt(p);
