@@ -26,6 +26,15 @@ bool fig3_order(const Fig3& t) { return t.bc2 <= t.ca2 && t.ca2 <= t.ba2; }
 bool degenerate(const GridTriangle& g) {
   return (g.p[1].x - g.p[0].x) * (g.p[2].y - g.p[0].y) - (g.p[1].y - g.p[0].y) * (g.p[2].x - g.p[0].x) == 0;
 }
+// A degenerate input meets no hypothesis; nothing fails and nothing ties. (Named
+// fields: a positional initializer once put the label in `tie` when a field was added.)
+Verdict degenerate_verdict(const GridTriangle& g) {
+  Verdict v;
+  v.hypothesis = false;
+  v.label = "degenerate";
+  v.detail = show(g);
+  return v;
+}
 std::string angles(const Fig3& t) {
   auto d = [](const FT& c) { return std::to_string(angle_deg(c).lo); };
   return "alpha0 " + d(t.cos_alpha0) + ", alpha1 " + d(t.cos_alpha1) + ", beta " + d(t.cos_beta) + ", gamma " +
@@ -44,7 +53,7 @@ std::string shape(const Fig3& t) { return is_obtuse(t) ? "obtuse" : is_acute(t) 
 
 Verdict check_prop3a(const GridTriangle& g, Labelling l) {
   Verdict v;
-  if (degenerate(g)) return {false, true, false, "degenerate", show(g)};
+  if (degenerate(g)) return degenerate_verdict(g);
   Fig3 t = label(g, l);
   v.hypothesis = fig3_order(t);
   bool half = angle_ge(t.cos_alpha1, cos_half(t.cos_alpha0));
@@ -57,7 +66,7 @@ Verdict check_prop3a(const GridTriangle& g, Labelling l) {
 
 Verdict check_prop3b(const GridTriangle& g, Labelling l) {
   Verdict v;
-  if (degenerate(g)) return {false, true, false, "degenerate", show(g)};
+  if (degenerate(g)) return degenerate_verdict(g);
   Fig3 t = label(g, l);
   v.hypothesis = fig3_order(t) && is_obtuse(t);
   bool a1 = angle_ge(t.cos_alpha1, t.cos_alpha0);
@@ -87,7 +96,7 @@ Lemma4Parts lemma4_parts(const Fig3& t, double theta, bool* tie) {
 
 Verdict check_lemma4(const GridTriangle& g, double theta, Labelling l) {
   Verdict v;
-  if (degenerate(g)) return {false, true, false, "degenerate", show(g)};
+  if (degenerate(g)) return degenerate_verdict(g);
   Fig3 t = label(g, l);
   v.hypothesis = fig3_order(t) && angle_below(t.cos_alpha0, theta, &v.tie) == Cmp::Yes;
   auto p = lemma4_parts(t, theta, &v.tie);
@@ -110,7 +119,7 @@ Verdict check_lemma4_narrowed(const GridTriangle& g, double theta, Labelling l) 
 
 Verdict check_theorem9_chain(const GridTriangle& g, double theta) {
   Verdict v;
-  if (degenerate(g)) return {false, true, false, "degenerate", show(g)};
+  if (degenerate(g)) return degenerate_verdict(g);
   Fig3 t = label(g, Labelling::Fig3);
   AngleBracket alpha0 = angle_deg(t.cos_alpha0);
   // Hypothesis: a bad triangle that can be a Delaunay terminal triangle (largest angle <= 120), theta <= alpha_limit.

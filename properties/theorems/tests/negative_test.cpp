@@ -183,3 +183,17 @@ TEST(Theorem9Rejects, ChainFromATriangleWiderThan120) {
   // beta_2 = 36.33 < (3/2)^2 alpha0 = 39.2.
   expect_rejected(check_theorem9_chain(tri(-9, 10, 8, -3, -3, 1), 20));
 }
+
+// A flat input meets no statement's hypothesis: it is neither a failure nor a tie.
+TEST(TriangleChecks, DegenerateInputMeetsNoHypothesisAndNoTie) {
+  const GridTriangle flat = tri(0, 0, 1, 1, 2, 2);
+  for (const Verdict& v : {check_prop3a(flat), check_prop3b(flat), check_lemma4(flat), check_lemma4_narrowed(flat),
+                           check_theorem9_chain(flat, 30)}) {
+    EXPECT_FALSE(v.hypothesis);
+    EXPECT_TRUE(v.conclusion);
+    EXPECT_TRUE(v.conclusion_everywhere);
+    EXPECT_FALSE(v.tie);
+    EXPECT_EQ(v.label, "degenerate");
+    EXPECT_NE(v.detail.find("triangle (0, 0)"), std::string::npos) << v.detail;
+  }
+}
