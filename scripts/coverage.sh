@@ -36,8 +36,9 @@ steps=("$@")
 [ ${#steps[@]} -eq 0 ] && steps=(build ctest fuzz llvm report)
 targets=(fuzz_parse fuzz_refine fuzz_differential fuzz_cdt)
 
-# What is measured: the libraries, not their tests, benchmarks or the CLI.
-gcovr_args=(-r "$root" --object-directory "$build" -j "$jobs"
+# What is measured: the libraries, not their tests, benchmarks or the CLI; only this
+# build's counters (other build trees of the same sources would be merged in).
+gcovr_args=("$build" -r "$root" --object-directory "$build" -j "$jobs"
   --filter 'core/' --filter 'impl/' --filter 'reference/' --filter 'properties/certify/'
   --exclude '.*/tests/.*' --exclude '.*/bench/.*'
   --exclude-throw-branches --exclude-unreachable-branches)

@@ -3,7 +3,7 @@
 """Turns `llvm-cov export -format=text` (clang's source-based coverage) into the
 per-line shape of gcovr's JSON that tools/coverage/report.py reads:
 
-  {"files": [{"file": REL, "lines": [{"line_number": N, "count": C,
+  {"files": [{"file": REL, "lines": [{"line_number": N, "count": C, "strict_count": S,
                                       "branches": [{"count": T}, {"count": F}, ...]}]}]}
 
 A line's count follows llvm-cov's own rule (LineCoverageStats): the largest count
@@ -37,7 +37,10 @@ def line_counts(segments):
             count = wrapped[2] if wrapped is not None else 0
             for s in starts:
                 count = max(count, s[2])
-            out[line] = count
+            # strict: the regions that start on the line when there are some (the count
+            # of `} catch (...) {` is the catch's, not the try block's it closes).
+            strict = max(s[2] for s in starts) if starts else count
+            out[line] = (count, strict)
         if segs:
             wrapped = segs[-1]
     return out
@@ -62,7 +65,8 @@ def main():
                 branches.setdefault(b[0], []).extend([{"count": b[4]}, {"count": b[5]}])
             lines = []
             for n in sorted(set(counts) | set(branches)):
-                lines.append({"line_number": n, "count": counts.get(n, 0), "branches": branches.get(n, [])})
+                count, strict = counts.get(n, (0, 0))
+                lines.append({"line_number": n, "count": count, "strict_count": strict, "branches": branches.get(n, [])})
             files.append({"file": name[len(root):], "lines": lines})
     json.dump({"files": files}, __import__("sys").stdout)
 
