@@ -30,4 +30,14 @@ rm -f "$dir/s.unimprovable"
 grep -q 'triangles below theta exempt' "$dir/out" || { cat "$dir/out"; fail "no exempt line"; }
 "$lepp" certify "$src/corpus/hostile/small-input-angle.poly" "$dir/s" --min-angle 30 --exempt-small-input-angles --json > "$dir/out"
 grep -q '"exempt_count": [1-9]' "$dir/out" || { cat "$dir/out"; fail "json exempt_count"; }
+# A fuzz_refine finding (data/small_angles_apex_chain.poly): both engines stop on the edge
+# floor near an apex with segments 0.22 and 2.1 degrees apart; the chain walk of one
+# segment must not follow another's listed edge there (docs/CERTIFIER.md section 3).
+for engine in reference fast; do
+  "$lepp" refine "$src/properties/tests/data/small_angles_apex_chain.poly" -o "$dir/c" --engine $engine --method centroid \
+    --min-angle 34 --order lifo --edge-floor 4.452741724487821e-08 --max-steiner 10000 -q > /dev/null; s=$?
+  [ $s -eq 3 ] || fail "refine apex chain ($engine): exit $s (edge-floor is 3)"
+  "$lepp" certify "$src/properties/tests/data/small_angles_apex_chain.poly" "$dir/c" > "$dir/out"; s=$?
+  [ $s -eq 0 ] || { cat "$dir/out"; fail "apex chain ($engine): exit $s"; }
+done
 echo "OK"

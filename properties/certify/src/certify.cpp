@@ -309,9 +309,9 @@ class Certifier {
 
   // Walks from a to b: at each vertex, the next vertex strictly ahead along AB and
   // strictly before B, the nearest one first among, in this order: the vertices
-  // joined by a listed constrained edge near the line (within 2^-20 |AB| or the
-  // loosest tolerance), then those within 1, 2, 4, ... ulp up to the loosest
-  // tolerance. Far from the origin the loosest tolerance ((k+1) ulp with k the
+  // joined by a listed constrained edge within 1, 2, 4, ... ulp up to the loosest
+  // tolerance, then those joined by a listed edge within 2^-20 |AB| of the line,
+  // then any within 1, 2, 4, ... ulp up to the loosest tolerance. Far from the origin the loosest tolerance ((k+1) ulp with k the
   // number of mesh vertices) reaches mesh vertices that are not on the segment:
   // the nearest ahead among all of them is not the chain's next vertex.
   // Empty when there is no chain.
@@ -339,9 +339,14 @@ class Certifier {
           if (qualifies(w) && (best < 0 || ahead(A, B, P(w), P(best)) > 0)) best = w;
         return best;
       };
-      int best = nearest([&](int w) {
-        return listed_.count(edge_key(v, w)) && (near_line(A, B, P(w)) || within(A, B, P(w), loose));
-      });
+      // Listed edges by tier, tightest first: at an input vertex where two segments
+      // meet at a small angle, the other segment's listed edges reach vertices near
+      // this line (within 2^-20 |AB|) nearer than this chain's next vertex.
+      const auto listed = [&](int w) { return listed_.count(edge_key(v, w)) != 0; };
+      int best = -1;
+      for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
+        best = nearest([&](int w) { return listed(w) && within(A, B, P(w), tiers[t]); });
+      if (best < 0) best = nearest([&](int w) { return listed(w) && near_line(A, B, P(w)); });
       for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
         best = nearest([&](int w) { return within(A, B, P(w), tiers[t]); });
       if (best < 0) break;
