@@ -311,9 +311,10 @@ class Certifier {
   // strictly before B, the nearest one first among, in this order: the vertices
   // joined by a listed constrained edge within 1, 2, 4, ... ulp up to the loosest
   // tolerance, then those joined by a listed edge within 2^-20 |AB| of the line,
-  // then any within 1, 2, 4, ... ulp up to the loosest tolerance. Far from the origin the loosest tolerance ((k+1) ulp with k the
-  // number of mesh vertices) reaches mesh vertices that are not on the segment:
-  // the nearest ahead among all of them is not the chain's next vertex.
+  // then any within 1, 2, 4, ... ulp up to the loosest tolerance. Far from the
+  // origin the loosest tolerance ((k+1) ulp with k the number of mesh vertices)
+  // reaches mesh vertices that are not on the segment: the nearest ahead among
+  // all of them is not the chain's next vertex.
   // Empty when there is no chain.
   std::vector<int> walk(int a, int b) const {
     const Point &A = P(a), &B = P(b);
