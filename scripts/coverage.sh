@@ -4,7 +4,8 @@
 # (docs/COVERAGE.md): an instrumented build in its own tree (g++ --coverage -O1),
 # measured under (a) the default ctest and (b) the replay of every fuzz corpus,
 # then the report, with each uncovered branch's reason from tools/coverage/reasons.txt.
-# Opt-in, not part of CI: a full rebuild (about 20 CPU-minutes) plus two test runs.
+# Opt-in, not part of CI: two full rebuilds (g++ and clang, about 40 CPU-minutes) and
+# three test runs.
 #
 #   scripts/coverage.sh [STEP...]    steps: build ctest fuzz llvm report (default: all five)
 # llvm: the default ctest again in a clang build with source-based coverage, whose
@@ -24,7 +25,7 @@
 #   LEPP_COVERAGE_CXXFLAGS: optimisation flags of the instrumented g++ build (default -O1);
 #   LEPP_COVERAGE_LLVM_BUILD: the clang build of the llvm step (default build-cov-llvm);
 #   LEPP_COVERAGE_NICE: niceness of the builds and runs (default 19; 0 to compete evenly with fuzzing at 19).
-# Needs gcovr (Debian's, scripts/install-deps.sh).
+# Needs gcovr, clang-14 and llvm-14 (llvm-profdata, llvm-cov): Debian's, scripts/install-deps.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
