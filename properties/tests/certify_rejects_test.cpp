@@ -553,6 +553,26 @@ TEST(CertifyRejects, ConstrainedEdgeLeftOffTheList) {
   expect_certified(run(p, bad));
 }
 
+TEST(CertifyAccepts, NegativeZeroIsTheSamePointAsZero) {
+  // The input writes a coordinate as -0, the mesher prints it as 0 (Triangle does):
+  // the same point, found whether or not the mesh claims its input vertices.
+  Pslg p;
+  p.vertices = {{0, -8}, {8, -8}, {8, -0.0}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  Mesh m;
+  m.vertices = {{0, -8}, {8, -8}, {8, 0}};
+  m.triangles = {{0, 1, 2}};
+  m.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+  for (std::size_t claimed : {std::size_t{0}, std::size_t{3}}) {
+    m.input_vertices = claimed;
+    expect_certified(run(p, m));
+  }
+  // A vertex that really moved is still caught.
+  m.vertices[2] = {8, std::nextafter(0.0, 1.0)};
+  m.input_vertices = 0;
+  EXPECT_FALSE(run(p, m).certified());
+}
+
 TEST(CertifyUnimprovable, RuleCheckedNotTrusted) {
   // A 10-degree wedge between segments 0 (v0-v1) and 1 (v0-v2), closed by segment 2.
   const double rad = 10 * M_PI / 180;

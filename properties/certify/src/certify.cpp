@@ -33,9 +33,12 @@ std::string pt(const Point& p) { return fmt::format("({}, {})", p.x, p.y); }
 
 struct PointHash {
   std::size_t operator()(const Point& p) const {
+    // Hashed by value, as Point's == compares: -0 and +0 are one point (adding +0.0
+    // turns -0.0 into +0.0), so a mesher that prints -0 as 0 keeps its input vertex.
+    const double px = p.x + 0.0, py = p.y + 0.0;
     std::uint64_t x = 0, y = 0;
-    std::memcpy(&x, &p.x, sizeof x);
-    std::memcpy(&y, &p.y, sizeof y);
+    std::memcpy(&x, &px, sizeof x);
+    std::memcpy(&y, &py, sizeof y);
     return std::hash<std::uint64_t>()(x * 0x9E3779B97F4A7C15ull ^ y);
   }
 };
