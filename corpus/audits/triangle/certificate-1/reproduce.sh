@@ -1,2 +1,2 @@
 #!/bin/sh
-lepp audit --engine triangle --method centroid --theta 33 --timeout 5 --inputs corpus/audits/triangle/certificate-1/input.poly
+lepp audit --engine triangle --method centroid --theta 20 --timeout 5 --inputs corpus/audits/triangle/certificate-1/input.poly

@@ -1,2 +1,0 @@
-#!/bin/sh
-lepp audit --engine fast --method midpoint --theta 33 --timeout 5 --inputs corpus/audits/lepp-fast-midpoint/certificate-4/input.poly

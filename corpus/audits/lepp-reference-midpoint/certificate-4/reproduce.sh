@@ -1,2 +1,0 @@
-#!/bin/sh
-lepp audit --engine reference --method midpoint --theta 33 --timeout 5 --inputs corpus/audits/lepp-reference-midpoint/certificate-4/input.poly

@@ -1,2 +1,0 @@
-#!/bin/sh
-lepp audit --engine triangle --method centroid --theta 20 --timeout 5 --inputs corpus/audits/triangle/certificate-2/input.poly

@@ -1,0 +1,2 @@
+#!/bin/sh
+lepp audit --engine triangle --method centroid --theta 20 --timeout 5 --inputs corpus/audits/triangle/termination-2/input.poly
