@@ -2,6 +2,8 @@
 // Names of the shared enums and the loop guards' defaults (ALGORITHM.md, "Termination").
 #include "lepp/refine.h"
 
+#include "lepp/segment_distance.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,14 +30,6 @@ std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& optio
 }
 
 namespace {
-
-// Distance from p to the closed segment ab (doubles; only sizes a guard).
-double distance_to_segment(const Point& p, const Point& a, const Point& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
 
 // The input's smallest feature: the shortest segment, the closest two vertices,
 // and the closest vertex to a segment it does not end (zero distances, which a

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "loop_guard.h"
 
+#include "lepp/segment_distance.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,13 +12,6 @@
 namespace lepp::fuzz {
 
 namespace {
-
-double dist_to_segment(const Point& p, const Point& a, const Point& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
 
 double angle_deg(const Point& v, const Point& a, const Point& b) {
   const double ux = a.x - v.x, uy = a.y - v.y, wx = b.x - v.x, wy = b.y - v.y;
@@ -57,7 +52,7 @@ InputFeatures input_features(const Pslg& pslg) {
   for (const Segment& s : pslg.segments)
     for (std::size_t i = 0; i < v.size(); ++i)
       if (static_cast<int>(i) != s.a && static_cast<int>(i) != s.b)
-        lfs = std::min(lfs, dist_to_segment(v[i], v[static_cast<std::size_t>(s.a)], v[static_cast<std::size_t>(s.b)]));
+        lfs = std::min(lfs, distance_to_segment(v[i], v[static_cast<std::size_t>(s.a)], v[static_cast<std::size_t>(s.b)]));
   f.lfs_min = lfs;
   double x0 = v[0].x, x1 = x0, y0 = v[0].y, y1 = y0;
   for (const Point& p : v) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
