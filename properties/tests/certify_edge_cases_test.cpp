@@ -21,6 +21,7 @@
 
 #include <CGAL/Gmpq.h>
 
+#include "certify_test_support.h"
 #include "cgal_mesh.h"
 #include "lepp/angle.h"
 #include "lepp/certify.h"
@@ -35,25 +36,10 @@ namespace {
 
 using certify::Reason;
 
-certify::Report run(const Pslg& pslg, const Mesh& mesh, double theta = 0) {
-  certify::Options options;
-  options.min_angle_deg = theta;
-  return certify::certify(pslg, mesh, options);
-}
-
-std::size_t total(const certify::Report& r) {
-  std::size_t n = 0;
-  for (std::size_t c : r.count_by_reason) n += c;
-  return n;
-}
-
-// The messages of the listed violations of one reason.
-std::vector<std::string> messages(const certify::Report& r, Reason reason) {
-  std::vector<std::string> out;
-  for (const certify::Violation& v : r.violations)
-    if (v.reason == reason) out.push_back(v.message);
-  return out;
-}
+using test::first_of;
+using test::messages;
+using test::run;
+using test::total;
 
 bool any_contains(const std::vector<std::string>& texts, const std::string& part) {
   return std::any_of(texts.begin(), texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
@@ -249,12 +235,6 @@ TwoCandidates two_candidates(double y, bool q_first, Point o = {0, 0}, double le
   if (y > 0) m.triangles = {{0, P, Q}, {P, 1, 2}, {P, 2, Q}, {Q, 2, 0}};
   else m.triangles = {{0, Q, P}, {0, P, 2}, {P, 1, 2}};
   return t;
-}
-
-const certify::Violation* first_of(const certify::Report& r, Reason reason) {
-  for (const certify::Violation& v : r.violations)
-    if (v.reason == reason) return &v;
-  return nullptr;
 }
 
 TEST(CertifyEdgeCases, ChainTakesTheListedNeighbourInTheTighterTier) {

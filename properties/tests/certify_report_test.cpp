@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "certify_test_support.h"
 #include "cgal_mesh.h"
 #include "lepp/certify.h"
 #include "lepp/validate.h"
@@ -114,17 +115,8 @@ TEST(CertifyReport, ExemptListIsCappedWithACountOfTheRest) {
 }
 
 TEST(CertifyReport, AcceptedUnimprovableTrianglesAreSummedUp) {
-  // A 10-degree wedge closed by a third segment: one triangle, listed unimprovable,
-  // its shortest edge joining the two segments of the 10-degree angle.
-  const double rad = 10 * M_PI / 180;
-  Pslg p;
-  p.vertices = {{0, 0}, {1, 0}, {std::cos(rad), std::sin(rad)}};
-  p.segments = {{0, 1, 0}, {0, 2, 0}, {1, 2, 0}};
-  Mesh m;
-  m.vertices = p.vertices;
-  m.input_vertices = 3;
-  m.triangles = {{0, 1, 2}};
-  m.constrained_edges = {{0, 1, 0}, {0, 2, 1}, {1, 2, 2}};
+  // One triangle, listed unimprovable.
+  const auto [p, m] = test::ten_degree_wedge();
   certify::Options options;
   options.min_angle_deg = 20;
   const std::string line = "1 triangles below theta accepted as unimprovable";

@@ -58,6 +58,15 @@ def totals(lines):
     return lt, lc, bt, bc
 
 
+def summed(files, keep):
+    """totals() summed over the files (name -> lines) whose name keep() accepts."""
+    t = [0, 0, 0, 0]
+    for n, lines in files.items():
+        if keep(n):
+            t = [x + y for x, y in zip(t, totals(lines))]
+    return t
+
+
 def pct(k, n):
     return 100.0 * k / n if n else 100.0
 
@@ -202,19 +211,13 @@ def main():
         row = [area]
         met = None
         for run in cols:
-            t = [0, 0, 0, 0]
-            for n, lines in runs[run].items():
-                if area_of(n) == area:
-                    t = [x + y for x, y in zip(t, totals(lines))]
+            t = summed(runs[run], lambda n: area_of(n) == area)
             row += [fmt_pct(t[1], t[0]), fmt_pct(t[3], t[2])]
             if run == "ctest" and goal and t[0]:
                 met = pct(t[1], t[0]) >= GOAL_LINES and pct(t[3], t[2]) >= GOAL_BRANCHES
                 lines_met = pct(t[1], t[0]) >= GOAL_LINES
         if srcb is not None:
-            t = [0, 0, 0, 0]
-            for n, lines in srcb.items():
-                if area_of(n) == area:
-                    t = [x + y for x, y in zip(t, totals(lines))]
+            t = summed(srcb, lambda n: area_of(n) == area)
             row.append(fmt_pct(t[3], t[2]))
             if met is not None:  # lines as g++ counts them, branches as written in the source
                 met = lines_met and pct(t[3], t[2]) >= GOAL_BRANCHES
@@ -225,15 +228,10 @@ def main():
         if goal and len(entered) < sum(1 for n in runs["ctest"] if area_of(n) == area):
             row = [f"{area}, files entered"]
             for run in cols:
-                t = [0, 0, 0, 0]
-                for n, lines in runs[run].items():
-                    if n in entered:
-                        t = [x + y for x, y in zip(t, totals(lines))]
+                t = summed(runs[run], lambda n: n in entered)
                 row += [fmt_pct(t[1], t[0]), fmt_pct(t[3], t[2])]
             if srcb is not None:
-                t = [0, 0, 0, 0]
-                for n in entered:
-                    t = [x + y for x, y in zip(t, totals(srcb.get(n, {})))]
+                t = summed(srcb, lambda n: n in entered)
                 row.append(fmt_pct(t[3], t[2]))
             row.append("")
             w("| " + " | ".join(row) + " |")
