@@ -269,6 +269,53 @@ TEST(CertifyEdgeCases, ChainTakesTheNearestOfTwoNeighboursWithinATolerance) {
   }
 }
 
+TEST(CertifyEdgeCases, AVertexWithinAnUlpOfASegmentIsReadAsOnItUnlessTheMeshListsItsEdges) {
+  // Q 2^-51 inside the domain over AB (within 1 ulp(8) of it), a correct CDT whose
+  // chain of AB is A P B. A mesh that lists nothing has its chain found by geometry
+  // alone, and Q, indistinguishable from a Steiner point rounded onto AB, is taken
+  // into it: the chain A Q P B leaves the sliver (A,P,Q) on its outer side, and the
+  // mesh is rejected (a known limit, docs/CERTIFIER.md). Listing the constrained
+  // edges, as Triangle's .poly output and lepp's do, settles it: certified.
+  const Pslg p = triangle_abc();
+  for (bool q_first : {false, true}) {
+    TwoCandidates t = two_candidates(std::ldexp(1.0, -51), q_first);
+    const auto bare = run(p, t.mesh);
+    EXPECT_TRUE(bare.has(Reason::MeshOutsideDomain)) << certify::format_report(bare);
+    EXPECT_TRUE(bare.has(Reason::BoundaryNotOnDomainBoundary)) << certify::format_report(bare);
+    t.mesh.constrained_edges = {{0, t.P, 0}, {t.P, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+    const auto listed = run(p, t.mesh);
+    EXPECT_TRUE(listed.certified()) << certify::format_report(listed);
+  }
+}
+
+TEST(CertifyEdgeCases, AnInputVertexNearASegmentNeverStandsInForItsChain) {
+  // D, an input vertex 2^-51 inside the triangle over AB (within 1 ulp(8) of AB, so
+  // within any chain tolerance), is not on AB: validate() would have split AB at it.
+  // The CDT keeps AB and the sliver (A,B,D). A mesh that drops the sliver and runs
+  // the chain A D B is wrong, listed or not; the correct one certifies.
+  Pslg p;
+  p.vertices = {{0, 0}, {8, 0}, {4, 4}, {2, std::ldexp(1.0, -51)}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  p = test::validated(p);
+  ASSERT_EQ(p.segments.size(), 3u);
+  Mesh good;
+  good.vertices = p.vertices;
+  good.input_vertices = 4;
+  good.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  Mesh through_d = good;
+  through_d.triangles = {{1, 2, 3}, {2, 0, 3}};
+  for (bool listed : {false, true}) {
+    if (listed) {
+      good.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+      through_d.constrained_edges = {{0, 3, 0}, {3, 1, 0}, {1, 2, 1}, {2, 0, 2}};
+    }
+    const auto g = run(p, good);
+    EXPECT_TRUE(g.certified()) << "listed " << listed << "\n" << certify::format_report(g);
+    const auto d = run(p, through_d);
+    EXPECT_TRUE(d.has(Reason::SegmentMissing)) << "listed " << listed << "\n" << certify::format_report(d);
+  }
+}
+
 TEST(CertifyEdgeCases, ListedEdgeWithinTheLoosestToleranceIsFollowed) {
   // A segment 2^-12 long at x = 2^20 (ulp 2^-32): Q, 2^-30 off it, is not within
   // 2^-20 |AB| = 2^-32 of the line, but within the loosest tolerance, (5 + 1) ulp

@@ -311,7 +311,7 @@ class Certifier {
   }
 
   // Walks from a to b: at each vertex, the next vertex strictly ahead along AB and
-  // strictly before B, the nearest one first among, in this order: the vertices
+  // strictly before B, and no input vertex, the nearest one first among, in this order: the vertices
   // joined by a listed constrained edge within 1, 2, 4, ... ulp up to the loosest
   // tolerance, then those joined by a listed edge within 2^-20 |AB| of the line,
   // then any within 1, 2, 4, ... ulp up to the loosest tolerance. Far from the
@@ -335,7 +335,10 @@ class Certifier {
       std::vector<int> ahead_of_v;
       for (int i = adj_begin_[static_cast<std::size_t>(v)]; i < adj_begin_[static_cast<std::size_t>(v) + 1]; ++i) {
         const int w = adj_[static_cast<std::size_t>(i)];
-        if (ahead(A, B, P(v), P(w)) > 0 && ahead(A, B, P(w), B) > 0) ahead_of_v.push_back(w);
+        // Never an input vertex: validate() split every segment at the input vertices
+        // exactly on it, so one inside a segment is off it, however near.
+        if (mesh_to_input_[static_cast<std::size_t>(w)] < 0 && ahead(A, B, P(v), P(w)) > 0 && ahead(A, B, P(w), B) > 0)
+          ahead_of_v.push_back(w);
       }
       auto nearest = [&](auto&& qualifies) {
         int best = -1;
@@ -426,7 +429,7 @@ class Certifier {
                fmt::format("vertex {} {} of segment {} {}-{} {} {} is off the segment by more than the tolerance {} per coordinate", v,
                            pt(P(v)), s, a, b, pt(P(a)), pt(P(b)), tol),
                {}, {}, {v, a, b}, {}, static_cast<int>(s)});
-        if (mesh_to_input_[static_cast<std::size_t>(v)] < 0) vertex_segment_[static_cast<std::size_t>(v)] = static_cast<int>(s);
+        vertex_segment_[static_cast<std::size_t>(v)] = static_cast<int>(s);  // a Steiner point: the walk takes no input vertex
       }
       for (std::size_t k = 0; k + 1 < chain.size(); ++k) chain_edge_[edge_key(chain[k], chain[k + 1])] = static_cast<int>(s);
       chains_[s] = std::move(chain);
