@@ -610,6 +610,35 @@ TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedge) {
   EXPECT_EQ(r.unimprovable_accepted[0].triangle, (Tri{4, 5, 6}));
 }
 
+TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedgeOnTheSecondSideToo) {
+  // The same cracks, the other side: triangle (U,R,W), R = (6.5, 3.2), is skinny at R
+  // (about 18 degrees) and its shortest edge U-W joins the two segments, but R lies
+  // ccw beyond the arm V-W (at 26 degrees from V, the arm at 20): inside the first
+  // side of the wedge, outside the second, and the rule does not hold.
+  const double rad = 20 * M_PI / 180;
+  Pslg p;
+  p.vertices = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {4, 0}, {4 * std::cos(rad), 4 * std::sin(rad)}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 0}, {4, 6, 0}};
+  p = test::validated(p);
+  Mesh m;
+  m.vertices = p.vertices;
+  m.vertices.push_back({6.5, 3.2});  // R = 7
+  m.input_vertices = p.vertices.size();
+  m.triangles = {{5, 7, 6}, {4, 5, 6}};
+  certify::Options options;
+  options.min_angle_deg = 25;
+  const auto plain = certify::certify(p, m, options);
+  ASSERT_EQ(plain.count(Reason::AngleBelowTheta), 2u) << certify::format_report(plain);
+  options.unimprovable = {{{5, 7, 6}, 4, 4, 5, 20}, {{4, 5, 6}, 4, 4, 5, 20}};
+  const auto r = certify::certify(p, m, options);
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  const certify::Violation* v = first_of(r, Reason::UnimprovableRuleFails);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->triangles, std::vector<int>{0});
+  ASSERT_EQ(r.unimprovable_accepted.size(), 1u);
+  EXPECT_EQ(r.unimprovable_accepted[0].triangle, (Tri{4, 5, 6}));
+}
+
 TEST(CertifyEdgeCases, InputAngleAtTheDoubleNearestSixtyDegreesIsDecidedExactly) {
   // W = (1/2, the double nearest sqrt(3)/2): the angle at V between U = (1,0) and W
   // is within an ulp of 60 degrees, where the interval filter cannot decide; the
