@@ -154,6 +154,24 @@ TEST(FastEngine, EdgeFloorStops) {
   EXPECT_EQ(joined(impl_test::check_invariants(p, r.mesh, {})), "");
 }
 
+TEST(FastEngine, EdgeFloorZeroMeansNoFloor) {
+  // Three segments meeting within 2.3 degrees at the origin, refined at 34 degrees
+  // (outside the claims): with the default floor the run stops on it (about 2 300
+  // points); with a floor of 0 it goes on to the Steiner budget.
+  std::vector<std::string> warnings;
+  const Pslg p = validate(read_poly(std::string(LEPP_SOURCE_DIR) + "/properties/tests/data/small_angles_apex_chain.poly"), warnings);
+  RefineOptions o;
+  o.min_angle_deg = 34;
+  const RefineResult floored = fast::refine(p, o);
+  ASSERT_EQ(floored.outcome, Outcome::EdgeFloor) << floored.stuck;
+  o.edge_floor = 0;
+  o.max_steiner = floored.steiner_points + 500;
+  const RefineResult r = fast::refine(p, o);
+  EXPECT_EQ(r.outcome, Outcome::SteinerBudget) << r.stuck;
+  EXPECT_EQ(r.steiner_points, o.max_steiner);
+  EXPECT_TRUE(certified(p, r, o));
+}
+
 TEST(FastEngine, TimeLimitStops) {
   Pslg p = load("square400");
   RefineOptions o;
