@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -20,8 +21,8 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// In the child after fork: only async-signal-safe calls until exec.
-[[noreturn]] void exec_child(const char* command, int stderr_fd, const SubprocessLimits& limits) {
+// In the child after fork, before its function runs: only async-signal-safe calls.
+void set_up_child(int stderr_fd, const SubprocessLimits& limits) {
   setpgid(0, 0);  // its own group, so a timeout kills everything it started
   // Default signal handling in the child whatever the parent set.
   signal(SIGPIPE, SIG_DFL);
@@ -41,8 +42,45 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
     rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(limits.memory_mb) * 1024 * 1024;
     setrlimit(RLIMIT_AS, &rl);
   }
-  execl("/bin/sh", "sh", "-c", command, static_cast<char*>(nullptr));
-  _exit(127);
+}
+
+// The read end of a pipe from the child, emptied without blocking.
+struct PipeReader {
+  int fd = -1;
+  bool open = true;
+  std::string* text = nullptr;
+  std::size_t cap = 0;  // 0: no cap
+  bool truncated = false;
+
+  void drain() {
+    char buf[65536];
+    while (open) {
+      ssize_t n = read(fd, buf, sizeof buf);
+      if (n > 0) {
+        std::size_t room = cap == 0 ? static_cast<std::size_t>(n) : cap > text->size() ? cap - text->size() : 0;
+        std::size_t take = std::min(room, static_cast<std::size_t>(n));
+        text->append(buf, take);
+        if (take < static_cast<std::size_t>(n)) truncated = true;
+      } else if (n == 0) {
+        open = false;
+      } else {
+        if (errno == EINTR) continue;
+        if (errno != EAGAIN && errno != EWOULDBLOCK) open = false;
+        return;
+      }
+    }
+  }
+};
+
+bool make_pipe(int fds[2], std::string& detail) {
+  if (pipe(fds) != 0) {
+    detail = std::string("pipe: ") + std::strerror(errno);
+    return false;
+  }
+  // Nothing the child execs inherits them (its stderr is a dup2 copy, which is inherited).
+  fcntl(fds[0], F_SETFD, FD_CLOEXEC);
+  fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+  return true;
 }
 
 }  // namespace
@@ -53,48 +91,44 @@ std::string shell_quote(const std::string& s) {
   return q + "'";
 }
 
-SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits) {
+SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& limits) {
   SubprocessResult r;
-  int fds[2];
-  if (pipe(fds) != 0) {
-    r.detail = std::string("pipe: ") + std::strerror(errno);
+  int err[2], res[2];
+  if (!make_pipe(err, r.detail)) return r;
+  if (!make_pipe(res, r.detail)) {
+    close(err[0]);
+    close(err[1]);
     return r;
   }
-  fcntl(fds[0], F_SETFD, FD_CLOEXEC);
   const auto t0 = Clock::now();
   pid_t pid = fork();
   if (pid < 0) {
     r.detail = std::string("fork: ") + std::strerror(errno);
-    close(fds[0]);
-    close(fds[1]);
+    for (int fd : {err[0], err[1], res[0], res[1]}) close(fd);
     return r;
   }
-  if (pid == 0) exec_child(shell_command.c_str(), fds[1], limits);
+  if (pid == 0) {
+    close(err[0]);
+    close(res[0]);
+    set_up_child(err[1], limits);
+    int status = 125;
+    try {
+      status = child(res[1]);
+    } catch (...) {
+    }
+    _exit(status);  // never back into the caller's code, nor its atexit handlers and stdio buffers
+  }
   setpgid(pid, pid);  // also here: no race with the kill below
-  close(fds[1]);
-  fcntl(fds[0], F_SETFL, O_NONBLOCK);
+  close(err[1]);
+  close(res[1]);
+  fcntl(err[0], F_SETFL, O_NONBLOCK);
+  fcntl(res[0], F_SETFL, O_NONBLOCK);
   r.started = true;
 
-  bool pipe_open = true, exited = false;
+  PipeReader stderr_pipe{err[0], true, &r.stderr_text, limits.stderr_cap};
+  PipeReader result_pipe{res[0], true, &r.output, 0};
+  bool exited = false;
   int wstatus = 0;
-  char buf[4096];
-  auto drain = [&] {
-    while (pipe_open) {
-      ssize_t n = read(fds[0], buf, sizeof buf);
-      if (n > 0) {
-        std::size_t room = limits.stderr_cap > r.stderr_text.size() ? limits.stderr_cap - r.stderr_text.size() : 0;
-        std::size_t take = std::min(room, static_cast<std::size_t>(n));
-        r.stderr_text.append(buf, take);
-        if (take < static_cast<std::size_t>(n)) r.stderr_truncated = true;
-      } else if (n == 0) {
-        pipe_open = false;
-      } else {
-        if (errno == EINTR) continue;
-        if (errno != EAGAIN && errno != EWOULDBLOCK) pipe_open = false;
-        return;
-      }
-    }
-  };
   while (!exited) {
     double left = limits.timeout_seconds > 0 ? limits.timeout_seconds - since(t0) : 1e9;
     if (left <= 0) {
@@ -104,12 +138,17 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
       exited = true;
       break;
     }
-    // Wake at least every 50 ms to reap the child even if a grandchild keeps stderr open.
+    // Wake at least every 50 ms to reap the child even if a grandchild keeps a pipe open.
     int wait_ms = static_cast<int>(std::min(left * 1000 + 1, 50.0));
-    if (pipe_open) {
-      struct pollfd p{fds[0], POLLIN, 0};
-      int k = poll(&p, 1, wait_ms);
-      if (k > 0) drain();
+    struct pollfd p[2];
+    nfds_t n = 0;
+    for (PipeReader* pr : {&stderr_pipe, &result_pipe})
+      if (pr->open) p[n++] = {pr->fd, POLLIN, 0};
+    if (n > 0) {
+      if (poll(p, n, wait_ms) > 0) {
+        stderr_pipe.drain();
+        result_pipe.drain();
+      }
     } else {
       usleep(static_cast<useconds_t>(std::min(wait_ms, 5)) * 1000);
     }
@@ -117,10 +156,13 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
     if (w == pid) exited = true;
   }
   r.seconds = since(t0);
-  drain();
-  // Whatever the shell left behind in its group (background jobs) goes too.
+  stderr_pipe.drain();
+  result_pipe.drain();
+  r.stderr_truncated = stderr_pipe.truncated;
+  // Whatever the child left behind in its group (background jobs) goes too.
   kill(-pid, SIGKILL);
-  close(fds[0]);
+  close(err[0]);
+  close(res[0]);
   if (!r.timed_out) {
     if (WIFEXITED(wstatus)) r.exit_code = WEXITSTATUS(wstatus);
     if (WIFSIGNALED(wstatus)) r.signal = WTERMSIG(wstatus);
@@ -128,6 +170,16 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
     r.signal = SIGKILL;
   }
   return r;
+}
+
+SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits) {
+  const char* command = shell_command.c_str();
+  return run_forked(
+      [command](int) {
+        execl("/bin/sh", "sh", "-c", command, static_cast<char*>(nullptr));
+        return 127;
+      },
+      limits);
 }
 
 }  // namespace lepp::audit

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Runs one shell command as the audit needs it: /bin/sh -c in its own process
-// group, stdout discarded, stderr kept (capped), the whole group killed at the
-// timeout, the address space capped with setrlimit(RLIMIT_AS) in the child.
-// Never blocks past the timeout, whatever the command does (forks, closes or
-// keeps stderr open, ignores SIGTERM).
+// Runs one shell command, or one function in a forked child, as the audit needs
+// it: its own process group, stdin and stdout on /dev/null, stderr kept (capped),
+// the whole group killed at the timeout, the address space capped with
+// setrlimit(RLIMIT_AS) in the child. Never blocks past the timeout, whatever the
+// child does (forks, closes or keeps stderr open, ignores SIGTERM, loops).
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <string>
 
 namespace lepp::audit {
@@ -24,11 +25,23 @@ struct SubprocessResult {
   int signal = 0;         // when a signal ended it (SIGKILL after a timeout included)
   std::string stderr_text;
   bool stderr_truncated = false;
+  std::string output;     // run_forked: every byte the child wrote to its result pipe (not capped)
   double seconds = 0;
   std::string detail;
 };
 
 SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits);
+
+// What a forked child runs, after the limits are set: it may write its result to
+// result_fd (read by the parent while it runs, into SubprocessResult::output) and
+// returns its exit status. It must not return into the caller's code: run_forked
+// ends the child with _exit (status 125 if the function throws). Fork without
+// exec: call it from a single-threaded program (the audit is one).
+using ChildFunction = std::function<int(int result_fd)>;
+
+// Runs `child` in a forked process under the same rules and the same wait loop
+// as run_subprocess (which is run_forked with a child that execs /bin/sh).
+SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& limits);
 
 // Single-quotes s for /bin/sh.
 std::string shell_quote(const std::string& s);
