@@ -18,6 +18,7 @@
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
 #include "lepp/audit/command_engine.h"
+#include "lepp/audit/isolated_engine.h"
 #include "lepp/audit/peer_engines.h"
 #include "lepp/audit/report.h"
 #include "lepp/audit/subprocess.h"
@@ -43,7 +44,7 @@ struct AuditArgs {
   double angle_tolerance = 1e-3, point_tolerance = 8;
   std::string out = "audit-out";
   std::string junit, json_file;
-  bool json = false, no_shrink = false;
+  bool json = false, no_shrink = false, no_isolate = false;
   std::size_t max_findings = 3;
   double shrink_seconds = 60;
 };
@@ -69,14 +70,16 @@ int run_audit_command(const AuditArgs& a) {
     audit::AuditOptions o;
     o.method = a.method == "midpoint" ? Method::Midpoint : Method::Centroid;
     QueueOrder order = a.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+    // lepp's engines in a child process unless --no-isolate (CGAL's always is: peer_engines.h).
+    auto lepp_engine = [&a](audit::Engine e) { return a.no_isolate ? e : audit::isolated_engine(std::move(e)); };
     audit::Engine engine;
     if (!a.cmd.empty()) {
       engine = audit::command_engine(a.cmd);
       o.engine_name = a.cmd;
       o.reproduce_prefix = "lepp audit --cmd " + audit::shell_quote(a.cmd);
     } else {
-      if (a.engine == "fast") engine = audit::fast_engine(order);
-      else if (a.engine == "reference") engine = audit::reference_engine(order);
+      if (a.engine == "fast") engine = lepp_engine(audit::fast_engine(order));
+      else if (a.engine == "reference") engine = lepp_engine(audit::reference_engine(order));
       else if (a.engine == "triangle") engine = audit::triangle_engine(a.root);
       else if (a.engine == "cgal") engine = audit::cgal_engine();
       o.engine_name = a.engine == "fast" || a.engine == "reference" ? "lepp " + a.engine + (a.order == "lifo" ? " (lifo)" : "")
@@ -87,8 +90,8 @@ int run_audit_command(const AuditArgs& a) {
     std::vector<std::string> compare = a.compare == "auto" ? std::vector<std::string>{"reference", "triangle"} : split(a.compare);
     for (const std::string& c : compare) {
       if (c == "none") continue;
-      if (c == "reference") o.comparisons.push_back({"lepp reference", audit::reference_engine()});
-      else if (c == "fast") o.comparisons.push_back({"lepp fast", audit::fast_engine()});
+      if (c == "reference") o.comparisons.push_back({"lepp reference", lepp_engine(audit::reference_engine())});
+      else if (c == "fast") o.comparisons.push_back({"lepp fast", lepp_engine(audit::fast_engine())});
       else if (c == "cgal") o.comparisons.push_back({"CGAL", audit::cgal_engine()});
       else if (c == "triangle") {
         try {
@@ -173,6 +176,9 @@ void add_audit_command(CLI::App& app, int& status) {
   cmd->add_option("--root", a->root, "The lepp source tree (corpus/, tools/triangle/)")->default_val(".");
   cmd->add_option("--timeout", a->timeout, "Seconds per run; a run past it is killed: a non-termination finding")->default_val(10);
   cmd->add_option("--memory", a->memory, "Address-space cap of the program, MB (0: none)")->default_val(0);
+  cmd->add_flag("--no-isolate", a->no_isolate,
+                "Run lepp's engines (fast, reference) in the audit's own process: no kill at the timeout, a crash ends the audit "
+                "(for a debugger or a sanitizer; CGAL's is always run in a child)");
   cmd->add_option("--angle-tolerance", a->angle_tolerance, "Conformance: a triangle this close above theta (degrees) may count as bad or good")
       ->default_val(1e-3);
   cmd->add_option("--point-tolerance", a->point_tolerance, "Conformance: how far an inserted point may be from the paper's exact choice, in DBL_EPSILON x |coordinate|")

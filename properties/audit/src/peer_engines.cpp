@@ -6,6 +6,7 @@
 
 #include "cgal_mesher.h"
 #include "lepp/audit/command_engine.h"
+#include "lepp/audit/isolated_engine.h"
 #include "triangle_wasm.h"
 
 namespace lepp::audit {
@@ -29,7 +30,10 @@ Engine triangle_engine(const std::string& root, std::int64_t budget) {
 }
 
 Engine cgal_engine(std::int64_t budget) {
-  return [budget](const Pslg& pslg, const EngineRequest& req) {
+  // CGAL looks at the clock only between refinement steps (others/cgal_mesher.cpp),
+  // and a failed CGAL assertion aborts: in a child, the timeout and a crash end the
+  // run, not the audit.
+  return isolated_engine([budget](const Pslg& pslg, const EngineRequest& req) {
     EngineRun run;
     const auto t0 = std::chrono::steady_clock::now();
     try {
@@ -50,7 +54,7 @@ Engine cgal_engine(std::int64_t budget) {
       run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     return run;
-  };
+  });
 }
 
 }  // namespace lepp::audit

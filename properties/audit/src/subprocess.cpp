@@ -129,6 +129,7 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
   PipeReader result_pipe{res[0], true, &r.output, 0};
   bool exited = false;
   int wstatus = 0;
+  int nap_us = 50;
   while (!exited) {
     double left = limits.timeout_seconds > 0 ? limits.timeout_seconds - since(t0) : 1e9;
     if (left <= 0) {
@@ -150,7 +151,9 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
         result_pipe.drain();
       }
     } else {
-      usleep(static_cast<useconds_t>(std::min(wait_ms, 5)) * 1000);
+      // Both pipes closed: the child is most likely exiting. Look again soon, then less often.
+      usleep(static_cast<useconds_t>(std::min(static_cast<double>(nap_us), left * 1e6 + 1)));
+      nap_us = std::min(nap_us * 2, 5000);
     }
     pid_t w = waitpid(pid, &wstatus, WNOHANG);
     if (w == pid) exited = true;

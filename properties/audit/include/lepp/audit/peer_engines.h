@@ -16,8 +16,10 @@ namespace lepp::audit {
 Engine triangle_engine(const std::string& source_root, std::int64_t budget = 20000);
 
 // CGAL's refine_Delaunay_mesh_2 with B = sin^2(theta), stopped at the timeout or
-// after `budget` Steiner points (RunStatus::TimedOut / Stopped). Midpoint and
-// centroid mean nothing to it: the method is ignored.
+// after `budget` Steiner points (RunStatus::TimedOut / Stopped). Always run in a
+// child process (isolated_engine.h): killed at the timeout if its own check
+// between refinement steps does not stop it, a crash is RunStatus::Crashed, and
+// memory_mb applies. Midpoint and centroid mean nothing to it: the method is ignored.
 Engine cgal_engine(std::int64_t budget = 300000);
 
 }  // namespace lepp::audit
