@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Audits a C++ mesher in process against the paper's statements with
+// Audits a C++ mesher, each run in a child process, against the paper's statements with
 // lepp::audit. "My engine" here is lepp's fast engine called by hand, to show
 // what an engine fills in; put your own mesher in its place. Prints the
 // markdown report; exit 0 when every row holds, 1 otherwise.
@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "lepp/audit/audit.h"
+#include "lepp/audit/isolated_engine.h"
 #include "lepp/audit/report.h"
 #include "lepp/fast.h"
 
@@ -44,7 +45,8 @@ int main() {
   options.inputs.paper = options.inputs.corpus = false;  // generated inputs only: no source tree needed
   options.inputs.seed = 1;
   options.out_dir = (std::filesystem::temp_directory_path() / "audit_my_engine").string();
-  const lepp::audit::AuditReport report = lepp::audit::run_audit(my_engine, options);
+  // In a child process per run: a hang is killed at the timeout, a crash is a finding, not the end of the audit.
+  const lepp::audit::AuditReport report = lepp::audit::run_audit(lepp::audit::isolated_engine(my_engine), options);
   std::printf("%s", lepp::audit::markdown_report(report).c_str());
   return lepp::audit::exit_status(report);
 }
