@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # `lepp audit` exit statuses and outputs: 0 clean (lepp refine through --cmd),
 # 1 findings (a crashing program, CGAL's mesher crashing in its child process),
-# 2 bad usage; JSON and JUnit well-formed.
+# 2 bad usage; JSON and JUnit well-formed; CGAL's mesher that never returns killed at --timeout.
 # usage: audit_cli_test.sh LEPP_BINARY SOURCE_DIR
 set -u
 lepp=$1; src=$2
@@ -41,4 +41,12 @@ grep -q 'unknown placeholder {angle}' "$dir/err" || fail "message: $(cat "$dir/e
 [ $s -eq 1 ] || fail "CGAL crash: exit $s (the crash was not contained)"
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["run_status"]["crashed"]==1, r["run_status"]; assert "killed by signal" in r["rows"][0]["first"], r["rows"][0]' \
   "$dir/cgal.json" || fail "CGAL crash: not reported as crashed (if CGAL no longer crashes here, pick another input)"
+
+# CGAL's mesher never returns on this input: isolated, it is killed at --timeout and the
+# audit finishes (a finding: the input's 45-degree angle is outside the termination claim).
+timeout 60 "$lepp" audit --engine cgal --inputs "$src/properties/audit/tests/inputs/cgal-hang.poly" --theta 20 --timeout 2 \
+  --compare none --no-shrink --root "$src" --out "$dir/cgal-hang" --json > "$dir/cgal-hang.json"; s=$?
+[ $s -eq 0 ] || [ $s -eq 1 ] || fail "CGAL hang: exit $s (124: the audit did not finish; the timeout did not hold)"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["run_status"]["timed-out"]==1, r["run_status"]; t=r["rows"][3]; assert t["check"]=="termination" and "killed after" in t["first"], t' \
+  "$dir/cgal-hang.json" || fail "CGAL hang: not reported as killed at the timeout (if CGAL now returns here, pick another input)"
 echo "OK"
