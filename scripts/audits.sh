@@ -4,7 +4,9 @@
 # methods), Triangle (triangle-wasm) and CGAL's mesher at theta = 20, 25, 30, 33,
 # with the shrunk counterexamples kept in corpus/audits/ENGINE/ROW-N/.
 # usage: scripts/audits.sh [CASES]      (LEPP=path/to/lepp, default build/cli/lepp;
-#        TIMEOUT seconds per run, default 5; SHRINK seconds per shrink, default 30)
+#        TIMEOUT seconds per run, default 5; SHRINK seconds per shrink, default 30;
+#        ONLY=cgal,triangle reruns only those audits and keeps the others' reports and
+#        corpus/audits/ directories; docs/AUDITS.md is rewritten from all of them)
 set -uo pipefail
 cd "$(dirname "$0")/.."
 lepp=${LEPP:-build/cli/lepp}
@@ -13,8 +15,10 @@ thetas=20,25,30,33
 seed=1
 timeout=${TIMEOUT:-5}
 shrink=${SHRINK:-30}
+only=${ONLY:-}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-rm -rf corpus/audits && mkdir -p corpus/audits
+[[ -z $only ]] && rm -rf corpus/audits
+mkdir -p corpus/audits
 cat > corpus/audits/README.md <<'MD'
 # corpus/audits: the shrunk counterexamples of docs/AUDITS.md
 
@@ -37,18 +41,24 @@ audits=(
 
 for a in "${audits[@]}"; do
   IFS='|' read -r name title opts <<< "$a"
+  echo "$title" > "$work/$name.title"
+  if [[ -n $only && ",$only," != *",$name,"* ]]; then
+    echo "audit: $title: kept from the last run (ONLY=$only)" >&2
+    continue
+  fi
+  rm -rf "corpus/audits/$name" "corpus/audits/$name.json"
   echo "audit: $title" >&2
   start=$(date +%s)
   # shellcheck disable=SC2086
   "$lepp" audit $opts --theta $thetas --cases "$cases" --seed $seed --timeout $timeout --shrink-seconds $shrink --root . \
     --out "corpus/audits/$name" --json-file "corpus/audits/$name.json" > "$work/$name.md"
   echo "  exit $? in $(( $(date +%s) - start )) s" >&2
-  echo "$title" > "$work/$name.title"
 done
 
 # Outputs of runs that did not end can be tens of MB: not kept (the reproduce line remakes them).
 find corpus/audits -type f -size +256k ! -name input.poly -print -delete > "$work/dropped.txt"
 
+[[ -f docs/AUDITS.md ]] && cp docs/AUDITS.md "$work/old-AUDITS.md"  # kept audits' sections come from it
 python3 - "$work" "$cases" "$thetas" "$seed" "$timeout" "${audits[@]}" > docs/AUDITS.md <<'PY'
 import json, sys, os
 work, cases, thetas, seed, timeout = sys.argv[1:6]
@@ -105,11 +115,29 @@ for n in names:
         parts.append(f"{row['check']} ({what} of {row['runs']} runs{where})")
     print(f"- **{titles[n]}**: " + "; ".join(parts) + ".")
 print()
+old_path = os.path.join(work, "old-AUDITS.md")
+old = open(old_path).read() if os.path.exists(old_path) else ""
+
+
+def kept_section(title):
+    """The section of an audit not rerun (ONLY=...), as the last docs/AUDITS.md has it."""
+    head = f"\n## {title}\n"
+    at = old.find(head)
+    if at < 0:
+        return None
+    ends = [old.find(f"\n## {t}\n", at + len(head)) for t in titles.values()]
+    ends = [e for e in ends if e > at]
+    return old[at + len(head):min(ends) if ends else len(old)].strip("\n") + "\n"
+
+
 for n in names:
     p = os.path.join(work, n + ".md")
-    if not os.path.exists(p):
-        continue
-    md = open(p).read().replace("\n## Findings", "\n#### Findings").replace("# lepp audit: ", "### lepp audit: ", 1)
+    if os.path.exists(p):
+        md = open(p).read().replace("\n## Findings", "\n#### Findings").replace("# lepp audit: ", "### lepp audit: ", 1)
+    else:
+        md = kept_section(titles[n])
+        if md is None:
+            continue
     print(f"## {titles[n]}\n")
     print(md)
 PY

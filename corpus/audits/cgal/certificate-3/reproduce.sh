@@ -1,0 +1,2 @@
+#!/bin/sh
+lepp audit --engine cgal --method centroid --theta 20 --timeout 5 --inputs corpus/audits/cgal/certificate-3/input.poly

@@ -1,2 +1,0 @@
-#!/bin/sh
-lepp audit --engine cgal --method centroid --theta 33 --timeout 5 --inputs corpus/audits/cgal/certificate-6/input.poly

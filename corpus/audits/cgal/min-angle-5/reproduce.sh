@@ -1,2 +1,0 @@
-#!/bin/sh
-lepp audit --engine cgal --method centroid --theta 20 --timeout 5 --inputs corpus/audits/cgal/min-angle-5/input.poly
