@@ -5,6 +5,7 @@
 // lengths is allowed, so a triangle may have several longest (or second
 // longest) edges, and a Lepp several ends.
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <stdexcept>
 
 #include "lepp/angle.h"
+#include "cocircular_cells.h"
 #include "lepp/reference_replay.h"
 #include "triangulation.h"
 
@@ -24,17 +26,26 @@ using namespace detail;
 
 namespace {
 
-FT len2(FH f, int i) {
-  return CGAL::squared_distance(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point());
+// The rules below read a triangle through these: a face of the mesh, or a
+// triangle of a cocircular cell's other triangulations (cocircular_cells.h).
+VH vtx(FH f, int i) { return f->vertex(i); }
+VH vtx(const CellTri& t, int i) { return t.v[static_cast<std::size_t>(i)]; }
+bool constrained(FH f, int i) { return f->is_constrained(i); }
+bool constrained(const CellTri& t, int i) { return t.constrained[static_cast<std::size_t>(i)]; }
+
+template <class T>
+FT len2(const T& f, int i) {
+  return CGAL::squared_distance(vtx(f, Cdt::ccw(i))->point(), vtx(f, Cdt::cw(i))->point());
 }
 
 // Squared length of edge i of f in doubles: a filter. The coordinates are
 // doubles, so each of dx, dy, dx*dx, dy*dy and the sum is off by at most half
 // an ulp: the result is within a relative 4 DBL_EPSILON of the exact value
 // unless something underflowed or overflowed (checked by the caller).
-double approx_len2(FH f, int i) {
-  const auto& a = f->vertex(Cdt::ccw(i))->point().approx();
-  const auto& b = f->vertex(Cdt::cw(i))->point().approx();
+template <class T>
+double approx_len2(const T& f, int i) {
+  const auto& a = vtx(f, Cdt::ccw(i))->point().approx();
+  const auto& b = vtx(f, Cdt::cw(i))->point().approx();
   if (a.x().inf() != a.x().sup() || a.y().inf() != a.y().sup() || b.x().inf() != b.x().sup() ||
       b.y().inf() != b.y().sup())
     return std::numeric_limits<double>::quiet_NaN();  // not a double point: decide exactly
@@ -43,19 +54,22 @@ double approx_len2(FH f, int i) {
 }
 
 // Compares the lengths of edges i and j of f: filtered, exact when needed.
-CGAL::Comparison_result compare_len(FH f, int i, int j) {
+template <class T>
+CGAL::Comparison_result compare_len(const T& f, int i, int j) {
   double li = approx_len2(f, i), lj = approx_len2(f, j), m = std::max(li, lj);
   if (std::isfinite(li) && std::isfinite(lj) && m > 1e-280 && std::abs(li - lj) > 16 * DBL_EPSILON * m)
     return li < lj ? CGAL::SMALLER : CGAL::LARGER;
   return CGAL::compare(len2(f, i), len2(f, j));
 }
 
-bool is_longest(FH f, int i) {
+template <class T>
+bool is_longest(const T& f, int i) {
   return compare_len(f, i, Cdt::ccw(i)) != CGAL::SMALLER && compare_len(f, i, Cdt::cw(i)) != CGAL::SMALLER;
 }
 
 // Indices of the edges of f of maximal length (several on ties).
-std::vector<int> longest_edges(FH f) {
+template <class T>
+std::vector<int> longest_edges(const T& f) {
   std::vector<int> out;
   for (int i = 0; i < 3; ++i)
     if (is_longest(f, i)) out.push_back(i);
@@ -64,12 +78,60 @@ std::vector<int> longest_edges(FH f) {
 
 // The second-longest edges of f when edge l is its longest: the longer of the
 // other two, both on a tie.
-std::vector<int> second_longest_given(FH f, int l) {
+template <class T>
+std::vector<int> second_longest_given(const T& f, int l) {
   int j = Cdt::ccw(l), k = Cdt::cw(l);
   CGAL::Comparison_result r = compare_len(f, j, k);
   if (r == CGAL::LARGER) return {j};
   if (r == CGAL::SMALLER) return {k};
   return {j, k};
+}
+
+// The index in g of its vertex that is not a or b (the edge a-b is g's edge of that index).
+template <class T>
+int index_off(const T& g, VH a, VH b) {
+  for (int i = 0; i < 3; ++i)
+    if (vtx(g, i) != a && vtx(g, i) != b) return i;
+  return -1;
+}
+
+// Smallest angle below theta (exactly: sin^2 compared as in geometry.cpp's
+// is_skinny, at the vertex opposite a shortest edge).
+bool skinny(const CellTri& t, const FT& sin2) {
+  int i = 0;
+  for (int k = 1; k < 3; ++k)
+    if (compare_len(t, k, i) == CGAL::SMALLER) i = k;
+  const CPoint& o = vtx(t, i)->point();
+  K::Vector_2 u = vtx(t, Cdt::ccw(i))->point() - o, v = vtx(t, Cdt::cw(i))->point() - o;
+  FT cross = u.x() * v.y() - u.y() * v.x();
+  return cross * cross < sin2 * u.squared_length() * v.squared_length();
+}
+
+bool too_big(const CellTri& t, const FT& twice_max_area) {
+  const CPoint &a = vtx(t, 0)->point(), &b = vtx(t, 1)->point(), &c = vtx(t, 2)->point();
+  FT cross = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+  return CGAL::abs(cross) > twice_max_area;
+}
+
+// p in the closed triangle t or near it (a loose test in doubles, coordinates
+// scaled by a power of two: only a filter before the exact distance tests).
+bool near_triangle(const CellTri& t, const Point& p) {
+  double m = std::max(std::abs(p.x), std::abs(p.y));
+  std::array<Point, 3> q;
+  for (int i = 0; i < 3; ++i) {
+    q[static_cast<std::size_t>(i)] = {CGAL::to_double(vtx(t, i)->point().x()), CGAL::to_double(vtx(t, i)->point().y())};
+    m = std::max({m, std::abs(q[static_cast<std::size_t>(i)].x), std::abs(q[static_cast<std::size_t>(i)].y)});
+  }
+  if (!(m > 0) || !std::isfinite(m)) return true;
+  int e = 0;
+  std::frexp(m, &e);
+  const double px = std::ldexp(p.x, -e), py = std::ldexp(p.y, -e);
+  for (int i = 0; i < 3; ++i) {
+    const Point &u = q[static_cast<std::size_t>(i)], &v = q[static_cast<std::size_t>((i + 1) % 3)];
+    const double ux = std::ldexp(u.x, -e), uy = std::ldexp(u.y, -e), dx = std::ldexp(v.x, -e) - ux, dy = std::ldexp(v.y, -e) - uy;
+    if ((dx * (py - uy) - dy * (px - ux)) < -1e-9 * std::hypot(dx, dy) - 1e-300) return false;
+  }
+  return true;
 }
 
 double abs_max(const CPoint& p) {
@@ -121,14 +183,21 @@ struct Replay::Impl {
     sin2_ = FT(sin2_bracket(theta).hi);
     twice_max_area_ = FT(r.max_area) * 2;
     build_triangulation(pslg, tr);
+    // The initial CDT's cocircular edges count as ties, as in the engines
+    // (docs/ALGORITHM.md section 6): another implementation may have the other diagonal.
+    tr.cocircular_ties = count_cocircular_edges(tr);
   }
 
-  bool in_domain(FH f) const { return !tr.cdt.is_infinite(f) && f->info().in_domain; }
+  bool in_domain(FH f) const { return detail::in_domain(tr, f); }
 
   // Bad, or within the angle tolerance of bad.
   bool maybe_bad(FH f) const {
     if (is_skinny(f, sin2_)) return true;
     return rules.max_area > 0 && is_too_big(f, twice_max_area_);
+  }
+  bool maybe_bad(const CellTri& t) const {
+    if (skinny(t, sin2_)) return true;
+    return rules.max_area > 0 && too_big(t, twice_max_area_);
   }
 
   double tolerance(double scale) const {
@@ -136,24 +205,30 @@ struct Replay::Impl {
     return std::max(ulps * DBL_EPSILON * scale, ulps * std::numeric_limits<double>::denorm_min());
   }
 
-  Candidate midpoint(Rule rule, FH f, int i) const {
-    VH a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));
+  template <class T>
+  Candidate midpoint(Rule rule, const T& f, int i) const {
+    VH a = vtx(f, Cdt::ccw(i)), b = vtx(f, Cdt::cw(i));
     Candidate c{rule, CGAL::midpoint(a->point(), b->point()), std::max(abs_max(a->point()), abs_max(b->point())), {}, {}};
-    if (f->is_constrained(i)) c.split_a = a, c.split_b = b;
+    if (constrained(f, i)) c.split_a = a, c.split_b = b;
     return c;
   }
 
   // Every point the paper's rule allows for this terminal configuration.
   std::vector<Candidate> candidates(const Terminal& t) const {
+    return t.t2 == FH() ? candidates(t.t1, t.t1, false, t.l) : candidates(t.t1, t.t2, true, t.l);
+  }
+  // Terminal edge l of t1, and t2 across it if has_t2 (else l is constrained).
+  template <class T>
+  std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l) const {
     std::vector<Candidate> out;
-    if (t.t2 == FH()) {
-      out.push_back(midpoint(Rule::TerminalConstrainedMidpoint, t.t1, t.l));
+    if (!has_t2) {
+      out.push_back(midpoint(Rule::TerminalConstrainedMidpoint, t1, l));
       return out;
     }
-    FH t1 = t.t1, t2 = t.t2;
-    int l = t.l, l2 = t2->index(t1);
+    VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
+    int l2 = index_off(t2, a, b);
+    VH d = vtx(t2, l2);
     std::vector<int> S1 = second_longest_given(t1, l), S2 = second_longest_given(t2, l2);
-    VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l)), c = t1->vertex(l), d = t2->vertex(l2);
     auto centroid = [&](Rule rule) {
       CPoint g(((a->point().x() + b->point().x()) + (c->point().x() + d->point().x())) / 4,
                ((a->point().y() + b->point().y()) + (c->point().y() + d->point().y())) / 4);
@@ -162,7 +237,7 @@ struct Replay::Impl {
     };
     for (int s1 : S1) {
       for (int s2 : S2) {
-        bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
+        bool c1 = constrained(t1, s1), c2 = constrained(t2, s2);
         if (rules.method == Method::Midpoint) {
           if (!c1 && !c2) out.push_back(midpoint(Rule::TerminalMidpoint, t1, l));
           if (c1) out.push_back(midpoint(Rule::SecondLongestMidpoint, t1, s1));
@@ -178,7 +253,8 @@ struct Replay::Impl {
           // Remark 10: the centroid if it is inside the other triangle, else
           // the midpoint of the constrained second-longest edge. Within the
           // point tolerance of the other triangle's boundary, both.
-          FH star = c1 ? t1 : t2, other = c1 ? t2 : t1;
+          const T& star = c1 ? t1 : t2;
+          const T& other = c1 ? t2 : t1;
           int star_edge = c1 ? s1 : s2;
           Candidate g = centroid(Rule::CentroidInOther);
           int inside = inside_status(other, g.point, tolerance(g.scale));
@@ -192,10 +268,11 @@ struct Replay::Impl {
 
   // 1 strictly inside f farther than tol from its boundary, -1 not strictly
   // inside and farther than tol from it, 0 within tol of the boundary.
-  int inside_status(FH f, const CPoint& p, double tol) const {
+  template <class T>
+  int inside_status(const T& f, const CPoint& p, double tol) const {
     bool strictly = true, near = false;
     for (int i = 0; i < 3; ++i) {
-      const CPoint &u = f->vertex(Cdt::ccw(i))->point(), &v = f->vertex(Cdt::cw(i))->point();
+      const CPoint &u = vtx(f, Cdt::ccw(i))->point(), &v = vtx(f, Cdt::cw(i))->point();
       if (CGAL::orientation(u, v, p) != CGAL::LEFT_TURN) strictly = false;
       FT det = (v.x() - u.x()) * (p.y() - u.y()) - (v.y() - u.y()) * (p.x() - u.x());
       double dist = std::abs(CGAL::to_double(det)) / std::sqrt(CGAL::to_double(CGAL::squared_distance(u, v)));
@@ -330,13 +407,8 @@ struct Replay::Impl {
 
   // An unconstrained edge between two domain triangles whose four points are
   // exactly cocircular: either diagonal is Delaunay.
-  bool cocircular(FH f, int i) const {
-    FH n = f->neighbor(i);
-    if (f->is_constrained(i) || !in_domain(f) || !in_domain(n)) return false;
-    return tr.cdt.side_of_oriented_circle(n, f->vertex(i)->point(), false) == CGAL::ON_ORIENTED_BOUNDARY;
-  }
+  bool cocircular(FH f, int i) const { return cocircular_edge(tr, f, i); }
 
-  using EdgeIds = std::pair<int, int>;
   bool find_edge(const EdgeIds& e, FH& f, int& i) const {
     return tr.cdt.is_edge(tr.vertex.at(static_cast<std::size_t>(e.first)), tr.vertex.at(static_cast<std::size_t>(e.second)), f, i);
   }
@@ -402,18 +474,153 @@ struct Replay::Impl {
   // flipping one or two cocircular edges (then the flips are kept: both are
   // constrained Delaunay, and the implementation evidently has the other), or
   // of CGAL's perturbed constrained Delaunay mesh of the same points (then
-  // the replay follows CGAL's tie rule from here on).
+  // the replay follows CGAL's tie rule from here on), or, searched last, of
+  // any constrained Delaunay mesh of the same points (any triangulation of
+  // each cocircular cell).
   bool match(const Point& p, ReplayChoice& out) {
+    search_exhausted_ = false;
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
     if (match_here(p, out)) return true;
     if (!rules.follow_cocircular_flips) return false;
     if (match_local_flips(p, out)) return true;
-    if (perturbed_) return false;
-    std::int64_t flips = perturbed_lawson({});
-    if (flips == 0) return false;
-    perturbed_ = true;
-    cocircular_flips_ += flips;
-    return match_here(p, out) || match_local_flips(p, out);
+    if (!perturbed_) {
+      std::int64_t flips = perturbed_lawson({});
+      if (flips > 0) {
+        perturbed_ = true;
+        cocircular_flips_ += flips;
+        if (match_here(p, out) || match_local_flips(p, out)) return true;
+      }
+    }
+    return match_any_triangulation(p, out);
+  }
+
+  // ---- any triangulation of the cocircular cells (cocircular_cells.h) ----
+  //
+  // The same search as match_here, over the triangles that some
+  // triangulation of each cell has instead of the faces of the mesh: the
+  // terminal configurations whose quad holds p, then backwards along the Lepp
+  // tree to a bad triangle, keeping the triangles of one path pairwise
+  // compatible (no two overlapping in one cell). A path found is made real by
+  // flipping cocircular diagonals in its cells (the mesh stays constrained
+  // Delaunay), and match_here confirms it on the mesh. Bounded: at most
+  // rules.cocircular_search_budget triangles are looked at.
+
+  struct PathNode {
+    CellTri t;
+    int exit;  // the edge towards the terminal edge
+    int next;  // index of the next node on the Lepp, -1 at the terminal triangle
+  };
+
+  static std::array<int, 3> tri_key(const CellTri& t) {
+    std::array<int, 3> k{{id(t.v[0]), id(t.v[1]), id(t.v[2])}};
+    std::sort(k.begin(), k.end());
+    return k;
+  }
+
+  bool spend(std::size_t& used) {
+    if (++used <= rules.cocircular_search_budget) return true;
+    search_exhausted_ = true;
+    return false;
+  }
+
+  // Backwards from t (exit edge l; other the triangle across it, if any) to a
+  // bad triangle: the path from it to t, empty if none.
+  std::vector<CellTri> cell_bad_reaching(CellMap& cells, const CellTri& t, int l, const CellTri* other, std::size_t& used) {
+    std::vector<PathNode> nodes{{t, l, -1}};
+    std::set<std::array<int, 3>> seen{tri_key(t)};
+    if (other) seen.insert(tri_key(*other));
+    std::vector<CellTri> across;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (maybe_bad(nodes[k].t)) {
+        std::vector<CellTri> path;
+        for (int j = static_cast<int>(k); j >= 0; j = nodes[static_cast<std::size_t>(j)].next)
+          path.push_back(nodes[static_cast<std::size_t>(j)].t);
+        return path;
+      }
+      for (int e = 0; e < 3; ++e) {
+        const CellTri f = nodes[k].t;
+        if (e == nodes[k].exit || constrained(f, e)) continue;
+        across.clear();
+        cells.across(f, e, across);
+        for (const CellTri& g : across) {
+          if (!spend(used)) return {};
+          if (seen.count(tri_key(g))) continue;
+          int ge = index_off(g, vtx(f, Cdt::ccw(e)), vtx(f, Cdt::cw(e)));
+          if (!is_longest(g, ge)) continue;
+          bool fits = !(other && cells.overlap(g, *other));
+          for (int j = static_cast<int>(k); fits && j >= 0; j = nodes[static_cast<std::size_t>(j)].next)
+            fits = !cells.overlap(g, nodes[static_cast<std::size_t>(j)].t);
+          if (!fits) continue;
+          seen.insert(tri_key(g));
+          nodes.push_back({g, ge, static_cast<int>(k)});
+        }
+      }
+    }
+    return {};
+  }
+
+  // A terminal configuration of some triangulation (t2 null: l constrained):
+  // when one of its choices is p and a bad triangle's Lepp reaches it, the
+  // mesh is flipped to have it and match_here decides.
+  bool try_cell_terminal(CellMap& cells, const CellTri& t1, const CellTri* t2, int l, const Point& p, ReplayChoice& out,
+                         std::size_t& used) {
+    for (const Candidate& c : t2 ? candidates(t1, *t2, true, l) : candidates(t1, t1, false, l)) {
+      if (distance(p, c.point) > tolerance(c.scale)) continue;
+      std::vector<CellTri> path = cell_bad_reaching(cells, t1, l, t2, used);
+      if (path.empty() && t2) path = cell_bad_reaching(cells, *t2, index_off(*t2, vtx(t1, Cdt::ccw(l)), vtx(t1, Cdt::cw(l))), &t1, used);
+      if (path.empty()) continue;
+      if (t2) path.push_back(path.back().v == t1.v ? *t2 : t1);
+      std::vector<EdgeIds> flips;
+      if (realize(tr, cells, path, flips) && match_here(p, out)) {
+        cocircular_flips_ += static_cast<std::int64_t>(flips.size());
+        return true;
+      }
+      undo_flips(tr, flips);  // cannot happen: the path's triangles fit in one triangulation
+    }
+    return false;
+  }
+
+  bool match_any_triangulation(const Point& p, ReplayChoice& out) {
+    bool at_vertex = false;
+    std::vector<FH> near = faces_near(p, at_vertex);
+    if (at_vertex) return false;
+    CellMap cells(tr);
+    std::set<int> near_cells;
+    for (FH f : near) near_cells.insert(cells.cell_of(f));
+    std::size_t used = 0;
+    std::set<std::array<int, 4>> tried;  // terminal configurations by vertex ids
+    std::vector<CellTri> across;
+    for (int c : near_cells) {
+      const int n = static_cast<int>(cells.cell(c).ring.size());
+      for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+          for (int d = b + 1; d < n; ++d) {
+            if (!spend(used)) return false;
+            const CellTri t = cells.triangle(c, a, b, d);
+            if (!near_triangle(t, p)) continue;
+            // t holds p: it is t1 or t2 of the configuration, the other across a longest edge of both.
+            for (int l : longest_edges(t)) {
+              if (constrained(t, l)) {
+                std::array<int, 4> key{{id(vtx(t, Cdt::ccw(l))), id(vtx(t, Cdt::cw(l))), id(vtx(t, l)), -1}};
+                if (tried.insert(key).second && try_cell_terminal(cells, t, nullptr, l, p, out, used)) return true;
+                continue;
+              }
+              across.clear();
+              cells.across(t, l, across);
+              for (const CellTri& u : across) {
+                if (!spend(used)) return false;
+                int ul = index_off(u, vtx(t, Cdt::ccw(l)), vtx(t, Cdt::cw(l)));
+                if (!is_longest(u, ul)) continue;
+                // The terminal edge, then the two apexes.
+                std::array<int, 4> key{{id(vtx(t, Cdt::ccw(l))), id(vtx(t, Cdt::cw(l))), id(vtx(t, l)), id(vtx(u, ul))}};
+                std::sort(key.begin(), key.begin() + 2);
+                std::sort(key.begin() + 2, key.end());
+                if (tried.insert(key).second && try_cell_terminal(cells, t, &u, l, p, out, used)) return true;
+              }
+            }
+          }
+    }
+    return false;
   }
 
   bool match_local_flips(const Point& p, ReplayChoice& out) {
@@ -460,6 +667,7 @@ struct Replay::Impl {
 
   std::vector<EdgeIds> recent_ties_;
   std::int64_t cocircular_flips_ = 0;
+  bool search_exhausted_ = false;  // the last match's search of the cells ran out of its budget
   bool perturbed_ = false;  // following CGAL's perturbed tie rule
 
   void insert(const Point& p, const ReplayChoice& choice) {
@@ -549,5 +757,6 @@ Mesh Replay::mesh() const { return extract_mesh(impl_->tr); }
 std::size_t Replay::steiner_points() const { return impl_->tr.vertex.size() - impl_->tr.input_vertices; }
 std::int64_t Replay::cocircular_ties() const { return impl_->tr.cocircular_ties; }
 std::int64_t Replay::cocircular_flips() const { return impl_->cocircular_flips_; }
+bool Replay::cocircular_search_exhausted() const { return impl_->search_exhausted_; }
 
 }  // namespace lepp::reference

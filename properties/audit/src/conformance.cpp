@@ -40,6 +40,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   rules.point_tolerance_ulps = options.point_tolerance_ulps;
   rules.max_area = options.max_area;
   rules.follow_cocircular_flips = options.follow_cocircular_flips;
+  rules.cocircular_search_budget = options.cocircular_search_budget;
   reference::Replay replay(validated, rules);
 
   ConformanceReport report;
@@ -78,6 +79,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
                              all.front().distance, all.front().tolerance);
     }
     failure.reason = reason;
+    report.cocircular_search_exhausted = replay.cocircular_search_exhausted();
     report.conforms = false;
     report.failure = std::move(failure);
     break;
@@ -101,9 +103,12 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
     s += fmt::format("  ({:.17g}, {:.17g}) {} distance {:.3g}: bad {}, Lepp{}, terminal edge ({},{})\n", c.point.x, c.point.y,
                      to_string(c.rule), c.distance, tri(c.bad), lepp, c.terminal_edge[0], c.terminal_edge[1]);
   }
-  if (r.cocircular_ties > 0 || r.cocircular_flips > 0)
-    s += fmt::format("note: the replay met {} cocircular quads and flipped {} cocircular edges to follow the trace; "
-                     "a mesher that breaks such ties otherwise builds another Delaunay mesh\n",
+  if (r.cocircular_search_exhausted)
+    s += "note: the search of the cocircular cells' other triangulations gave up (cocircular_search_budget): "
+         "the point may be a choice of a constrained Delaunay mesh it did not reach\n";
+  else if (r.cocircular_ties > 0)
+    s += fmt::format("note: the mesh had {} cocircular ties and the replay flipped {} cocircular edges to follow the trace; "
+                     "unless follow_cocircular_flips is off, every triangulation of the cocircular cells was searched\n",
                      r.cocircular_ties, r.cocircular_flips);
   return s;
 }

@@ -34,6 +34,10 @@ struct ReplayRules {
   // recent insertions met a tie): the constrained Delaunay insertion is not
   // unique there, and an implementation may have flipped where the replay did not.
   bool follow_cocircular_flips = true;
+  // When that fails too, any constrained Delaunay mesh of the same points is
+  // tried (any triangulation of each exactly cocircular cell), looking at
+  // most at this many triangles per point.
+  std::size_t cocircular_search_budget = 200000;
 };
 
 // One choice the paper allows at this moment.
@@ -73,11 +77,15 @@ class Replay {
   // The current mesh (domain triangles), canonical.
   Mesh mesh() const;
   std::size_t steiner_points() const;
-  // Cocircular quads met by the insertions so far (their Delaunay flip is
-  // not unique: an implementation may have flipped where the replay did not).
+  // Cocircular ties: the initial CDT's cocircular edges, and the cocircular
+  // quads met by the insertions so far (their Delaunay flip is not unique: an
+  // implementation may have flipped where the replay did not).
   std::int64_t cocircular_ties() const;
   // Cocircular edges flipped to follow the implementation (follow_cocircular_flips).
   std::int64_t cocircular_flips() const;
+  // The last match() gave up its search of the cocircular cells' other
+  // triangulations (cocircular_search_budget) before deciding.
+  bool cocircular_search_exhausted() const;
 
  private:
   struct Impl;

@@ -30,9 +30,12 @@ struct ConformanceOptions {
   // that define the choice, per coordinate.
   double point_tolerance_ulps = 8;
   double max_area = 0;  // > 0: triangles larger than this are bad too
-  // Accept the other diagonal of exactly cocircular quads (flip one or two
-  // such edges when a point is no choice of the replay's own mesh).
+  // Accept any constrained Delaunay mesh of the same points: any
+  // triangulation of each exactly cocircular cell, where the replay's own mesh
+  // has another (docs/CONFORMANCE.md, "Cocircular cells").
   bool follow_cocircular_flips = true;
+  // Triangles the search of the cells' other triangulations may look at per point.
+  std::size_t cocircular_search_budget = 200000;
 };
 
 // One choice the paper allows, as reported for a failing step.
@@ -60,8 +63,9 @@ struct ConformanceReport {
   bool conforms = true;
   std::size_t steps = 0;          // points in the trace
   std::size_t steps_checked = 0;  // points found to be a choice (all of them when conforms)
-  std::int64_t cocircular_ties = 0;   // cocircular quads the replay's insertions met (not flipped)
+  std::int64_t cocircular_ties = 0;   // the initial CDT's cocircular edges and the cocircular quads the insertions met
   std::int64_t cocircular_flips = 0;  // cocircular edges flipped to follow the implementation
+  bool cocircular_search_exhausted = false;  // the failing step's search of the cells ran out of budget
   std::optional<ConformanceFailure> failure;
   double seconds = 0;
 };
