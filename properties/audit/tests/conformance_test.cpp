@@ -634,9 +634,11 @@ TEST(Replay, FollowsTwoCocircularFlipsAtOneStep) {
 // replay leaves them), kept here so that the test does not move with the
 // mesher: `lepp_test_mesher IN.poly OUT 25 midpoint` on the polygon below.
 // At step 14 its mesh differs from the replay's in ties that no one or two
-// local flips resolve: the replay switches to CGAL's tie rule over the whole
-// mesh (five flips at once), and keeps it: a later insertion flips a tie
-// (step 26). Without following flips the check fails at step 14.
+// local flips resolve. The search of the cocircular cells' triangulations
+// finds the mesh (more than two flips at once); with that search off (budget
+// 0, as when it runs out) the replay switches to CGAL's tie rule over the
+// whole mesh (five flips at once), and keeps it: a later insertion flips a
+// tie (step 26). Without following flips the check fails at step 14.
 Pslg convex36() {
   std::vector<Point> ring{{0, 4}, {1, 2}, {2, 0}};
   for (int x = 3; x <= 10; ++x) ring.push_back({double(x), 0});
@@ -662,6 +664,7 @@ TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
   rules.method = Method::Midpoint;
   rules.min_angle_deg = 25;
   rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
+  rules.cocircular_search_budget = 0;  // the fallback: one or two flips, then CGAL's rule
   reference::Replay replay(p, rules);
   std::size_t switched = trace.size(), flipped_on_insert = trace.size();
   for (std::size_t i = 0; i < trace.size(); ++i) {
@@ -682,7 +685,9 @@ TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
   EXPECT_GT(flipped_on_insert, switched);
   EXPECT_LT(switched + 1, trace.size()) << "no insertion after the switch";
 
-  ConformanceReport report = check_conformance(p, trace, options(Method::Midpoint, 25));
+  ConformanceOptions fallback = options(Method::Midpoint, 25);
+  fallback.cocircular_search_budget = 0;
+  ConformanceReport report = check_conformance(p, trace, fallback);
   EXPECT_TRUE(report.conforms) << describe(report);
   EXPECT_EQ(report.cocircular_flips, replay.cocircular_flips());
   ConformanceOptions o = options(Method::Midpoint, 25);
@@ -690,6 +695,21 @@ TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
   ConformanceReport rigid = check_conformance(p, trace, o);
   ASSERT_FALSE(rigid.conforms);
   EXPECT_EQ(rigid.failure->step, switched) << describe(rigid);
+
+  // With the search of the cells: the same trace conforms, following only the
+  // cells the points need (no switch: insertions never flip).
+  rules.cocircular_search_budget = ConformanceOptions().cocircular_search_budget;
+  reference::Replay cells(p, rules);
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    reference::ReplayChoice choice;
+    ASSERT_TRUE(cells.match(trace[i], choice)) << "step " << i;
+    std::int64_t f1 = cells.cocircular_flips();
+    cells.insert(trace[i], choice);
+    EXPECT_EQ(cells.cocircular_flips(), f1) << "step " << i << ": an insertion flipped";
+  }
+  EXPECT_GT(cells.cocircular_flips(), 0);
+  ConformanceReport searched = check_conformance(p, trace, options(Method::Midpoint, 25));
+  EXPECT_TRUE(searched.conforms) << describe(searched);
 }
 
 // A choice the replay cannot insert: the triangle A E B is flat (E 1e-15
@@ -743,14 +763,20 @@ TEST(Replay, AllChoicesFollowALeppToAConstrainedEnd) {
 // A point that is no choice, at the step where the replay would switch to
 // CGAL's tie rule (it switches, finds no choice on that mesh either, and
 // fails there), and after the switch (no second switch: it fails at once).
+// The fallback path (the search of the cells off); with it on, the same.
 TEST(Replay, RejectsANonChoiceAtAndAfterTheSwitchToCgalsTieRule) {
   Pslg p = convex36();
-  ConformanceReport clean = check_conformance(p, kConvex36MidpointTrace, options(Method::Midpoint, 25));
+  ConformanceOptions fallback = options(Method::Midpoint, 25);
+  fallback.cocircular_search_budget = 0;
+  ConformanceReport clean = check_conformance(p, kConvex36MidpointTrace, fallback);
   ASSERT_TRUE(clean.conforms) << describe(clean);
   for (std::size_t k : {std::size_t(14), std::size_t(20)}) {
     std::vector<Point> trace = kConvex36MidpointTrace;
     trace[k] = {5.3, 7.7};  // inside, far from every choice
-    ConformanceReport r = check_conformance(p, trace, options(Method::Midpoint, 25));
+    ConformanceReport searched = check_conformance(p, trace, options(Method::Midpoint, 25));
+    ASSERT_FALSE(searched.conforms) << k;
+    EXPECT_EQ(searched.failure->step, k) << describe(searched);
+    ConformanceReport r = check_conformance(p, trace, fallback);
     ASSERT_FALSE(r.conforms) << k;
     EXPECT_EQ(r.failure->step, k) << describe(r);
     EXPECT_GT(r.cocircular_flips, 2) << k << ": the switch flips more than two edges";
