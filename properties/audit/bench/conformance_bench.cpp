@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Conformance check throughput: replay steps per second on the paper's
-// problems (traces of the fast engine), docs/CONFORMANCE.md. Not a test.
+// problems (traces of the fast engine), and on cocircular lattice input
+// turned by -90 degrees (the replay searches other triangulations of the
+// cells), docs/CONFORMANCE.md. Not a test.
 #include <benchmark/benchmark.h>
 
 #include <string>
 
 #include "lepp/audit/conformance.h"
 #include "lepp/fast.h"
+#include "lepp/gen_symmetry.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
 
@@ -49,6 +52,50 @@ void Args(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_Conformance)->Apply(Args)->Unit(benchmark::kMillisecond);
+
+// The lattice points of the boundary of [0, w] x [0, h], and of every
+// `every`-th row inside (0: none): cocircular cells everywhere.
+lepp::Pslg lattice_box(int w, int h, int every) {
+  lepp::Pslg p;
+  for (int x = 0; x < w; ++x) p.vertices.push_back({double(x), 0});
+  for (int y = 0; y < h; ++y) p.vertices.push_back({double(w), double(y)});
+  for (int x = w; x > 0; --x) p.vertices.push_back({double(x), double(h)});
+  for (int y = h; y > 0; --y) p.vertices.push_back({0, double(y)});
+  for (std::size_t i = 0; i < p.vertices.size(); ++i) p.segments.push_back({int(i), int((i + 1) % p.vertices.size()), 1});
+  if (every > 0)
+    for (int y = every; y < h; y += every)
+      for (int x = 1; x < w; ++x) p.vertices.push_back({double(x), double(y)});
+  std::vector<std::string> warnings;
+  return lepp::validate(p, warnings);
+}
+
+// Args: input (0: box 40 x 30, 1: box 24 x 18 with every third row), quarter turns.
+void BM_ConformanceCocircular(benchmark::State& state) {
+  lepp::Pslg p = state.range(0) == 0 ? lattice_box(40, 30, 0) : lattice_box(24, 18, 3);
+  const lepp::gen::LatticeSymmetry s{static_cast<int>(state.range(1)), false};
+  lepp::RefineOptions o;
+  o.min_angle_deg = 30;
+  o.trace = true;
+  lepp::RefineResult r = lepp::fast::refine(s.apply(p), o);
+  std::vector<lepp::Point> trace;
+  for (const lepp::TraceStep& t : r.trace) trace.push_back(s.undo(t.point));
+  lepp::audit::ConformanceOptions c;
+  c.min_angle_deg = 30;
+  std::size_t steps = 0;
+  std::int64_t flips = 0;
+  for (auto _ : state) {
+    lepp::audit::ConformanceReport report = lepp::audit::check_conformance(p, trace, c);
+    if (!report.conforms) state.SkipWithError("trace does not conform");
+    steps += report.steps_checked;
+    flips = report.cocircular_flips;
+  }
+  state.SetLabel(std::string(state.range(0) == 0 ? "box40x30" : "box24x18/3") + " turned " +
+                 std::to_string(90 * s.quarter_turns) + " (" + std::to_string(trace.size()) + " steps, " +
+                 std::to_string(flips) + " flips)");
+  state.SetItemsProcessed(static_cast<std::int64_t>(steps));
+}
+
+BENCHMARK(BM_ConformanceCocircular)->Args({0, 0})->Args({0, 3})->Args({1, 0})->Args({1, 3})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
