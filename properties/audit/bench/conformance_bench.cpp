@@ -9,6 +9,7 @@
 
 #include "lepp/audit/conformance.h"
 #include "lepp/fast.h"
+#include "lepp/gen_lattice_box.h"
 #include "lepp/gen_symmetry.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
@@ -53,20 +54,10 @@ void Args(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_Conformance)->Apply(Args)->Unit(benchmark::kMillisecond);
 
-// The lattice points of the boundary of [0, w] x [0, h], and of every
-// `every`-th row inside (0: none): cocircular cells everywhere.
+// Cocircular cells everywhere (lepp/gen_lattice_box.h), validated.
 lepp::Pslg lattice_box(int w, int h, int every) {
-  lepp::Pslg p;
-  for (int x = 0; x < w; ++x) p.vertices.push_back({double(x), 0});
-  for (int y = 0; y < h; ++y) p.vertices.push_back({double(w), double(y)});
-  for (int x = w; x > 0; --x) p.vertices.push_back({double(x), double(h)});
-  for (int y = h; y > 0; --y) p.vertices.push_back({0, double(y)});
-  for (std::size_t i = 0; i < p.vertices.size(); ++i) p.segments.push_back({int(i), int((i + 1) % p.vertices.size()), 1});
-  if (every > 0)
-    for (int y = every; y < h; y += every)
-      for (int x = 1; x < w; ++x) p.vertices.push_back({double(x), double(y)});
   std::vector<std::string> warnings;
-  return lepp::validate(p, warnings);
+  return lepp::validate(lepp::gen::lattice_box(w, h, every), warnings);
 }
 
 // Args: input (0: box 40 x 30, 1: box 24 x 18 with every third row), quarter turns.

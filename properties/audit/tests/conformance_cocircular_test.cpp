@@ -17,6 +17,7 @@
 #include "lepp/fast.h"
 #include "lepp/gen.h"
 #include "lepp/gen_degenerate.h"
+#include "lepp/gen_lattice_box.h"
 #include "lepp/gen_symmetry.h"
 #include "lepp/reference.h"
 #include "lepp/reference_replay.h"
@@ -31,15 +32,7 @@ Pslg validated(Pslg p) {
 }
 
 // The boundary of [0, w] x [0, h], every lattice point a vertex.
-Pslg lattice_rectangle(int w, int h) {
-  Pslg p;
-  for (int x = 0; x < w; ++x) p.vertices.push_back({double(x), 0});
-  for (int y = 0; y < h; ++y) p.vertices.push_back({double(w), double(y)});
-  for (int x = w; x > 0; --x) p.vertices.push_back({double(x), double(h)});
-  for (int y = h; y > 0; --y) p.vertices.push_back({0, double(y)});
-  for (std::size_t i = 0; i < p.vertices.size(); ++i) p.segments.push_back({int(i), int((i + 1) % p.vertices.size()), 1});
-  return validated(p);
-}
+Pslg lattice_rectangle(int w, int h) { return validated(gen::lattice_box(w, h)); }
 
 // A mesher run on the transformed input, its points mapped back.
 std::vector<Point> trace_under(const Pslg& p, const gen::LatticeSymmetry& s, bool fast_engine, Method m, QueueOrder q,

@@ -14,6 +14,7 @@
 
 #include "lepp/audit/conformance.h"
 #include "lepp/gen.h"
+#include "lepp/gen_lattice_box.h"
 #include "lepp/gen_symmetry.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"
@@ -98,21 +99,8 @@ TEST(ConformanceOfTestMesher, PointSelectionBugsAreCaught) {
   }
 }
 
-// The boundary lattice points of [0, w] x [0, h] with the interior points of
-// the lattice, every `every`-th row: cocircular cells of 4 to 8 points, where
-// the replay searches the other triangulations.
-Pslg lattice_box(int w, int h, int every) {
-  Pslg p;
-  for (int x = 0; x < w; ++x) p.vertices.push_back({double(x), 0});
-  for (int y = 0; y < h; ++y) p.vertices.push_back({double(w), double(y)});
-  for (int x = w; x > 0; --x) p.vertices.push_back({double(x), double(h)});
-  for (int y = h; y > 0; --y) p.vertices.push_back({0, double(y)});
-  for (std::size_t i = 0; i < p.vertices.size(); ++i) p.segments.push_back({int(i), int((i + 1) % p.vertices.size()), 1});
-  if (every > 0)
-    for (int y = every; y < h; y += every)
-      for (int x = 1; x < w; ++x) p.vertices.push_back({double(x), double(y)});
-  return p;
-}
+// Cocircular cells of 4 to 8 points, where the replay searches the other triangulations.
+using gen::lattice_box;
 
 // With an interior segment (a crack) from a to b: constrained edges inside,
 // where Remark 10 decides.
