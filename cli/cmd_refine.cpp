@@ -29,6 +29,7 @@ struct RefineArgs {
   std::string order = "fifo";
   std::int64_t max_steiner = -1;
   double max_area = 0;
+  bool region_areas = false;
   double time_limit = 0;
   double edge_floor = -1;
   bool json = false;
@@ -52,9 +53,11 @@ int run_refine(const RefineArgs& args) {
     return 2;
   }
   for (const std::string& w : warnings) std::fprintf(stderr, "lepp refine: warning: %s\n", w.c_str());
-  for (std::size_t r = 0; r < input.regions.size(); ++r)
+  for (std::size_t r = 0; r < input.regions.size() && !args.region_areas; ++r)
     if (input.regions[r].max_area > 0) {
-      std::fprintf(stderr, "lepp refine: warning: %s: regional area bounds are read but not used by the engines; use --max-area for one bound everywhere\n",
+      std::fprintf(stderr,
+                   "lepp refine: warning: %s: regional area bounds are read but not applied; pass --region-areas to "
+                   "apply them (Triangle's -a with no number), or --max-area for one bound everywhere\n",
                    detail_where(input, r).c_str());
       break;
     }
@@ -65,6 +68,7 @@ int run_refine(const RefineArgs& args) {
   options.order = args.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
   options.max_steiner = args.max_steiner;
   options.max_area = args.max_area;
+  options.region_area_bounds = args.region_areas;
   options.time_limit_seconds = args.time_limit;
   options.edge_floor = args.edge_floor;
   options.trace = args.trace;
@@ -115,6 +119,7 @@ int run_refine(const RefineArgs& args) {
         {"order", to_string(options.order)},
         {"min_angle_target", args.min_angle},
         {"max_area", args.max_area},
+        {"region_areas", args.region_areas},
         {"input_vertices", input.vertices.size()},
         {"steiner_points", result.steiner_points},
         {"vertices", s.vertices},
@@ -125,6 +130,7 @@ int run_refine(const RefineArgs& args) {
         {"shortest_edge_ratio", s.shortest_edge_ratio},
         {"avg_lepp_size", avg_lepp},
         {"cocircular_ties", result.cocircular_ties},
+        {"area_refined", result.area_refined},
         {"unimprovable", result.unimprovable.size()},
         {"outcome", to_string(result.outcome)},
         {"stuck", result.stuck},
@@ -142,6 +148,8 @@ int run_refine(const RefineArgs& args) {
     std::printf("smallest area quality %.4f\n", s.min_area_quality);
     std::printf("shortest edge / input %.4f\n", s.shortest_edge_ratio);
     std::printf("average Lepp size     %.3f\n", avg_lepp);
+    if (args.max_area > 0 || args.region_areas)
+      std::printf("refined for area      %lld triangles (too big for their bound)\n", static_cast<long long>(result.area_refined));
     if (!result.unimprovable.empty())
       std::printf("unimprovable          %zu triangles (listed in %s.unimprovable)\n", result.unimprovable.size(),
                   args.output.c_str());
@@ -175,6 +183,9 @@ void add_refine_command(CLI::App& app, int& status) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-area", args->max_area, "Size bound: a triangle larger than this is bad too (Triangle's -a)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--region-areas", args->region_areas,
+                "Apply the area bounds of the .poly's regions, each to the triangles of its region (Triangle's -a with "
+                "no number); with --max-area too, the smaller bound applies");
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds (outcome time-limit, exit 3)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--edge-floor", args->edge_floor,

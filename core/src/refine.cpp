@@ -16,14 +16,19 @@ std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& optio
   // at most a few thousand points at 36 degrees) yet a hard stop for a cascade.
   std::int64_t n = static_cast<std::int64_t>(pslg.vertices.size() + pslg.segments.size());
   std::int64_t budget = 100000 + 1000 * n;
-  if (options.max_area > 0 && !pslg.vertices.empty()) {
+  // The smallest size bound in force: the global one, or a region's (with region_area_bounds).
+  double smallest = options.max_area > 0 ? options.max_area : 0;
+  if (options.region_area_bounds)
+    for (const Region& r : pslg.regions)
+      if (r.max_area > 0 && (smallest <= 0 || r.max_area < smallest)) smallest = r.max_area;
+  if (smallest > 0 && !pslg.vertices.empty()) {
     double x0 = pslg.vertices[0].x, x1 = x0, y0 = pslg.vertices[0].y, y1 = y0;
     for (const Point& p : pslg.vertices) {
       x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
       y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     }
-    // A mesh of triangles of area max_area/4 covering the bounding box, twice over.
-    double size_points = 8.0 * (x1 - x0) * (y1 - y0) / options.max_area;
+    // A mesh of triangles of area smallest/4 covering the bounding box, twice over.
+    double size_points = 8.0 * (x1 - x0) * (y1 - y0) / smallest;
     budget += static_cast<std::int64_t>(std::min(size_points, 4e9));
   }
   return budget;

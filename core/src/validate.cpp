@@ -53,6 +53,9 @@ Pslg detail::validate(const Pslg& input, bool split, std::vector<std::string>& w
   for (std::size_t h = 0; h < input.holes.size(); ++h)
     if (!finite(input.holes[h]))
       throw InputError(file, line_at(input.hole_lines, h), fmt::format("hole point {} has a coordinate that is not finite", h + 1));
+  for (std::size_t r = 0; r < input.regions.size(); ++r)
+    if (!finite(input.regions[r].at) || std::isnan(input.regions[r].max_area))
+      throw InputError(file, line_at(input.region_lines, r), fmt::format("region {} has a coordinate that is not finite or an area bound that is NaN", r + 1));
   for (std::size_t s = 0; s < input.segments.size(); ++s) {
     const Segment& seg = input.segments[s];
     if (seg.a < 0 || seg.b < 0 || static_cast<std::size_t>(seg.a) >= n || static_cast<std::size_t>(seg.b) >= n)

@@ -260,6 +260,22 @@ void check_geometry(Pslg& pslg, std::vector<std::string>& warnings) {
       flood(queue, kInHole);
     }
   }
+  // A region point with an area bound where no triangle is reached from it:
+  // the engines set nothing there (ALGORITHM.md section 2), as for hole points.
+  WarningSink useless_regions(warnings, "region point whose area bound applies to nothing");
+  for (std::size_t r = 0; r < pslg.regions.size(); ++r) {
+    if (!(pslg.regions[r].max_area > 0)) continue;
+    Cdt::Locate_type type;
+    int li = 0;
+    Fh f = cdt.locate(to_cgal(pslg.regions[r].at), type, li, hint);
+    const std::string here = where(file, line_at(pslg.region_lines, r));
+    const char* why = nullptr;
+    if (type == Cdt::VERTEX) why = "on a vertex";
+    else if (type == Cdt::EDGE && f->is_constrained(li)) why = "on a segment";
+    else if (type == Cdt::OUTSIDE_CONVEX_HULL || type == Cdt::OUTSIDE_AFFINE_HULL || f->info() == kOutside) why = "outside the domain";
+    else if (f->info() == kInHole) why = "in a hole";
+    if (why) useless_regions.add(fmt::format("{}: region point {} lies {}; its area bound applies to nothing", here, r + 1, why));
+  }
   bool any = false;
   for (Fh f : cdt.finite_face_handles()) any = any || f->info() == kInDomain;
   if (!any)

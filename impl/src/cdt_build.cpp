@@ -30,7 +30,7 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constrai
 }  // namespace
 
 TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership, std::size_t reserve_triangles,
-                          std::size_t reserve_vertices, std::int64_t* cocircular_ties) {
+                          std::size_t reserve_vertices, std::int64_t* cocircular_ties, bool regions) {
   Cdt cdt;
   {
     std::vector<std::pair<K::Point_2, int>> points;
@@ -93,12 +93,48 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
       if (all.t(ti).seg[i] < 0 && all.t(ti).nbr[i] >= 0) seed(nbr_tri(all.t(ti).nbr[i]));
   }
 
+  // Regions (Triangle's order): each region point, in file order, floods the
+  // domain triangles around it without crossing a constrained edge, overwriting
+  // what earlier regions set. A point in a removed triangle, on a constrained
+  // edge or on a vertex sets nothing (as a hole point removes nothing there).
+  std::vector<std::int32_t> region_of;
+  if (regions) {
+    region_of.assign(static_cast<std::size_t>(count), 0);
+    std::vector<int> pass(static_cast<std::size_t>(count), -1);
+    for (std::size_t r = 0; r < pslg.regions.size(); ++r) {
+      const int mark = static_cast<int>(r);
+      auto reach = [&](int ti) {
+        if (ti < 0 || removed[static_cast<std::size_t>(ti)] || pass[static_cast<std::size_t>(ti)] == mark) return;
+        pass[static_cast<std::size_t>(ti)] = mark;
+        region_of[static_cast<std::size_t>(ti)] = mark + 1;
+        stack.push_back(ti);
+      };
+      const Point& at = pslg.regions[r].at;
+      Cdt::Locate_type lt;
+      int li = 0;
+      auto f = cdt.locate(K::Point_2(at.x, at.y), lt, li);
+      if (lt == Cdt::FACE) {
+        reach(f->info());
+      } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
+        reach(f->info());
+        reach(f->neighbor(li)->info());
+      }
+      while (!stack.empty()) {
+        int ti = stack.back();
+        stack.pop_back();
+        for (int i = 0; i < 3; ++i)
+          if (all.t(ti).seg[i] < 0 && all.t(ti).nbr[i] >= 0) reach(nbr_tri(all.t(ti).nbr[i]));
+      }
+    }
+  }
+
   // Keep the domain, renumbered in the order CGAL listed it.
   std::vector<int> new_id(static_cast<std::size_t>(count), -1);
   int kept = 0;
   for (int ti = 0; ti < count; ++ti)
     if (!removed[static_cast<std::size_t>(ti)]) new_id[static_cast<std::size_t>(ti)] = kept++;
   TriMesh mesh;
+  if (regions) mesh.region.assign(1, 0);  // non-empty, so that reserve() covers it
   mesh.reserve(std::max(reserve_vertices, pslg.vertices.size()), std::max(reserve_triangles, static_cast<std::size_t>(kept)));
   mesh.pts = pslg.vertices;
   for (int ti = 0; ti < count; ++ti) {
@@ -117,6 +153,11 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
     mesh.tris.push_back(t);
   }
   mesh.stamp.assign(mesh.tris.size(), 0);
+  if (regions) {
+    mesh.region.clear();
+    for (int ti = 0; ti < count; ++ti)
+      if (!removed[static_cast<std::size_t>(ti)]) mesh.region.push_back(region_of[static_cast<std::size_t>(ti)]);
+  }
   if (cocircular_ties) {
     *cocircular_ties = 0;
     for (int ti = 0; ti < mesh.size(); ++ti) {

@@ -4,6 +4,7 @@
 // selection and insertion.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -89,7 +90,9 @@ class Refiner {
       : pslg_(pslg),
         opt_(options),
         mem_(make_membership(pslg)),
-        quality_(pslg, mem_, engine_sin2_threshold(options.min_angle_deg), options.max_area) {}
+        quality_(pslg, mem_, engine_sin2_threshold(options.min_angle_deg), options.max_area) {
+    if (options.region_area_bounds) quality_.use_region_bounds(pslg.regions);
+  }
 
   RefineResult run() {
     const auto start = Clock::now();
@@ -106,8 +109,26 @@ class Refiner {
     expected = std::min(expected, static_cast<double>(n) + static_cast<double>(budget) + 1);
     const auto vertices_guess = static_cast<std::size_t>(std::min(expected, 4e8));
     std::int64_t initial_ties = 0;
-    mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess, &initial_ties);
-    mem_.steiner.reserve(vertices_guess);
+    mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess, &initial_ties, opt_.region_area_bounds);
+    if (opt_.region_area_bounds) {
+      // Region bounds: the estimate from the initial triangles' areas over their bounds.
+      double more = 0;
+      for (int ti = 0; ti < mesh_.size(); ++ti) {
+        const double bound = quality_.twice_bound(mesh_, ti);
+        const FTri& f = mesh_.t(ti);
+        const Point &a = mesh_.p(f.v[0]), &b = mesh_.p(f.v[1]), &c = mesh_.p(f.v[2]);
+        if (bound > 0) more += 2.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / bound;
+      }
+      const double wanted = std::min(4.0 * static_cast<double>(n) + 4096 + more, static_cast<double>(n) + static_cast<double>(budget) + 1);
+      if (wanted > expected) {
+        const auto guess = static_cast<std::size_t>(std::min(wanted, 4e8));
+        mesh_.reserve(guess, 2 * guess);
+      }
+      expected = std::max(expected, wanted);
+    }
+    const auto vertices_reserved = static_cast<std::size_t>(std::min(expected, 4e8));
+    mem_.steiner.reserve(vertices_reserved);
+    const bool sized = quality_.sized();
 
     RefineResult result;
     RingQueue<Item> queue;
@@ -124,6 +145,7 @@ class Refiner {
       const Item item = queue.front();
       queue.pop_front();
       prefetch_ahead(queue);
+      bool first = true;
       while (still_there(mesh_, item)) {
         lepp_search(mesh_, item.tri, lepp);
         // Guards before the insertion (section 9).
@@ -140,6 +162,8 @@ class Refiner {
 
         ++result.lepp_searches;
         result.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
+        if (first && sized && quality_.too_big(mesh_, item.tri)) ++result.area_refined;
+        first = false;
         prefetch_around(lepp);
         const Choice choice = select_point(mesh_, lepp, opt_.method);
         TraceStep step;

@@ -4,6 +4,7 @@
 #pragma once
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "edge_order.h"
 #include "lepp/refine.h"
@@ -20,6 +21,32 @@ class Quality {
   struct Verdict {
     bool skinny = false, too_big = false;
   };
+
+  // Region area bounds (ALGORITHM.md section 4): twice the bound in force in
+  // each region, index 0 for triangles in none; 0 where there is no bound.
+  void use_region_bounds(const std::vector<Region>& regions) {
+    region_twice_.assign(1, twice_area_);
+    for (const Region& r : regions) {
+      const double twice = r.max_area > 0 ? 2 * r.max_area : 0;
+      region_twice_.push_back(twice > 0 && (twice_area_ <= 0 || twice < twice_area_) ? twice : twice_area_);
+    }
+  }
+  // Whether any triangle can be too big.
+  bool sized() const {
+    for (double t : region_twice_)
+      if (t > 0) return true;
+    return twice_area_ > 0;
+  }
+  // Twice the size bound of triangle ti (0: none).
+  double twice_bound(const TriMesh& m, int ti) const {
+    return m.region.empty() ? twice_area_ : region_twice_[static_cast<std::size_t>(m.region[static_cast<std::size_t>(ti)])];
+  }
+  bool too_big(const TriMesh& m, int ti) const {
+    const double bound = twice_bound(m, ti);
+    if (bound <= 0) return false;
+    const FTri& f = m.t(ti);
+    return area_above(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), bound);
+  }
 
   // Skinny iff cross^2 < S * |u|^2 |v|^2 for the two edges u, v at the smallest
   // angle, i.e. the two longest edges: their product of squared lengths is the
@@ -40,9 +67,9 @@ class Quality {
       sign = skinny_at(m.p(f.v[sh]), m.p(f.v[next3(sh)]), m.p(f.v[prev3(sh)]), s_) ? 1 : -1;
     }
     v.skinny = sign > 0;
-    if (twice_area_ > 0) {
-      int big = detail::filtered_sign(std::fabs(cross) - twice_area_, pc + twice_area_, 4);
-      v.too_big = big == 2 ? area_above(a, b, c, twice_area_) : big > 0;
+    if (const double bound = twice_bound(m, ti); bound > 0) {
+      int big = detail::filtered_sign(std::fabs(cross) - bound, pc + bound, 4);
+      v.too_big = big == 2 ? area_above(a, b, c, bound) : big > 0;
     }
     if (f.longest < 0) {
       // The longest of the three, from the lengths already at hand.
@@ -136,6 +163,7 @@ class Quality {
   const Pslg& pslg_;
   const SegmentMembership& mem_;
   double s_, twice_area_;
+  std::vector<double> region_twice_;
 };
 
 }  // namespace lepp::fast

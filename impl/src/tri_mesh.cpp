@@ -54,6 +54,7 @@ void TriMesh::reserve(std::size_t vertices, std::size_t triangles) {
   pts.reserve(vertices);
   tris.reserve(triangles);
   stamp.reserve(triangles);
+  if (!region.empty()) region.reserve(triangles);
   advise_huge_pages(pts);
   advise_huge_pages(tris);
   advise_huge_pages(stamp);
@@ -110,6 +111,7 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   }
   tris = {};
   stamp = {};
+  region = {};
   for (std::size_t v = 0; v < nv; ++v)
     std::sort(mesh.triangles.begin() + start[v], mesh.triangles.begin() + start[v + 1]);
   // Constrained edges: few; a plain sort in canonicalize's order.

@@ -76,6 +76,12 @@ struct TriMesh {
   // iff its slot's stamp is unchanged (a rewrite always destroys the old triangle).
   // A small array, so checking a stale queue entry costs no miss on tris.
   std::vector<std::uint32_t> stamp;
+  // Only with region area bounds (empty otherwise, so the splits below test one
+  // pointer pair): the region of each triangle, 0 for none, k + 1 for the PSLG's
+  // region k. A split's new slots take the region of the triangle they split (a
+  // split edge's two sides keep theirs); a flip never crosses a constrained edge,
+  // so both its triangles are in one region and each slot keeps its value.
+  std::vector<std::int32_t> region;
 
   const Point& p(int v) const { return pts[static_cast<std::size_t>(v)]; }
   FTri& t(int i) { return tris[static_cast<std::size_t>(i)]; }
@@ -94,6 +100,12 @@ struct TriMesh {
   void grow(std::size_t k) {
     tris.resize(tris.size() + k);
     stamp.resize(tris.size(), 0);
+  }
+  // Slot `to` (just grown) lies in the region of slot `from`.
+  void inherit_region(int from, int to) {
+    if (region.empty()) return;
+    region.resize(tris.size(), 0);
+    region[static_cast<std::size_t>(to)] = region[static_cast<std::size_t>(from)];
   }
 
   // Points the neighbour across (t, i) back at `code`.
@@ -160,6 +172,8 @@ inline void TriMesh::split_triangle(int ti, int p, int out[3]) {
   relink(old.nbr[0], nbr_code(t0, 0));
   relink(old.nbr[1], nbr_code(t1, 0));
   relink(old.nbr[2], nbr_code(t2, 0));
+  inherit_region(t0, t1);
+  inherit_region(t0, t2);
   out[0] = t0, out[1] = t1, out[2] = t2;
 }
 
@@ -178,6 +192,7 @@ inline int TriMesh::split_edge(int ti, int i, int p, std::int8_t segment, int ou
     put(t1, FTri{{p, c, a}, {nb, -1, nbr_code(t0, 1)}, {sb, segment, -1}, -1});
     relink(na, nbr_code(t0, 0));
     relink(nb, nbr_code(t1, 0));
+    inherit_region(t0, t1);
     out[0] = t0, out[1] = t1;
     return 2;
   }
@@ -198,6 +213,8 @@ inline int TriMesh::split_edge(int ti, int i, int p, std::int8_t segment, int ou
   relink(nb, nbr_code(t1, 0));
   relink(mb, nbr_code(n0, 0));
   relink(ma, nbr_code(n1, 0));
+  inherit_region(t0, t1);  // ti's side of the split edge
+  inherit_region(n0, n1);  // the neighbour's side: its own region across a segment
   out[0] = t0, out[1] = t1, out[2] = n0, out[3] = n1;
   return 4;
 }

@@ -100,6 +100,33 @@ void build_triangulation(const Pslg& pslg, Triangulation& tr) {
   mark_domain(tr);
 }
 
+void assign_regions(Triangulation& tr) {
+  Cdt& cdt = tr.cdt;
+  const auto& regions = tr.input->regions;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const int region = static_cast<int>(r) + 1;
+    std::set<FH> seen;
+    std::deque<FH> todo;
+    Cdt::Locate_type lt;
+    int li;
+    FH f = cdt.locate(CPoint(regions[r].at.x, regions[r].at.y), lt, li);
+    if (lt == Cdt::FACE) {
+      todo.push_back(f);
+    } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
+      todo.push_back(f);
+      todo.push_back(f->neighbor(li));
+    }
+    while (!todo.empty()) {
+      FH g = todo.front();
+      todo.pop_front();
+      if (cdt.is_infinite(g) || !g->info().in_domain || !seen.insert(g).second) continue;
+      g->info().region = region;
+      for (int i = 0; i < 3; ++i)
+        if (!g->is_constrained(i)) todo.push_back(g->neighbor(i));
+    }
+  }
+}
+
 Mesh extract_mesh(const Triangulation& tr) {
   Mesh mesh;
   mesh.vertices = tr.coords;

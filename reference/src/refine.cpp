@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <chrono>
 #include <deque>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -40,6 +42,17 @@ class Refiner {
     double floor = options.edge_floor >= 0 ? options.edge_floor : default_edge_floor(pslg);
     floor2_ = FT(floor) * FT(floor);
     build_triangulation(pslg, tr_);
+    // Twice the size bound of each region (index 0: no region), the smaller of
+    // the region's and max_area where both are set; none where neither is.
+    bounds_.push_back(options.max_area > 0 ? std::optional<FT>(twice_max_area_) : std::nullopt);
+    if (options.region_area_bounds) {
+      assign_regions(tr_);
+      for (const Region& r : pslg.regions) {
+        std::optional<FT> b = bounds_[0];
+        if (r.max_area > 0 && (!b || FT(r.max_area) * 2 < *b)) b = FT(r.max_area) * 2;
+        bounds_.push_back(b);
+      }
+    }
   }
 
   RefineResult run() {
@@ -57,6 +70,7 @@ class Refiner {
       Tri t = queue_.front();
       queue_.pop_front();
       FH f;
+      bool first = true;
       // "while t remains in tau": the triangle with t's three vertices.
       while (outcome == Outcome::Converged && exists(t, f)) {
         Lepp lepp = find_lepp(f);
@@ -70,6 +84,8 @@ class Refiner {
           break;
         }
         Selection s = select_point(lepp, options_.method);
+        if (first && too_big(f)) ++result_.area_refined;
+        first = false;
         ++result_.lepp_searches;
         result_.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
         std::string where = describe(t, lepp);  // before the insertion invalidates the faces
@@ -115,9 +131,14 @@ class Refiner {
 
   // ALGORITHM.md Section 4: bad = skinny or too big; processed unless skinny,
   // not too big and unimprovable.
+  bool too_big(FH f) const {
+    const std::optional<FT>& bound = bounds_[static_cast<std::size_t>(f->info().region)];
+    return bound && is_too_big(f, *bound);
+  }
+
   bool processed_bad(FH f) const {
     bool skinny = is_skinny(f, sin2_);
-    bool big = options_.max_area > 0 && is_too_big(f, twice_max_area_);
+    bool big = too_big(f);
     if (!skinny && !big) return false;
     if (big) return true;
     return !unimprovable(tr_, f, sin2_);
@@ -174,6 +195,7 @@ class Refiner {
 
   const RefineOptions& options_;
   FT sin2_, twice_max_area_, floor2_;
+  std::vector<std::optional<FT>> bounds_;  // by FaceInfo::region
   std::int64_t budget_;
   std::int64_t steiner_ = 0;
   Triangulation tr_;

@@ -84,18 +84,20 @@ namespace {
 // around v from the edge v->b (the direction a->b) to v->a lies the left side
 // of ab, then the right side. Flips never cross a constrained edge and reuse
 // both faces on one side, so the flags set here stay right through them.
-void set_domain_flags(Triangulation& tr, VH v, VH a, VH b, bool left_in, bool right_in) {
+// The regions likewise: every new face takes the region of the face it was cut
+// from (left, right: the two sides of a split constrained edge).
+void set_domain_flags(Triangulation& tr, VH v, VH a, VH b, FaceInfo left, FaceInfo right) {
   Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
   if (a == VH()) {
-    do fc->info().in_domain = true; while (++fc != done);
+    do fc->info() = left; while (++fc != done);
     return;
   }
   while (fc->vertex(Cdt::ccw(fc->index(v))) != b) ++fc;
   done = fc;
-  bool in = left_in;
+  FaceInfo side = left;
   do {
-    fc->info().in_domain = in;
-    if (fc->vertex(Cdt::cw(fc->index(v))) == a) in = right_in;  // crossing v->a to the right side
+    fc->info() = side;
+    if (fc->vertex(Cdt::cw(fc->index(v))) == a) side = right;  // crossing v->a to the right side
   } while (++fc != done);
 }
 
@@ -130,15 +132,16 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
   VH v;
   std::vector<int> segments;
   bool split = s.split_face != FH();
-  // Domain flags of the two sides of a split constrained edge AB: left of A->B, right.
-  bool left_in = false, right_in = false;
+  // Domain flags and regions of the two sides of a split constrained edge AB:
+  // left of A->B, right; of the face the point falls in otherwise (left).
+  FaceInfo left, right;
   VH a, b;
   if (split) {
     FH f = s.split_face;
     int i = s.split_index;
     a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));  // f is left of a->b
-    left_in = f->info().in_domain;
-    right_in = f->neighbor(i)->info().in_domain;
+    left = f->info();
+    right = f->neighbor(i)->info();
     auto e = edge_key(id(a), id(b));
     auto found = tr.segment_of_edge.find(e);
     if (found == tr.segment_of_edge.end())
@@ -159,6 +162,7 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
     if (lt == Cdt::OUTSIDE_CONVEX_HULL || lt == Cdt::OUTSIDE_AFFINE_HULL || !f->info().in_domain ||
         (lt == Cdt::EDGE && f->is_constrained(li)))
       throw std::logic_error("reference: the selected point is not inside the terminal quad");
+    left = f->info();  // on an unconstrained edge: both faces have the same
     v = cdt.Cdt::Ctr::insert(p, lt, f, li);
   }
   v->info().id = static_cast<int>(tr.vertex.size());
@@ -176,7 +180,7 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
         CGAL::orientation(fc->vertex(0)->point(), fc->vertex(1)->point(), fc->vertex(2)->point()) != CGAL::LEFT_TURN)
       throw std::logic_error("reference: insertion made a triangle that is not counter-clockwise");
   } while (++fc != done);
-  set_domain_flags(tr, v, split ? a : VH(), split ? b : VH(), left_in, right_in);
+  set_domain_flags(tr, v, split ? a : VH(), split ? b : VH(), left, right);
   restore_delaunay(tr, v);
   return v;
 }

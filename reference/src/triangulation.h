@@ -32,6 +32,7 @@ struct VertexInfo {
 };
 struct FaceInfo {
   bool in_domain = false;
+  int region = 0;  // with region area bounds: 0 none, k + 1 the PSLG's region k
 };
 
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
@@ -62,6 +63,11 @@ inline std::pair<int, int> edge_key(int a, int b) { return a < b ? std::make_pai
 // CDT of a validated PSLG inside a far bounding box (so that no input segment
 // is ever on the convex hull), domain flags set by Triangle's -p flood.
 void build_triangulation(const Pslg& pslg, Triangulation& tr);
+// Region of every domain face (FaceInfo::region): each region point, in file
+// order, floods the domain faces around it without crossing a constrained edge,
+// overwriting earlier regions (Triangle's order). A point outside the domain, on
+// a constrained edge or on a vertex sets nothing.
+void assign_regions(Triangulation& tr);
 // Domain triangles (CCW), input then Steiner vertices, tagged constrained edges; canonical.
 Mesh extract_mesh(const Triangulation& tr);
 // Unconstrained domain edges whose two triangles are cocircular.

@@ -19,7 +19,7 @@ enum class Method { Centroid, Midpoint };
 enum class QueueOrder { Fifo, Lifo };
 
 enum class Outcome {
-  Converged,      // every triangle has smallest angle >= theta (and area <= max_area)
+  Converged,      // every triangle has smallest angle >= theta (and area <= its size bound)
   Unimprovable,   // converged except for triangles listed as unimprovable (small input angles)
   SteinerBudget,  // stopped: the Steiner budget was used up
   EdgeFloor,      // stopped: an insertion made an edge shorter than the floor
@@ -40,6 +40,10 @@ struct RefineOptions {
   double min_angle_deg = 30;
   Method method = Method::Centroid;
   double max_area = 0;               // 0: no size bound (Triangle's -a)
+  // Also the area bounds of the PSLG's regions (Triangle's -a with no number):
+  // a triangle larger than the bound of the region it lies in is bad too
+  // (with max_area as well, the smaller bound applies). ALGORITHM.md section 4.
+  bool region_area_bounds = false;
   QueueOrder order = QueueOrder::Fifo;
   std::int64_t max_steiner = -1;     // -1: default_steiner_budget()
   double edge_floor = -1;            // -1: default_edge_floor()
@@ -80,6 +84,7 @@ struct RefineResult {
   std::int64_t cocircular_ties = 0;     // Delaunay decisions that met four cocircular points
   std::int64_t lepp_searches = 0;       // Lepp searches made
   std::int64_t lepp_triangles = 0;      // triangles visited by them (average Lepp size = ratio)
+  std::int64_t area_refined = 0;        // bad triangles refined that were too big (skinny or not)
   std::string stuck;                    // for a guard outcome: which triangle, its Lepp
   double seconds = 0;
 };

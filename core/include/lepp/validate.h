@@ -17,7 +17,9 @@ namespace lepp {
 //  - a vertex in the interior of a segment: the segment is split there, warning;
 //  - two segments crossing: error naming both segment numbers;
 //  - fewer than three non-collinear vertices: error;
-//  - a hole point outside the domain or on a segment: warning (it removes nothing).
+//  - a hole point outside the domain or on a segment: warning (it removes nothing);
+//  - a region point with an area bound outside the domain, in a hole, on a segment
+//    or on a vertex: warning (its bound applies to nothing).
 // Ids in the result are 0-based and dense; lines are kept for later messages.
 Pslg validate(const Pslg& input, std::vector<std::string>& warnings);
 
