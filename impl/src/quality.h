@@ -37,9 +37,10 @@ class Quality {
       if (t > 0) return true;
     return twice_area_ > 0;
   }
-  // Twice the size bound of triangle ti (0: none).
+  // Twice the size bound of triangle ti (0: none). The mesh has regions iff
+  // use_region_bounds() was called; testing our own table is the cheaper load.
   double twice_bound(const TriMesh& m, int ti) const {
-    return m.region.empty() ? twice_area_ : region_twice_[static_cast<std::size_t>(m.region[static_cast<std::size_t>(ti)])];
+    return region_twice_.empty() ? twice_area_ : region_twice_[static_cast<std::size_t>(m.region[static_cast<std::size_t>(ti)])];
   }
   bool too_big(const TriMesh& m, int ti) const {
     const double bound = twice_bound(m, ti);
