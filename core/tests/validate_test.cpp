@@ -173,6 +173,29 @@ TEST(Validate, HolePointsThatRemoveNothingWarn) {
   EXPECT_TRUE(mentions(warnings, "hole point 3 lies on vertex 1"));
 }
 
+// A region point whose area bound reaches no triangle warns; one without a
+// bound (attribute only) or inside the domain does not; a NaN is an error.
+TEST(Validate, RegionPointsWhoseBoundAppliesToNothingWarn) {
+  Pslg p = square(4);
+  p.vertices.insert(p.vertices.end(), {{1, 1}, {2, 1}, {1, 2}});
+  p.segments.insert(p.segments.end(), {{4, 5}, {5, 6}, {6, 4}});
+  p.holes = {{1.2, 1.2}};
+  p.regions = {Region{{5, 5}, 0, 1},  Region{{2, 0}, 0, 1},  Region{{0, 0}, 0, 1},  Region{{1.3, 1.2}, 0, 1},
+               Region{{5, 5}, 0, -1}, Region{{3, 3}, 0, 1}};
+  std::vector<std::string> warnings;
+  validate(p, warnings);
+  EXPECT_TRUE(mentions(warnings, "region point 1 lies outside the domain"));
+  EXPECT_TRUE(mentions(warnings, "region point 2 lies on a segment"));
+  EXPECT_TRUE(mentions(warnings, "region point 3 lies on a vertex"));
+  EXPECT_TRUE(mentions(warnings, "region point 4 lies in a hole"));
+  EXPECT_FALSE(mentions(warnings, "region point 5"));
+  EXPECT_FALSE(mentions(warnings, "region point 6"));
+  p.regions = {Region{{3, 3}, 0, std::nan("")}};
+  EXPECT_NE(error_of(p).find("region 1"), std::string::npos);
+  p.regions = {Region{{std::numeric_limits<double>::infinity(), 3}, 0, 1}};
+  EXPECT_NE(error_of(p).find("not finite"), std::string::npos);
+}
+
 TEST(Validate, HoleInsideAnInnerRegionIsQuiet) {
   Pslg p = square(4);
   p.vertices.insert(p.vertices.end(), {{1, 1}, {2, 1}, {1, 2}});

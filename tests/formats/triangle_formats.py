@@ -25,6 +25,7 @@ CASES = [
     ("open-boundary.poly", ["--convex-hull"], "-pc", True),
     ("crossing.poly", ["--split-crossings"], "-p", True),
     ("regions.poly", [], "-pA", True),
+    ("region-areas.poly", [], "-pA", True),
     ("zero-based.poly", [], "-p", True),
     ("attributes.poly", [], "-p", True),
 ]
