@@ -12,19 +12,9 @@ Exit 0 all pass, 1 a failure (each printed).
 """
 import os
 import shutil
-import subprocess
 import sys
 
-failures = []
-
-
-def fail(what):
-    failures.append(what)
-    print("FAIL:", what)
-
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True)
+from formats_check import fail, failures, run
 
 
 def mesh_files(prefix):

@@ -24,37 +24,17 @@ triangle-wasm, the Triangle side is skipped (said on stdout).
 """
 import json
 import os
-import subprocess
 import sys
 from fractions import Fraction
 
+from formats_check import fail, failures, run, tokens
+
 FILES = ["regions.poly", "region-areas.poly"]
-
-failures = []
-
-
-def fail(what):
-    failures.append(what)
-    print("FAIL:", what)
-
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True)
-
-
-def rows(path):
-    out = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].split()
-            if line:
-                out.append(line)
-    return out
 
 
 def read_regions(poly):
     """The region lines of an input .poly: [(x, y, bound)] (four fields: the one value is the bound)."""
-    r = rows(poly)
+    r = tokens(poly)
     nv = int(r[0][0])
     at = 1 + nv
     ns = int(r[at][0])
@@ -73,13 +53,13 @@ def read_regions(poly):
 
 def read_mesh(prefix):
     """Vertices (float pairs), triangles (index triples), segment edges (frozensets)."""
-    node = rows(prefix + ".node")
+    node = tokens(prefix + ".node")
     n = int(node[0][0])
     first = int(node[1][0])
     pts = [(float(r[1]), float(r[2])) for r in node[1:1 + n]]
-    ele = rows(prefix + ".ele")
+    ele = tokens(prefix + ".ele")
     tris = [tuple(int(r[k]) - first for k in (1, 2, 3)) for r in ele[1:1 + int(ele[0][0])]]
-    poly = rows(prefix + ".poly")
+    poly = tokens(prefix + ".poly")
     skip = int(poly[0][0])
     ns = int(poly[1 + skip][0])
     segs = {frozenset((int(r[1]) - first, int(r[2]) - first)) for r in poly[2 + skip:2 + skip + ns]}

@@ -14,8 +14,9 @@ usage: triangle_formats.py LEPP NODE SOURCE_DIR SCRATCH_DIR
 Exit 0 all pass, 1 a failure (each printed), 77 triangle-wasm missing.
 """
 import os
-import subprocess
 import sys
+
+from formats_check import fail, failures, run, tokens
 
 # file, lepp domain options, Triangle switches for the same domain, same mesh expected
 CASES = [
@@ -34,27 +35,6 @@ REJECTED_WITHOUT = {
     "open-boundary.poly": "--convex-hull",
     "crossing.poly": "--split-crossings",
 }
-
-failures = []
-
-
-def fail(what):
-    failures.append(what)
-    print("FAIL:", what)
-
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True)
-
-
-def tokens(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].split()
-            if line:
-                rows.append(line)
-    return rows
 
 
 def read_mesh(prefix):
