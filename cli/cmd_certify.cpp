@@ -24,6 +24,8 @@ struct CertifyArgs {
   bool no_theorem2 = false;
   bool json = false;
   bool exempt = false;
+  double max_area = 0;
+  bool region_areas = false;
   std::size_t max_listed = 50;
   DomainOptions domain;
 };
@@ -44,7 +46,8 @@ nlohmann::json to_json(const certify::Report& r, std::size_t max_listed) {
                           {"edges", v.edges},
                           {"vertices", v.vertices},
                           {"points", points},
-                          {"segment", v.segment}});
+                          {"segment", v.segment},
+                          {"region", v.region}});
   }
   nlohmann::json unimprovable = nlohmann::json::array();
   for (const UnimprovableTriangle& u : r.unimprovable_accepted)
@@ -59,6 +62,9 @@ nlohmann::json to_json(const certify::Report& r, std::size_t max_listed) {
   nlohmann::json exempt = nlohmann::json::array();
   for (std::size_t i = 0; i < r.exempt_triangles.size() && i < max_listed; ++i)
     exempt.push_back({{"triangle", r.exempt_triangles[i]}, {"small_angle", r.exempt_angle[i]}});
+  nlohmann::json regions = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.region_places.size(); ++i)
+    regions.push_back({{"region", i}, {"place", certify::to_string(r.region_places[i])}, {"triangles", r.region_triangles[i]}});
   return {{"certified", r.certified()},
           {"min_angle_checked", r.min_angle_deg},
           {"statistics",
@@ -82,7 +88,9 @@ nlohmann::json to_json(const certify::Report& r, std::size_t max_listed) {
           {"unimprovable_accepted", unimprovable},
           {"small_input_angles", angles},
           {"exempt_count", r.exempt_count},
-          {"exempt_triangles", exempt}};
+          {"exempt_triangles", exempt},
+          {"size_bound",
+           {{"max_area", r.max_area}, {"region_areas", r.region_area_bounds}, {"triangles_checked", r.area_checked}, {"regions", regions}}}};
 }
 
 int run_certify(const CertifyArgs& args) {
@@ -107,6 +115,8 @@ int run_certify(const CertifyArgs& args) {
   options.theorem2 = !args.no_theorem2;
   options.max_listed_per_reason = args.max_listed;
   options.exempt_small_input_angles = args.exempt;
+  options.max_area = args.max_area;
+  options.region_area_bounds = args.region_areas;
   const certify::Report report = certify::certify(input, mesh, options);
   if (args.json) {
     nlohmann::json j = to_json(report, args.max_listed);
@@ -122,7 +132,7 @@ int run_certify(const CertifyArgs& args) {
 
 void add_certify_command(CLI::App& app, int& status) {
   auto args = std::make_shared<CertifyArgs>();
-  auto* cmd = app.add_subcommand("certify", "Check a mesh of a .poly file exactly (topology, input, constraints, Delaunay, angles, Theorem 2)");
+  auto* cmd = app.add_subcommand("certify", "Check a mesh of a .poly file exactly (topology, input, constraints, Delaunay, angles, Theorem 2, size bounds)");
   cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set, or a bare prefix X (X.poly, else X.node)")->required();
   cmd->add_option("mesh", args->mesh, "Mesh prefix: reads PREFIX.node, PREFIX.ele, PREFIX.poly and PREFIX.unimprovable if present")
       ->required();
@@ -136,6 +146,12 @@ void add_certify_command(CLI::App& app, int& status) {
   cmd->add_flag("--exempt-small-input-angles", args->exempt,
                 "Triangles below --min-angle whose shortest edge lies near an input angle below 60 degrees are exempt, "
                 "counted apart (docs/CERTIFIER.md: the rule depends only on the input and the mesh)");
+  cmd->add_option("--max-area", args->max_area,
+                  "Every triangle's area must be <= this (as refine --max-area, Triangle's -a X; exact)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--region-areas", args->region_areas,
+                "Every triangle's area must be <= the bound of its region in the .poly (as refine --region-areas, "
+                "Triangle's -a); with --max-area too, the smaller bound applies");
   cmd->add_flag("--convex-hull", args->domain.convex_hull,
                 "The domain has the convex hull's edges as segments (as refine --convex-hull, Triangle's -c)");
   cmd->add_flag("--split-crossings", args->domain.split_crossings,

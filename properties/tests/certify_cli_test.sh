@@ -40,4 +40,30 @@ for engine in reference fast; do
   "$lepp" certify "$src/properties/tests/data/small_angles_apex_chain.poly" "$dir/c" > "$dir/out"; s=$?
   [ $s -eq 0 ] || { cat "$dir/out"; fail "apex chain ($engine): exit $s"; }
 done
+# Size bounds (docs/CERTIFIER.md section 7): lepp's mesh made with --region-areas certifies
+# with it; the mesh made without is rejected for area-above-bound, with --region-areas
+# (naming the region) and with --max-area (in the JSON too).
+ra="$src/corpus/triangle-formats/region-areas.poly"
+"$lepp" refine "$ra" -o "$dir/ra" --region-areas -q > /dev/null || fail "refine --region-areas"
+"$lepp" refine "$ra" -o "$dir/rn" -q > /dev/null 2>&1 || fail "refine without the bounds"
+"$lepp" certify "$ra" "$dir/ra" --min-angle 30 --region-areas > "$dir/out" 2> /dev/null; s=$?
+[ $s -eq 0 ] || { cat "$dir/out"; fail "mesh with the region bounds: exit $s"; }
+grep -q '^size bound: [1-9][0-9]* triangles checked, the bounds of 5 regions' "$dir/out" || { cat "$dir/out"; fail "no size bound line"; }
+grep -q '^  region 4: in-hole, applies to nothing' "$dir/out" || { cat "$dir/out"; fail "region in the hole not said"; }
+"$lepp" certify "$ra" "$dir/rn" --min-angle 30 --region-areas > "$dir/out" 2> /dev/null; s=$?
+[ $s -eq 1 ] || { cat "$dir/out"; fail "mesh without the region bounds: exit $s"; }
+grep -q '^area-above-bound: triangle [0-9]* .* above the bound 0.05 of region 1 (line 41 of ' "$dir/out" || { cat "$dir/out"; fail "region violation not listed"; }
+"$lepp" certify "$ra" "$dir/rn" --max-area 0.2 --max-listed 2 --json > "$dir/out" 2> /dev/null; s=$?
+[ $s -eq 1 ] || fail "mesh without --max-area: exit $s"
+python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert not j["certified"]
+assert j["size_bound"]["max_area"] == 0.2 and j["size_bound"]["triangles_checked"] > 2, j["size_bound"]
+assert j["violation_counts"]["area-above-bound"] == j["statistics"]["triangles"], j["violation_counts"]
+listed = [v for v in j["violations"] if v["reason"] == "area-above-bound"]
+assert len(listed) == 2 and listed[0]["check"] == "size-bound" and listed[0]["region"] == -1, listed
+' "$dir/out" || { cat "$dir/out"; fail "json size bound"; }
+"$lepp" certify "$ra" "$dir/ra" --max-area 0.2 --region-areas > /dev/null 2>&1; s=$?
+[ $s -eq 1 ] || fail "mesh with the region bounds, checked with a smaller global one too: exit $s"
 echo "OK"

@@ -22,8 +22,8 @@ namespace {
 using certify::Check;
 using certify::Reason;
 
-constexpr int kChecks = static_cast<int>(Check::Theorem2) + 1;               // the last Check
-constexpr int kReasons = static_cast<int>(Reason::TerminalAngleOver120) + 1;  // the last Reason
+constexpr int kChecks = static_cast<int>(Check::SizeBound) + 1;              // the last Check
+constexpr int kReasons = static_cast<int>(Reason::AreaAboveBound) + 1;        // the last Reason
 
 TEST(CertifyNames, EveryCheckHasItsOwnName) {
   std::set<std::string> names;
@@ -55,6 +55,7 @@ TEST(CertifyNames, EveryReasonHasItsOwnNameAndBelongsToACheck) {
   EXPECT_EQ(certify::check_of(Reason::NotLocallyDelaunay), Check::Delaunay);
   EXPECT_EQ(certify::check_of(Reason::UnimprovableRuleFails), Check::MinAngle);
   EXPECT_EQ(certify::check_of(Reason::TerminalAngleOver120), Check::Theorem2);
+  EXPECT_EQ(certify::check_of(Reason::AreaAboveBound), Check::SizeBound);
 }
 
 TEST(CertifyReport, CountOfAReportNotFilledIsZero) {

@@ -13,7 +13,8 @@ region's bound, exactly (rational arithmetic on the doubles). Triangle computes
 areas in floating point, so its triangles get a relative slack of 1e-12.
 
 Also: the fast and reference engines write the same mesh; lepp's mesh
-certifies; --json counts the triangles refined for area; without
+certifies with `lepp certify --region-areas` (the certifier's own flood and
+exact areas), as Triangle's does, and the mesh made without the bounds does not; --json counts the triangles refined for area; without
 --region-areas, lepp warns naming the option and its mesh fails the check (so
 the check can fail). Triangle's point counts differ (another algorithm): only
 that both honour the bounds is compared.
@@ -163,9 +164,9 @@ def main():
         r = run([lepp, "refine", path, "-o", stem + "-reference", "--region-areas", "--engine", "reference", "-q"])
         if r.returncode != 0 or not same_files(stem, stem + "-reference"):
             fail(f"{name}: the reference engine's mesh differs (exit {r.returncode})")
-        c = run([lepp, "certify", path, stem, "--min-angle", "30"])
+        c = run([lepp, "certify", path, stem, "--min-angle", "30", "--region-areas"])
         if c.returncode != 0:
-            fail(f"{name}: lepp certify exit {c.returncode}: {c.stdout[-600:]}")
+            fail(f"{name}: lepp certify --region-areas exit {c.returncode}: {c.stdout[-600:]}")
         # Without the option: a warning naming it, and a mesh the check rejects.
         r = run([lepp, "refine", path, "-o", stem + "-ignored", "-q"])
         if r.returncode != 0 or "--region-areas" not in r.stderr:
@@ -174,6 +175,9 @@ def main():
         print(f"  without --region-areas: {len(bad)} triangles above their region's bound")
         if not bad:
             fail(f"{name}: the check accepts the mesh made without the bounds (it cannot fail here)")
+        c = run([lepp, "certify", path, stem + "-ignored", "--region-areas"])
+        if c.returncode != 1 or "area-above-bound" not in c.stdout:
+            fail(f"{name}: lepp certify --region-areas accepts the mesh made without the bounds (exit {c.returncode})")
         # Triangle -pq30a: the same bounds, honoured its own way.
         if not triangle:
             continue
@@ -189,6 +193,10 @@ def main():
         print(f"  Triangle -pq30a: {t.stdout.strip()}, triangles per region {counts}, {len(bad)} above their bound")
         if bad:
             fail(f"{name}: Triangle -pq30a left {len(bad)} triangles above their region's bound (the checker's reading differs?)")
+        # The certifier decides every area exactly (no slack): Triangle's mesh passes it too.
+        c = run([lepp, "certify", path, stem + "-triangle", "--min-angle", "30", "--region-areas"])
+        if c.returncode != 0:
+            fail(f"{name}: lepp certify --region-areas rejects Triangle's -pq30a mesh (exit {c.returncode}): {c.stdout[-600:]}")
     if not triangle:
         print("Triangle not compared (no node or no triangle-wasm)")
     print(f"{len(FILES)} files, {len(failures)} failures")

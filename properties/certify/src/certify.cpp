@@ -22,7 +22,7 @@
 namespace lepp::certify {
 namespace {
 
-constexpr std::size_t kReasons = static_cast<std::size_t>(Reason::TerminalAngleOver120) + 1;
+constexpr std::size_t kReasons = static_cast<std::size_t>(Reason::AreaAboveBound) + 1;
 
 std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
@@ -68,6 +68,8 @@ class Certifier {
     if (opt_.exempt_small_input_angles) report_.small_angles = small_input_angles(pslg_, domain_);
     if (opt_.min_angle_deg > 0) check_angles();
     if (opt_.theorem2) check_theorem2();
+    if (opt_.region_area_bounds) assign_regions();
+    if (opt_.max_area > 0 || opt_.region_area_bounds) check_area_bounds();
     compute_statistics();
   }
 
@@ -759,6 +761,176 @@ class Certifier {
                {h / 3, g / 3}, {{a, b}}, {a, b, c}, {}, -1});
         }
       }
+    }
+  }
+
+  // --- 7. Size bounds -----------------------------------------------------------
+  // The lowest-index CCW triangle whose closed interior holds q, and how many of its
+  // edges q lies on; triangle -1 when none holds it (a gap, reported elsewhere).
+  struct Location {
+    int triangle = -1;
+    int zeros = 0;    // 0 strictly inside, 1 on an edge, 2 at a vertex
+    int corner = -1;  // on an edge: its half-edge index i (T[i] -> T[i+1]); at a vertex: the vertex's index i
+  };
+  Location locate(const Point& q) const {
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      const Tri& x = T(t);
+      const Point &a = P(x[0]), &b = P(x[1]), &c = P(x[2]);
+      if (q.x < std::min({a.x, b.x, c.x}) || q.x > std::max({a.x, b.x, c.x}) || q.y < std::min({a.y, b.y, c.y}) ||
+          q.y > std::max({a.y, b.y, c.y}))
+        continue;
+      if (exact::orient(a, b, c) <= 0) continue;
+      std::array<int, 3> o{};
+      bool inside = true;
+      for (int i = 0; i < 3 && inside; ++i) {
+        o[static_cast<std::size_t>(i)] = exact::orient(P(x[static_cast<std::size_t>(i)]), P(x[static_cast<std::size_t>((i + 1) % 3)]), q);
+        inside = o[static_cast<std::size_t>(i)] >= 0;
+      }
+      if (!inside) continue;
+      Location l{static_cast<int>(t), 0, -1};
+      for (int i = 0; i < 3; ++i)
+        if (o[static_cast<std::size_t>(i)] == 0) ++l.zeros;
+      if (l.zeros == 1) {
+        for (int i = 0; i < 3; ++i)
+          if (o[static_cast<std::size_t>(i)] == 0) l.corner = i;
+      } else if (l.zeros == 2) {
+        // Edges i and i+1 meet at vertex i+1 (edge i runs T[i] -> T[i+1]).
+        for (int i = 0; i < 3; ++i)
+          if (o[static_cast<std::size_t>(i)] == 0 && o[static_cast<std::size_t>((i + 1) % 3)] == 0) l.corner = (i + 1) % 3;
+      }
+      return l;
+    }
+    return {};
+  }
+
+  // The half-edge x -> y of a valid triangle, or -1.
+  int half_edge(int x, int y) const {
+    for (std::size_t h = 0; h < twin_.size(); ++h)
+      if (tri_ok_[h / 3] && from(static_cast<int>(h)) == x && to(static_cast<int>(h)) == y) return static_cast<int>(h);
+    return -1;
+  }
+
+  // A region point the mesh puts on a chain of segment s (at its vertex v, or on its
+  // edge from chain[k] to chain[k + 1]) while the input has it off the segment (a chain
+  // vertex rounded off the line): the triangle on the point's side of the segment.
+  int seed_beside_chain(int s, std::size_t k, const Point& q) const {
+    const Segment& seg = pslg_.segments[static_cast<std::size_t>(s)];
+    const int side = exact::orient(pslg_.vertices[static_cast<std::size_t>(seg.a)], pslg_.vertices[static_cast<std::size_t>(seg.b)], q);
+    const std::vector<int>& chain = chains_[static_cast<std::size_t>(s)];
+    if (side == 0 || k + 1 >= chain.size()) return -1;
+    // Half-edge x -> y has its triangle on its left: the left side of a -> b.
+    const int h = side > 0 ? half_edge(chain[k], chain[k + 1]) : half_edge(chain[k + 1], chain[k]);
+    return h < 0 ? -1 : h / 3;
+  }
+
+  // The triangles a region point floods from (docs/CERTIFIER.md section 7).
+  std::vector<int> region_seeds(const Point& q) const {
+    const Location l = locate(q);
+    if (l.triangle < 0) return {};
+    const Tri& x = T(static_cast<std::size_t>(l.triangle));
+    if (l.zeros == 1) {
+      const int a = x[static_cast<std::size_t>(l.corner)], b = x[static_cast<std::size_t>((l.corner + 1) % 3)];
+      auto it = chain_edge_.find(edge_key(a, b));
+      if (it == chain_edge_.end()) return {l.triangle};  // an unconstrained edge: the flood crosses it
+      const std::vector<int>& chain = chains_[static_cast<std::size_t>(it->second)];
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+        if (edge_key(chain[k], chain[k + 1]) == it->first) {
+          const int seed = seed_beside_chain(it->second, k, q);
+          return seed < 0 ? std::vector<int>{} : std::vector<int>{seed};
+        }
+      return {};
+    }
+    if (l.zeros == 2) {
+      const int v = x[static_cast<std::size_t>(l.corner)];
+      if (mesh_to_input_[static_cast<std::size_t>(v)] >= 0) return {};  // an input vertex: nothing (and see InputVertexMoved)
+      const int s = vertex_segment_[static_cast<std::size_t>(v)];
+      if (s >= 0) {
+        const std::vector<int>& chain = chains_[static_cast<std::size_t>(s)];
+        const std::size_t k = static_cast<std::size_t>(std::find(chain.begin(), chain.end(), v) - chain.begin());
+        const int seed = seed_beside_chain(s, k, q);
+        return seed < 0 ? std::vector<int>{} : std::vector<int>{seed};
+      }
+      std::vector<int> fan;  // a Steiner vertex off every segment: its triangles, one region
+      for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
+        if (tri_ok_[t] && (T(t)[0] == v || T(t)[1] == v || T(t)[2] == v)) fan.push_back(static_cast<int>(t));
+      return fan;
+    }
+    return {l.triangle};
+  }
+
+  // Each region point, in file order, floods the mesh across edges on no segment chain,
+  // overwriting earlier regions (Triangle's order, ALGORITHM.md section 2).
+  void assign_regions() {
+    const std::size_t n = pslg_.regions.size();
+    report_.region_places = domain_.region_places;
+    report_.triangle_region.assign(mesh_.triangles.size(), -1);
+    std::vector<int> stamp(mesh_.triangles.size(), -1);
+    for (std::size_t r = 0; r < n; ++r) {
+      if (domain_.region_places[r] != RegionPlace::Floods) continue;
+      std::vector<int> todo = region_seeds(pslg_.regions[r].at);
+      for (int t : todo) stamp[static_cast<std::size_t>(t)] = static_cast<int>(r);
+      while (!todo.empty()) {
+        const int t = todo.back();
+        todo.pop_back();
+        report_.triangle_region[static_cast<std::size_t>(t)] = static_cast<int>(r);
+        for (int i = 0; i < 3; ++i) {
+          const std::size_t h = static_cast<std::size_t>(3 * t + i);
+          const int g = twin_[h];
+          if (g < 0 || constrained_half_[h] || stamp[static_cast<std::size_t>(g / 3)] == static_cast<int>(r)) continue;
+          stamp[static_cast<std::size_t>(g / 3)] = static_cast<int>(r);
+          todo.push_back(g / 3);
+        }
+      }
+    }
+    report_.region_triangles.assign(n, 0);
+    for (int r : report_.triangle_region)
+      if (r >= 0) ++report_.region_triangles[static_cast<std::size_t>(r)];
+  }
+
+  static bool is_bound(double b) { return b > 0 && std::isfinite(b); }
+
+  // |orient(a, b, c)| > 2 * bound, exactly: the doubled area against twice the bound.
+  static bool area_above(const Point& a, const Point& b, const Point& c, double bound) {
+    return exact::sign([&](auto z) -> decltype(z) {
+             using NT = decltype(z);
+             NT det = (NT(b.x) - NT(a.x)) * (NT(c.y) - NT(a.y)) - (NT(b.y) - NT(a.y)) * (NT(c.x) - NT(a.x));
+             return CGAL::abs(det) - (NT(bound) + NT(bound));
+           }) > 0;
+  }
+
+  std::string region_text(int r) const {
+    const std::size_t i = static_cast<std::size_t>(r);
+    const int line = i < pslg_.region_lines.size() ? pslg_.region_lines[i] : 0;
+    return line > 0 ? fmt::format("region {} (line {} of {})", r, line, pslg_.source.empty() ? "the input" : pslg_.source)
+                    : fmt::format("region {}", r);
+  }
+
+  void check_area_bounds() {
+    report_.max_area = is_bound(opt_.max_area) ? opt_.max_area : 0;
+    report_.region_area_bounds = opt_.region_area_bounds;
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      const int r = opt_.region_area_bounds ? report_.triangle_region[t] : -1;
+      const double regional = r >= 0 ? pslg_.regions[static_cast<std::size_t>(r)].max_area : 0;
+      // The smaller bound applies; on a tie, the region's is named.
+      const bool use_region = is_bound(regional) && (report_.max_area <= 0 || regional <= report_.max_area);
+      const double bound = use_region ? regional : report_.max_area;
+      if (bound <= 0) continue;
+      ++report_.area_checked;
+      const Tri& x = T(t);
+      if (!area_above(P(x[0]), P(x[1]), P(x[2]), bound)) continue;
+      const Point &a = P(x[0]), &b = P(x[1]), &c = P(x[2]);
+      const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
+      const std::string whose = use_region ? fmt::format("the bound {} of {}", bound, region_text(r))
+                                           : fmt::format("the global bound {} (--max-area){}", bound,
+                                                         r >= 0 ? ", in " + region_text(r)
+                                                         : opt_.region_area_bounds ? std::string(", in no region") : std::string());
+      Violation v{Reason::AreaAboveBound,
+                  fmt::format("{} has area about {}, above {} (exactly: doubled area > 2 x bound)", tri_text(t), area, whose),
+                  {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1};
+      v.region = r;
+      add(std::move(v));
     }
   }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "expected_domain.h"
 
+#include <cmath>
 #include <queue>
 #include <stdexcept>
 #include <utility>
@@ -15,23 +16,36 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
-using Fbb = CGAL::Triangulation_face_base_with_info_2<char, K>;  // 1: removed (exterior or hole)
+using Fbb = CGAL::Triangulation_face_base_with_info_2<char, K>;  // 1: removed, exterior; 2: removed, hole
 using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 
-void flood(Cdt& cdt, std::queue<Cdt::Face_handle>& queue) {
+void flood(Cdt& cdt, std::queue<Cdt::Face_handle>& queue, char mark) {
   while (!queue.empty()) {
     Cdt::Face_handle f = queue.front();
     queue.pop();
     for (int i = 0; i < 3; ++i) {
       Cdt::Face_handle n = f->neighbor(i);
       if (n->info() == 0 && !cdt.is_constrained(Cdt::Edge(f, i))) {
-        n->info() = 1;
+        n->info() = mark;
         queue.push(n);
       }
     }
   }
+}
+
+// The engines' rule for a region point (ALGORITHM.md section 2), on this CDT.
+RegionPlace region_place(const Cdt& cdt, const Point& at) {
+  if (!std::isfinite(at.x) || !std::isfinite(at.y)) return RegionPlace::Outside;
+  Cdt::Locate_type type;
+  int li = 0;
+  Cdt::Face_handle f = cdt.locate(K::Point_2(at.x, at.y), type, li);
+  if (type == Cdt::VERTEX) return RegionPlace::OnVertex;
+  if (type == Cdt::EDGE && cdt.is_constrained(Cdt::Edge(f, li))) return RegionPlace::OnSegment;
+  if (type != Cdt::FACE && type != Cdt::EDGE) return RegionPlace::Outside;
+  if (cdt.is_infinite(f) || f->info() == 1) return RegionPlace::Outside;
+  return f->info() == 2 ? RegionPlace::InHole : RegionPlace::Floods;
 }
 
 }  // namespace
@@ -49,6 +63,7 @@ ExpectedDomain expected_domain(const Pslg& pslg) {
   for (const Segment& s : pslg.segments)
     cdt.insert_constraint(handle[static_cast<std::size_t>(s.a)], handle[static_cast<std::size_t>(s.b)]);
 
+  ExpectedDomain d;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = 0;
   std::queue<Cdt::Face_handle> queue;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
@@ -56,7 +71,7 @@ ExpectedDomain expected_domain(const Pslg& pslg) {
       f->info() = 1;
       queue.push(f);
     }
-  flood(cdt, queue);
+  flood(cdt, queue, 1);
   for (const Point& h : pslg.holes) {
     Cdt::Locate_type type;
     int li = 0;
@@ -64,13 +79,13 @@ ExpectedDomain expected_domain(const Pslg& pslg) {
     // Inside a triangle, or on an unconstrained edge; on a vertex or a segment it removes nothing.
     bool removes = type == Cdt::FACE || (type == Cdt::EDGE && !cdt.is_constrained(Cdt::Edge(f, li)));
     if (removes && f->info() == 0) {
-      f->info() = 1;
+      f->info() = 2;
       queue.push(f);
-      flood(cdt, queue);
+      flood(cdt, queue, 2);
     }
   }
+  for (const Region& r : pslg.regions) d.region_places.push_back(region_place(cdt, r.at));
 
-  ExpectedDomain d;
   d.vertex_in_domain.assign(pslg.vertices.size(), 0);
   long faces = 0, edges = 0, vertices = 0;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {

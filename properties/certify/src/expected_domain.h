@@ -5,6 +5,7 @@
 #pragma once
 #include <vector>
 
+#include "lepp/certify.h"
 #include "lepp/pslg.h"
 
 namespace lepp::certify {
@@ -14,6 +15,9 @@ struct ExpectedDomain {
   std::vector<char> vertex_in_domain;           // per input vertex: on some domain triangle
   std::vector<unsigned char> segment_sides;     // per segment: Left | Right when that side is domain
   long euler = 0;                               // V - E + F of the domain triangles
+  // Per region point: where it lies in the input's CDT, after the holes (the
+  // engines' rule, ALGORITHM.md section 2): only Floods sets a region.
+  std::vector<RegionPlace> region_places;
 };
 
 // pslg must be validated: every segment is then one edge of the CDT.

@@ -33,6 +33,7 @@ Check check_of(Reason reason) {
     case Reason::UnimprovableNotInMesh:
     case Reason::UnimprovableRuleFails: return Check::MinAngle;
     case Reason::TerminalAngleOver120: return Check::Theorem2;
+    case Reason::AreaAboveBound: return Check::SizeBound;
   }
   return Check::Topology;
 }
@@ -45,6 +46,7 @@ const char* to_string(Check check) {
     case Check::Delaunay: return "delaunay";
     case Check::MinAngle: return "min-angle";
     case Check::Theorem2: return "theorem-2";
+    case Check::SizeBound: return "size-bound";
   }
   return "?";
 }
@@ -74,6 +76,18 @@ const char* to_string(Reason reason) {
     case Reason::UnimprovableNotInMesh: return "unimprovable-not-in-mesh";
     case Reason::UnimprovableRuleFails: return "unimprovable-rule-fails";
     case Reason::TerminalAngleOver120: return "terminal-angle-over-120";
+    case Reason::AreaAboveBound: return "area-above-bound";
+  }
+  return "?";
+}
+
+const char* to_string(RegionPlace place) {
+  switch (place) {
+    case RegionPlace::Floods: return "floods";
+    case RegionPlace::OnVertex: return "on-vertex";
+    case RegionPlace::OnSegment: return "on-segment";
+    case RegionPlace::Outside: return "outside";
+    case RegionPlace::InHole: return "in-hole";
   }
   return "?";
 }
@@ -91,6 +105,7 @@ std::size_t Report::count(Reason reason) const {
 
 namespace {
 constexpr std::size_t kListedExempt = 10;  // exempt triangles named in the text report; all are counted
+constexpr std::size_t kListedRegions = 10;  // regions named in the text report; all are counted
 }  // namespace
 
 std::string format_report(const Report& report) {
@@ -122,6 +137,18 @@ std::string format_report(const Report& report) {
     }
     if (listed < report.exempt_triangles.size())
       out += fmt::format("  ... and {} more exempt triangles\n", report.exempt_triangles.size() - listed);
+  }
+  if (report.max_area > 0 || report.region_area_bounds) {
+    out += fmt::format("size bound: {} triangles checked{}{}\n", report.area_checked,
+                       report.max_area > 0 ? fmt::format(", area <= {} everywhere", report.max_area) : std::string(),
+                       report.region_area_bounds ? fmt::format(", the bounds of {} regions", report.region_places.size()) : std::string());
+    const std::size_t listed = std::min(report.region_places.size(), kListedRegions);
+    for (std::size_t r = 0; r < listed; ++r)
+      out += report.region_places[r] == RegionPlace::Floods
+                 ? fmt::format("  region {}: {} triangles\n", r, report.region_triangles[r])
+                 : fmt::format("  region {}: {}, applies to nothing\n", r, to_string(report.region_places[r]));
+    if (listed < report.region_places.size())
+      out += fmt::format("  ... and {} more regions\n", report.region_places.size() - listed);
   }
   for (std::size_t r = 0; r < report.count_by_reason.size(); ++r)
     if (report.count_by_reason[r])

@@ -17,8 +17,8 @@
 
 namespace lepp::certify {
 
-// The six groups of checks.
-enum class Check { Topology, InputVertices, Constraints, Delaunay, MinAngle, Theorem2 };
+// The seven groups of checks.
+enum class Check { Topology, InputVertices, Constraints, Delaunay, MinAngle, Theorem2, SizeBound };
 
 // Why a check failed: one value per distinct failure, so tests can assert the reason.
 enum class Reason {
@@ -51,11 +51,18 @@ enum class Reason {
   UnimprovableRuleFails,     // a listed unimprovable triangle does not satisfy ALGORITHM.md section 8
   // Theorem 2
   TerminalAngleOver120,      // a terminal triangle of an unconstrained terminal edge with an angle > 120 degrees
+  // Size bound
+  AreaAboveBound,            // a triangle's area exceeds the bound of its region or the global bound (exactly)
 };
+
+// Where a region point of the input lies (decided on the input alone, docs/CERTIFIER.md
+// section 7): only a point inside the domain, off every segment and input vertex, floods.
+enum class RegionPlace { Floods, OnVertex, OnSegment, Outside, InHole };
 
 Check check_of(Reason reason);
 const char* to_string(Check check);
 const char* to_string(Reason reason);
+const char* to_string(RegionPlace place);
 
 // One violation: what failed, and the triangles, edges, vertices and coordinates involved.
 struct Violation {
@@ -66,6 +73,7 @@ struct Violation {
   std::vector<int> vertices;               // mesh vertex ids (input ids for missing input vertices)
   std::vector<Point> points;               // coordinates of the vertices above
   int segment = -1;                        // input segment id when one is involved
+  int region = -1;                         // input region id (index into Pslg::regions) when one is involved
 };
 
 struct Options {
@@ -80,6 +88,13 @@ struct Options {
   // below 60 degrees is exempt, counted apart (Report::exempt_triangles), not a violation.
   // Depends only on the input and the mesh, never on lists the mesher wrote.
   bool exempt_small_input_angles = false;
+  // Size bounds (docs/CERTIFIER.md section 7), as lepp refine's --max-area and
+  // --region-areas (Triangle's -a X and -a): every triangle's area must be at most
+  // max_area (> 0), and with region_area_bounds at most the bound (> 0) of the
+  // region it lies in, found by flooding the mesh from the region points; with
+  // both, the smaller bound applies.
+  double max_area = 0;
+  bool region_area_bounds = false;
   std::size_t max_listed_per_reason = 50;  // further violations are counted, not listed
 };
 
@@ -109,6 +124,15 @@ struct Report {
   std::size_t exempt_count = 0;
   Statistics stats;
   double min_angle_deg = 0;  // the theta checked (0: none)
+  // The size bounds checked (Options::max_area, Options::region_area_bounds) and, with
+  // region bounds, per region: where its point lies, how many triangles it kept after
+  // later regions overwrote it; per mesh triangle: its region (-1 none).
+  double max_area = 0;
+  bool region_area_bounds = false;
+  std::size_t area_checked = 0;  // triangles that had a bound, compared exactly
+  std::vector<RegionPlace> region_places;
+  std::vector<std::size_t> region_triangles;
+  std::vector<int> triangle_region;
 
   bool certified() const;
   std::size_t count(Reason reason) const;
