@@ -26,6 +26,7 @@ namespace {
 // A cell of one triangle: f's vertices and edges as they are.
 Cell single(const Triangulation& tr, FH f) {
   Cell c;
+  c.region = f->info().region;
   for (int k = 0; k < 3; ++k) {
     // Side k runs from vertex k to vertex k+1: the edge opposite vertex k+2.
     int opposite = Cdt::cw(k);
@@ -69,6 +70,7 @@ int CellMap::cell_of(FH f) {
       simple = simple && next.emplace(a, Side{b, constrained, !constrained && in_domain(tr_, n) ? n : FH()}).second;
     }
   Cell cell;
+  cell.region = f->info().region;
   if (simple && !next.empty()) {
     VH start = next.begin()->first, v = start;
     do {
@@ -101,6 +103,7 @@ CellTri CellMap::triangle(int c, int a, int b, int d) const {
   const int n = static_cast<int>(cell.ring.size());
   CellTri t;
   t.cell = c;
+  t.region = cell.region;
   t.pos = {a, b, d};
   for (int i = 0; i < 3; ++i) {
     t.v[static_cast<std::size_t>(i)] = cell.ring[static_cast<std::size_t>(t.pos[static_cast<std::size_t>(i)])];

@@ -27,6 +27,7 @@ struct Cell {
   std::vector<VH> ring;               // the polygon, counter-clockwise (3 vertices: one triangle, no freedom)
   std::vector<char> side_constrained;  // side k: ring[k] -> ring[k + 1]
   std::vector<FH> side_outside;        // a domain face across side k; null when constrained or outside the domain
+  int region = 0;                      // FaceInfo::region of its faces (joined by unconstrained edges: one region)
   int position(VH v) const;            // index in ring, -1 if none
 };
 
@@ -36,6 +37,7 @@ struct CellTri {
   std::array<int, 3> pos{{-1, -1, -1}};
   std::array<VH, 3> v;
   std::array<bool, 3> constrained{{false, false, false}};  // edge i, opposite v[i]
+  int region = 0;                      // its cell's region (for the size bound)
 };
 
 // The cells of the current mesh, found on demand. Flips inside cells keep it

@@ -12,6 +12,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -173,7 +174,9 @@ struct Replay::Impl {
   ReplayRules rules;
   Triangulation tr;
   FT sin2_;
-  FT twice_max_area_;
+  // Twice the size bound of each region (index 0: no region), as the reference
+  // engine computes them (refine.cpp): the smaller of the region's and max_area.
+  std::vector<std::optional<FT>> bounds_;
   VH last_;  // the last vertex inserted: where to start locating the next point
 
   FH hint() const { return last_ != VH() ? last_->face() : FH(); }
@@ -181,8 +184,16 @@ struct Replay::Impl {
   Impl(const Pslg& p, const ReplayRules& r) : pslg(p), rules(r) {
     double theta = std::min(r.min_angle_deg + std::max(r.angle_tolerance_deg, 0.0), 60.0);
     sin2_ = FT(sin2_bracket(theta).hi);
-    twice_max_area_ = FT(r.max_area) * 2;
     build_triangulation(pslg, tr);
+    bounds_.push_back(r.max_area > 0 ? std::optional<FT>(FT(r.max_area) * 2) : std::nullopt);
+    if (r.region_area_bounds) {
+      assign_regions(tr);
+      for (const Region& region : pslg.regions) {
+        std::optional<FT> b = bounds_[0];
+        if (region.max_area > 0 && (!b || FT(region.max_area) * 2 < *b)) b = FT(region.max_area) * 2;
+        bounds_.push_back(b);
+      }
+    }
     // The initial CDT's cocircular edges count as ties, as in the engines
     // (docs/ALGORITHM.md section 6): another implementation may have the other diagonal.
     tr.cocircular_ties = count_cocircular_edges(tr);
@@ -191,13 +202,16 @@ struct Replay::Impl {
   bool in_domain(FH f) const { return detail::in_domain(tr, f); }
 
   // Bad, or within the angle tolerance of bad.
+  const std::optional<FT>& bound(int region) const { return bounds_[static_cast<std::size_t>(region)]; }
   bool maybe_bad(FH f) const {
     if (is_skinny(f, sin2_)) return true;
-    return rules.max_area > 0 && is_too_big(f, twice_max_area_);
+    const std::optional<FT>& b = bound(f->info().region);
+    return b && is_too_big(f, *b);
   }
   bool maybe_bad(const CellTri& t) const {
     if (skinny(t, sin2_)) return true;
-    return rules.max_area > 0 && too_big(t, twice_max_area_);
+    const std::optional<FT>& b = bound(t.region);
+    return b && too_big(t, *b);
   }
 
   double tolerance(double scale) const {

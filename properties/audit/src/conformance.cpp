@@ -39,6 +39,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   rules.angle_tolerance_deg = options.angle_tolerance_deg;
   rules.point_tolerance_ulps = options.point_tolerance_ulps;
   rules.max_area = options.max_area;
+  rules.region_area_bounds = options.region_area_bounds;
   rules.follow_cocircular_flips = options.follow_cocircular_flips;
   rules.cocircular_search_budget = options.cocircular_search_budget;
   reference::Replay replay(validated, rules);

@@ -29,6 +29,9 @@ struct ReplayRules {
   // define the choice) is that choice.
   double point_tolerance_ulps = 8;
   double max_area = 0;  // > 0: a triangle of larger area is bad too (Triangle's -a)
+  // The PSLG's regions' area bounds too (RefineOptions::region_area_bounds,
+  // Triangle's -a with no number): the engines' rule, ALGORITHM.md section 4.
+  bool region_area_bounds = false;
   // When a point is no choice, try the meshes that differ from the replay's
   // by flipping one or two exactly cocircular edges (near the point, or where
   // recent insertions met a tie): the constrained Delaunay insertion is not

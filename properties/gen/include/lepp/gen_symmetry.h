@@ -32,6 +32,7 @@ struct LatticeSymmetry {
   Pslg apply(Pslg p) const {
     for (Point& v : p.vertices) v = apply(v);
     for (Point& h : p.holes) h = apply(h);
+    for (Region& r : p.regions) r.at = apply(r.at);
     return p;
   }
 };

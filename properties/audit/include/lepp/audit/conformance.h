@@ -30,6 +30,9 @@ struct ConformanceOptions {
   // that define the choice, per coordinate.
   double point_tolerance_ulps = 8;
   double max_area = 0;  // > 0: triangles larger than this are bad too
+  // Triangles larger than their region's bound are bad too (the trace was made
+  // with lepp refine --region-areas; RefineOptions::region_area_bounds).
+  bool region_area_bounds = false;
   // Accept any constrained Delaunay mesh of the same points: any
   // triangulation of each exactly cocircular cell, where the replay's own mesh
   // has another (docs/CONFORMANCE.md, "Cocircular cells").
