@@ -158,6 +158,10 @@ def main():
     ap.add_argument("--only", default="", help="comma-separated mutant ids")
     ap.add_argument("--rerun", action="store_true", help="run mutants that already have a result")
     ap.add_argument("--report-only", action="store_true")
+    ap.add_argument("--check", action="store_true",
+                    help="only check that every edit applies to the tree as it is (each 'from' exactly once in its "
+                         "file); exit 1 naming those that do not (a ctest runs this)")
+    ap.add_argument("--catalogue", default=CATALOGUE, help="the catalogue to read (default tools/mutation/mutants.txt)")
     ap.add_argument("--no-sync", action="store_true", help="keep the scratch tree as it is")
     ap.add_argument("--fuzz", action="store_true")
     ap.add_argument("--exclude", default="", help="ctest -E regex: tests failing on the unmutated tree too, left out (named in the report)")
@@ -170,7 +174,14 @@ def main():
     global NICE
     NICE = a.nice
 
-    mutants = parse_catalogue(CATALOGUE)
+    mutants = parse_catalogue(a.catalogue)
+    if a.check:
+        stale = [m for m in mutants if open(os.path.join(ROOT, m["file"]), encoding="utf-8").read().count(m["from_text"]) != 1]
+        for m in stale:
+            count = open(os.path.join(ROOT, m["file"]), encoding="utf-8").read().count(m["from_text"])
+            print(f"{a.catalogue}:{m['line']}: mutant {m['id']}: 'from' occurs {count} times in {m['file']} (must be exactly once)")
+        print(f"{len(mutants)} mutants, {len(stale)} that do not apply")
+        sys.exit(1 if stale else 0)
     scratch = os.path.abspath(a.scratch)
     build = os.path.join(scratch, "build")
     results_path = os.path.join(os.path.dirname(scratch), "results.json")
