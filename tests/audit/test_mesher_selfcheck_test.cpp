@@ -28,6 +28,8 @@ namespace fs = std::filesystem;
 
 const std::string kMesher = LEPP_TEST_MESHER;
 const std::string kInputs = LEPP_AUDIT_INPUTS;
+// Inputs on which the program without bugs once left a triangle it must refine.
+const std::string kRegressions = LEPP_AUDIT_REGRESSIONS;
 
 struct Case {
   std::string input;
@@ -35,10 +37,10 @@ struct Case {
   lepp::Method method;
 };
 
-std::vector<Case> cases(std::vector<double> thetas = {20, 25, 30}) {
+std::vector<Case> cases(std::vector<double> thetas = {20, 25, 30}, const std::string& dir = kInputs) {
   std::vector<Case> out;
   std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(kInputs))
+  for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".poly") files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   for (const std::string& f : files)
@@ -100,6 +102,21 @@ TEST(TestMesherSelfCheck, WithoutBugsCertifiedAndConforms) {
       const lepp::audit::ConformanceReport conf = conformance(c, r);
       EXPECT_TRUE(conf.conforms) << name(c) << "\n" << lepp::audit::describe(conf);
     }
+}
+
+// regressions/beyond-wedge-mouth.poly: a 4.57-degree triangle beyond the mouth of a
+// 26.57-degree wedge was once left as a small-input-angle triangle at theta 30.
+TEST(TestMesherSelfCheck, RegressionsCertifiedAndConform) {
+  const std::vector<Case> all = cases({20, 25, 30}, kRegressions);
+  ASSERT_FALSE(all.empty());
+  for (const Case& c : all) {
+    const MesherRun r = run_mesher(c, "");
+    ASSERT_EQ(r.status, 0) << name(c);
+    const lepp::certify::Report cert = certify(c, r);
+    EXPECT_TRUE(cert.certified()) << name(c) << "\n" << lepp::certify::format_report(cert);
+    const lepp::audit::ConformanceReport conf = conformance(c, r);
+    EXPECT_TRUE(conf.conforms) << name(c) << "\n" << lepp::audit::describe(conf);
+  }
 }
 
 // How many cases show a certificate violation of `reason` under --bug.
