@@ -39,7 +39,10 @@ grep -q 'unknown placeholder {angle}' "$dir/err" || fail "message: $(cat "$dir/e
 "$lepp" audit --engine cgal --inputs "$src/properties/audit/tests/inputs/cgal-crash.poly" --theta 20 --timeout 5 \
   --compare none --no-shrink --root "$src" --out "$dir/cgal" --json > "$dir/cgal.json"; s=$?
 [ $s -eq 1 ] || fail "CGAL crash: exit $s (the crash was not contained)"
-python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["run_status"]["crashed"]==1, r["run_status"]; assert "killed by signal" in r["rows"][0]["first"], r["rows"][0]' \
+# Built with NDEBUG (Release, the sanitizer build) CGAL segfaults; with its assertions
+# on (the coverage builds) it throws on a collinear face in Mesh_2/Refine_faces.h.
+# Either way one contained crash.
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); f=r["rows"][0]["first"]; assert r["run_status"]["crashed"]==1, r["run_status"]; assert "killed by signal" in f or "CGAL ERROR" in f, r["rows"][0]' \
   "$dir/cgal.json" || fail "CGAL crash: not reported as crashed (if CGAL no longer crashes here, pick another input)"
 
 # CGAL's mesher never returns on this input: isolated, it is killed at --timeout and the
