@@ -81,6 +81,40 @@ TEST(CocircularCells, EngineTraceUnderAQuarterTurnConforms) {
   }
 }
 
+// The older searches, kept as the fallback when the search of the cells runs
+// out of its budget (0 here): one or two flips near the point, then CGAL's tie
+// rule. On small lattice rectangles under the eight symmetries some step is
+// followed by exactly one or two flips with no switch to CGAL's rule (its
+// switch flips more). Traces that need the search stop where they need it.
+TEST(CocircularCells, WithoutTheSearchOneOrTwoLocalFlipsStillFollowATrace) {
+  std::size_t local_steps = 0, traces = 0;
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{2, 1}, {2, 2}, {3, 2}, {4, 3}})
+    for (int turns = 0; turns < 4; ++turns)
+      for (bool mirrored : {false, true}) {
+        const Pslg p = lattice_rectangle(w, h);
+        const std::vector<Point> trace =
+            trace_under(p, gen::LatticeSymmetry{turns, mirrored}, true, Method::Centroid, QueueOrder::Fifo, 30);
+        if (trace.empty()) continue;
+        ++traces;
+        reference::ReplayRules rules;
+        rules.method = Method::Centroid;
+        rules.min_angle_deg = 30;
+        rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
+        rules.cocircular_search_budget = 0;
+        reference::Replay replay(p, rules);
+        for (std::size_t i = 0; i < trace.size(); ++i) {
+          reference::ReplayChoice choice;
+          const std::int64_t before = replay.cocircular_flips();
+          if (!replay.match(trace[i], choice)) break;  // needs the search (the 4 x 3 turned: step 0)
+          const std::int64_t flips = replay.cocircular_flips() - before;
+          if (flips == 1 || flips == 2) ++local_steps;
+          replay.insert(trace[i], choice);
+        }
+      }
+  EXPECT_GT(traces, 0u);
+  EXPECT_GT(local_steps, 0u) << "no step was followed by the one-or-two-flip search";
+}
+
 // ---- every symmetry, both engines, both methods, both orders ----
 
 TEST(LatticeSymmetry, EightDistinctMapsEachUndoneExactly) {
