@@ -27,6 +27,22 @@ using Fb = CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Constrained_t
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 
+// The triangles a hole or region point starts its flood from: the one it lies in, or
+// both sides of the unconstrained edge it lies on; none on a constrained edge or a
+// vertex (it removes or sets nothing there, as Triangle reads it).
+template <class Visit>
+void start_faces(const Cdt& cdt, const Point& p, Visit visit) {
+  Cdt::Locate_type lt;
+  int li = 0;
+  auto f = cdt.locate(K::Point_2(p.x, p.y), lt, li);
+  if (lt == Cdt::FACE) {
+    visit(f->info());
+  } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
+    visit(f->info());
+    visit(f->neighbor(li)->info());
+  }
+}
+
 }  // namespace
 
 TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership, std::size_t reserve_triangles,
@@ -75,17 +91,7 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
   for (int ti = 0; ti < count; ++ti)
     for (int i = 0; i < 3; ++i)
       if (all.t(ti).nbr[i] < 0 && all.t(ti).seg[i] < 0) seed(ti);
-  for (const Point& h : pslg.holes) {
-    Cdt::Locate_type lt;
-    int li = 0;
-    auto f = cdt.locate(K::Point_2(h.x, h.y), lt, li);
-    if (lt == Cdt::FACE) {
-      seed(f->info());
-    } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
-      seed(f->info());
-      seed(f->neighbor(li)->info());
-    }
-  }
+  for (const Point& h : pslg.holes) start_faces(cdt, h, seed);
   while (!stack.empty()) {
     int ti = stack.back();
     stack.pop_back();
@@ -109,16 +115,7 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
         region_of[static_cast<std::size_t>(ti)] = mark + 1;
         stack.push_back(ti);
       };
-      const Point& at = pslg.regions[r].at;
-      Cdt::Locate_type lt;
-      int li = 0;
-      auto f = cdt.locate(K::Point_2(at.x, at.y), lt, li);
-      if (lt == Cdt::FACE) {
-        reach(f->info());
-      } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
-        reach(f->info());
-        reach(f->neighbor(li)->info());
-      }
+      start_faces(cdt, pslg.regions[r].at, reach);
       while (!stack.empty()) {
         int ti = stack.back();
         stack.pop_back();

@@ -17,6 +17,21 @@ namespace {
 // constrained edge, from outside the input's convex hull or from a hole point.
 // All triangles outside the hull have a bounding-box corner, so seeding the
 // flood there reaches exactly the triangles behind unconstrained hull edges.
+// The faces a hole or region point starts its flood from: the one it lies in, or
+// both sides of the unconstrained edge it lies on; none on a constrained edge or a
+// vertex (it removes or sets nothing there; validation warns).
+void push_start_faces(const Cdt& cdt, const Point& p, std::deque<FH>& todo) {
+  Cdt::Locate_type lt;
+  int li;
+  FH f = cdt.locate(CPoint(p.x, p.y), lt, li);
+  if (lt == Cdt::FACE) {
+    todo.push_back(f);
+  } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
+    todo.push_back(f);
+    todo.push_back(f->neighbor(li));
+  }
+}
+
 void mark_domain(Triangulation& tr) {
   Cdt& cdt = tr.cdt;
   std::deque<FH> todo;
@@ -24,19 +39,7 @@ void mark_domain(Triangulation& tr) {
     f->info().in_domain = true;
     if (id(f->vertex(0)) < 0 || id(f->vertex(1)) < 0 || id(f->vertex(2)) < 0) todo.push_back(f);
   }
-  for (const Point& h : tr.input->holes) {
-    Cdt::Locate_type lt;
-    int li;
-    FH f = cdt.locate(CPoint(h.x, h.y), lt, li);
-    if (lt == Cdt::FACE) {
-      todo.push_back(f);
-    } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
-      // A hole point on an unconstrained edge removes both triangles.
-      todo.push_back(f);
-      todo.push_back(f->neighbor(li));
-    }
-    // On a constrained edge or a vertex: removes nothing (validation warns).
-  }
+  for (const Point& h : tr.input->holes) push_start_faces(cdt, h, todo);
   while (!todo.empty()) {
     FH f = todo.front();
     todo.pop_front();
@@ -107,15 +110,7 @@ void assign_regions(Triangulation& tr) {
     const int region = static_cast<int>(r) + 1;
     std::set<FH> seen;
     std::deque<FH> todo;
-    Cdt::Locate_type lt;
-    int li;
-    FH f = cdt.locate(CPoint(regions[r].at.x, regions[r].at.y), lt, li);
-    if (lt == Cdt::FACE) {
-      todo.push_back(f);
-    } else if (lt == Cdt::EDGE && !f->is_constrained(li)) {
-      todo.push_back(f);
-      todo.push_back(f->neighbor(li));
-    }
+    push_start_faces(cdt, regions[r].at, todo);
     while (!todo.empty()) {
       FH g = todo.front();
       todo.pop_front();
