@@ -580,6 +580,16 @@ TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheInputAngleBelowTheta) {
   EXPECT_TRUE(r.unimprovable_accepted.empty());
 }
 
+// Two cracks from V = (0,0) (vertex 4) inside the square [-10,10]^2: V-U, U = (4,0)
+// (vertex 5), and V-W, W = 4 (cos 20, sin 20) (vertex 6): a 20-degree input angle.
+Pslg cracks_at_twenty_degrees() {
+  const double rad = 20 * M_PI / 180;
+  Pslg p;
+  p.vertices = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {4, 0}, {4 * std::cos(rad), 4 * std::sin(rad)}};
+  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 0}, {4, 6, 0}};
+  return test::validated(p);
+}
+
 TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedge) {
   // Two cracks from V = (0,0) inside the square [-10,10]^2: V-U, U = (4,0), and V-W,
   // W = 4 (cos 20, sin 20): a 20-degree input angle. Triangle (V,U,W) lies in the
@@ -588,11 +598,7 @@ TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedge) {
   // lies beyond the arm V-U (its edge W-R passes beyond U, the arm's end): outside
   // the wedge, the rule does not hold. Only the two listed triangles matter here;
   // the rest of the square is not meshed.
-  const double rad = 20 * M_PI / 180;
-  Pslg p;
-  p.vertices = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {4, 0}, {4 * std::cos(rad), 4 * std::sin(rad)}};
-  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 0}, {4, 6, 0}};
-  p = test::validated(p);
+  const Pslg p = cracks_at_twenty_degrees();
   Mesh m;
   m.vertices = p.vertices;
   m.vertices.push_back({5, -1.5});  // R = 7
@@ -615,11 +621,7 @@ TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedgeOnTheSecond
   // (about 18 degrees) and its shortest edge U-W joins the two segments, but R lies
   // ccw beyond the arm V-W (at 26 degrees from V, the arm at 20): inside the first
   // side of the wedge, outside the second, and the rule does not hold.
-  const double rad = 20 * M_PI / 180;
-  Pslg p;
-  p.vertices = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {4, 0}, {4 * std::cos(rad), 4 * std::sin(rad)}};
-  p.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 0}, {4, 6, 0}};
-  p = test::validated(p);
+  const Pslg p = cracks_at_twenty_degrees();
   Mesh m;
   m.vertices = p.vertices;
   m.vertices.push_back({6.5, 3.2});  // R = 7
