@@ -42,6 +42,7 @@ struct AuditArgs {
   double timeout = 10;
   std::size_t memory = 0;
   double angle_tolerance = 1e-3, point_tolerance = 8;
+  std::string centroid = "vertex";
   std::string out = "audit-out";
   std::string junit, json_file;
   bool json = false, no_shrink = false, no_isolate = false;
@@ -119,6 +120,8 @@ int run_audit_command(const AuditArgs& a) {
     o.memory_mb = a.memory;
     o.checks.angle_tolerance_deg = a.angle_tolerance;
     o.checks.point_tolerance_ulps = a.point_tolerance;
+    o.checks.area_centroid = a.centroid == "area";
+    if (o.checks.area_centroid) o.reproduce_prefix += " --centroid area";
     o.out_dir = a.out;
     o.shrink = !a.no_shrink;
     o.max_findings_per_row = a.max_findings;
@@ -183,6 +186,11 @@ void add_audit_command(CLI::App& app, int& status) {
       ->default_val(1e-3);
   cmd->add_option("--point-tolerance", a->point_tolerance, "Conformance: how far an inserted point may be from the paper's exact choice, in DBL_EPSILON x |coordinate|")
       ->default_val(8);
+  cmd->add_option("--centroid", a->centroid,
+                  "Conformance: the declared reading of the quad's centroid: vertex (the paper's (A+B+C+D)/4, Lemma 11) or area "
+                  "(its centre of mass)")
+      ->default_val("vertex")
+      ->check(CLI::IsMember({"vertex", "area"}));
   cmd->add_option("--out", a->out, "Directory of the findings (ROW-N/: input.poly, out.*, finding.svg, reproduce.sh)")->default_val("audit-out");
   cmd->add_option("--junit", a->junit, "Also write the rows as JUnit XML to this file");
   cmd->add_flag("--json", a->json, "Print the report as JSON instead of markdown");

@@ -165,7 +165,23 @@ struct Candidate {
   CPoint point;
   double scale = 0;        // largest |coordinate| of the vertices defining the point
   VH split_a, split_b;     // the constrained edge it splits, or null
+  Deviation deviation = Deviation::Unknown;  // Unknown: the paper's choice; else the catalogue rule that made it
 };
+
+// The exact centroid of a triangle.
+CPoint triangle_centroid(const CPoint& a, const CPoint& b, const CPoint& c) {
+  return CPoint((a.x() + b.x() + c.x()) / 3, (a.y() + b.y() + c.y()) / 3);
+}
+
+// The area centroid (centre of mass) of the quad made of triangles abc and abd
+// on both sides of ab: their centroids weighted by their areas, exactly.
+CPoint area_centroid(const CPoint& a, const CPoint& b, const CPoint& c, const CPoint& d) {
+  FT w1 = CGAL::abs((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+  FT w2 = CGAL::abs((b.x() - a.x()) * (d.y() - a.y()) - (b.y() - a.y()) * (d.x() - a.x()));
+  FT w = 3 * (w1 + w2);
+  return CPoint((w1 * (a.x() + b.x() + c.x()) + w2 * (a.x() + b.x() + d.x())) / w,
+                (w1 * (a.y() + b.y() + c.y()) + w2 * (a.y() + b.y() + d.y())) / w);
+}
 
 }  // namespace
 
@@ -227,28 +243,115 @@ struct Replay::Impl {
     return c;
   }
 
-  // Every point the paper's rule allows for this terminal configuration.
+  // Every point the paper's rule allows for this terminal configuration (and,
+  // under ReplayRules::variant, the variant's points there).
   std::vector<Candidate> candidates(const Terminal& t) const {
     return t.t2 == FH() ? candidates(t.t1, t.t1, false, t.l) : candidates(t.t1, t.t2, true, t.l);
   }
-  // Terminal edge l of t1, and t2 across it if has_t2 (else l is constrained).
+  std::vector<Candidate> paper_candidates(const Terminal& t) const {
+    return t.t2 == FH() ? paper_candidates(t.t1, t.t1, false, t.l) : paper_candidates(t.t1, t.t2, true, t.l);
+  }
+  std::vector<Candidate> deviation_points(const Terminal& t) const {
+    return t.t2 == FH() ? deviation_points(t.t1, t.t1, false, t.l) : deviation_points(t.t1, t.t2, true, t.l);
+  }
   template <class T>
   std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l) const {
+    std::vector<Candidate> out = paper_candidates(t1, t2, has_t2, l);
+    if (rules.variant != Deviation::Unknown)
+      for (Candidate& c : deviation_points(t1, t2, has_t2, l))
+        if (c.deviation == rules.variant) out.push_back(c);
+    return out;
+  }
+
+  // The quad's centroid under the declared reading, and its scale for the
+  // tolerance. The area centroid's rounding error in doubles grows with M / |ab|
+  // (its weights are cross products: eps M^2 absolute error on an area of size
+  // |ab|^2), so its scale is M * max(1, M / |ab|).
+  template <class T>
+  Candidate quad_centroid(Rule rule, const T& t1, const T& t2, int l, CentroidReading reading) const {
+    VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
+    VH d = vtx(t2, index_off(t2, a, b));
+    double scale = std::max({abs_max(a->point()), abs_max(b->point()), abs_max(c->point()), abs_max(d->point())});
+    if (reading == CentroidReading::Vertex) {
+      CPoint g(((a->point().x() + b->point().x()) + (c->point().x() + d->point().x())) / 4,
+               ((a->point().y() + b->point().y()) + (c->point().y() + d->point().y())) / 4);
+      return Candidate{rule, g, scale, {}, {}};
+    }
+    double ab = std::sqrt(CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
+    if (ab > 0 && scale / ab > 1) scale *= scale / ab;
+    return Candidate{rule, area_centroid(a->point(), b->point(), c->point(), d->point()), scale, {}, {}};
+  }
+
+  // The catalogue's points at a terminal configuration (docs/CONFORMANCE.md,
+  // "Deviations"): each tagged with its deviation. The paper's own choices are
+  // not excluded: a point that is one matches before the catalogue is asked.
+  template <class T>
+  std::vector<Candidate> deviation_points(const T& t1, const T& t2, bool has_t2, int l) const {
+    std::vector<Candidate> out;
+    auto add = [&](Deviation d, Candidate c) {
+      c.deviation = d;
+      out.push_back(c);
+    };
+    VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
+    auto tri_centroid = [&](VH x, VH y, VH z, Rule rule) {
+      double scale = std::max({abs_max(x->point()), abs_max(y->point()), abs_max(z->point())});
+      return Candidate{rule, triangle_centroid(x->point(), y->point(), z->point()), scale, {}, {}};
+    };
+    // The midpoints of a terminal triangle's two other edges.
+    auto other_edges = [&](const T& f, int term) {
+      for (int e : {Cdt::ccw(term), Cdt::cw(term)}) add(Deviation::OtherSecondLongest, midpoint(Rule::SecondLongestMidpoint, f, e));
+    };
+    if (!has_t2) {
+      add(Deviation::TriangleCentroid, tri_centroid(a, b, c, Rule::TerminalConstrainedMidpoint));
+      other_edges(t1, l);
+      return out;
+    }
+    const int l2 = index_off(t2, a, b);
+    VH d = vtx(t2, l2);
+    const CentroidReading reading = rules.centroid;
+    const CentroidReading other_reading = reading == CentroidReading::Vertex ? CentroidReading::Area : CentroidReading::Vertex;
+    const Candidate g = quad_centroid(Rule::QuadCentroid, t1, t2, l, reading);
+    // The other reading's centroid, only where it is another point (on a
+    // parallelogram both readings are the same point: no deviation of reading).
+    const Candidate g_other = quad_centroid(Rule::QuadCentroid, t1, t2, l, other_reading);
+    if (g_other.point != g.point)
+      add(reading == CentroidReading::Vertex ? Deviation::AreaCentroid : Deviation::VertexCentroid, g_other);
+    add(Deviation::TriangleCentroid, tri_centroid(a, b, c, Rule::QuadCentroid));
+    add(Deviation::TriangleCentroid, tri_centroid(a, b, d, Rule::QuadCentroid));
+    // On a parallelogram the terminal midpoint is the quad centroid: then the
+    // centroid's rules (below) name it.
+    const Candidate m = midpoint(Rule::TerminalMidpoint, t1, l);
+    if (m.point != g.point) add(Deviation::TerminalMidpoint, m);
+    for (int s1 : second_longest_given(t1, l))
+      for (int s2 : second_longest_given(t2, l2)) {
+        bool c1 = constrained(t1, s1), c2 = constrained(t2, s2);
+        if (rules.method == Method::Midpoint || (c1 && c2)) {
+          add(Deviation::CentroidNotMidpoint, g);
+        } else if (c1 != c2) {
+          const T& star = c1 ? t1 : t2;
+          const T& other = c1 ? t2 : t1;
+          int inside = inside_status(other, g.point, tolerance(g.scale));
+          if (inside < 0) add(Deviation::Remark10Reversed, g);  // the paper: the midpoint only
+          if (inside > 0) add(Deviation::Remark10Reversed, midpoint(Rule::SecondLongestMidpoint, star, c1 ? s1 : s2));
+        }
+      }
+    other_edges(t1, l);
+    other_edges(t2, l2);
+    return out;
+  }
+
+  // Terminal edge l of t1, and t2 across it if has_t2 (else l is constrained).
+  template <class T>
+  std::vector<Candidate> paper_candidates(const T& t1, const T& t2, bool has_t2, int l) const {
     std::vector<Candidate> out;
     if (!has_t2) {
       out.push_back(midpoint(Rule::TerminalConstrainedMidpoint, t1, l));
       return out;
     }
-    VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
+    VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l));
     int l2 = index_off(t2, a, b);
-    VH d = vtx(t2, l2);
     std::vector<int> S1 = second_longest_given(t1, l), S2 = second_longest_given(t2, l2);
-    auto centroid = [&](Rule rule) {
-      CPoint g(((a->point().x() + b->point().x()) + (c->point().x() + d->point().x())) / 4,
-               ((a->point().y() + b->point().y()) + (c->point().y() + d->point().y())) / 4);
-      double scale = std::max({abs_max(a->point()), abs_max(b->point()), abs_max(c->point()), abs_max(d->point())});
-      return Candidate{rule, g, scale, {}, {}};
-    };
+    auto centroid = [&](Rule rule) { return quad_centroid(rule, t1, t2, l, rules.centroid); };
     for (int s1 : S1) {
       for (int s2 : S2) {
         bool c1 = constrained(t1, s1), c2 = constrained(t2, s2);
@@ -299,6 +402,11 @@ struct Replay::Impl {
   static double distance(const Point& p, const CPoint& q) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
     return std::max(std::abs(CGAL::to_double(FT(p.x) - q.x())), std::abs(CGAL::to_double(FT(p.y) - q.y())));
+  }
+
+  static double euclidean(const Point& p, const CPoint& q) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
+    return std::hypot(CGAL::to_double(FT(p.x) - q.x()), CGAL::to_double(FT(p.y) - q.y()));
   }
 
   // The domain triangles around p: those incident to a vertex of the
@@ -390,8 +498,10 @@ struct Replay::Impl {
     r.rule = c.rule;
     r.point = {round_nearest(c.point.x()), round_nearest(c.point.y())};
     r.distance = distance(p, c.point);
+    r.euclidean = euclidean(p, c.point);
     r.tolerance = tolerance(c.scale);
     if (c.split_a != VH()) r.split_edge = {id(c.split_a), id(c.split_b)};
+    r.deviation = c.deviation;
     return r;
   }
 
@@ -748,6 +858,150 @@ struct Replay::Impl {
     }
   }
 
+  // ---- the deviation catalogue (docs/CONFORMANCE.md, "Deviations") ----
+
+  // The bad triangle's circumcenter and off-center (Ungor: on the bisector of
+  // its shortest edge pq, where the triangle pq-point has the angle theta at
+  // the point; the circumcenter when that is nearer). The off-center is
+  // irrational (a tangent): it is computed in long double from the exact
+  // circumcenter, the only catalogue point that is not an exact rational.
+  std::vector<Candidate> triangle_points(FH f) const {
+    std::vector<Candidate> out;
+    const CPoint &a = f->vertex(0)->point(), &b = f->vertex(1)->point(), &c = f->vertex(2)->point();
+    const CPoint cc = CGAL::circumcenter(a, b, c);
+    double scale = std::max({abs_max(a), abs_max(b), abs_max(c), abs_max(cc)});
+    out.push_back({Rule::QuadCentroid, cc, scale, {}, {}, Deviation::Circumcenter});
+    int e = 0;
+    for (int k = 1; k < 3; ++k)
+      if (compare_len(f, k, e) == CGAL::SMALLER) e = k;
+    const CPoint &p = f->vertex(Cdt::ccw(e))->point(), &q = f->vertex(Cdt::cw(e))->point();
+    using LD = long double;
+    const LD mx = (LD(CGAL::to_double(p.x())) + LD(CGAL::to_double(q.x()))) / 2;
+    const LD my = (LD(CGAL::to_double(p.y())) + LD(CGAL::to_double(q.y()))) / 2;
+    const LD cx = LD(CGAL::to_double(cc.x())), cy = LD(CGAL::to_double(cc.y()));
+    const LD half = std::sqrt(LD(CGAL::to_double(CGAL::squared_distance(p, q)))) / 2;
+    const LD h = half / std::tan(LD(rules.min_angle_deg) * LD(M_PI) / 360);
+    const LD dist = std::hypot(cx - mx, cy - my);
+    if (dist > h && dist > 0) {
+      const double ox = static_cast<double>(mx + (cx - mx) * (h / dist)), oy = static_cast<double>(my + (cy - my) * (h / dist));
+      if (std::isfinite(ox) && std::isfinite(oy))
+        out.push_back({Rule::QuadCentroid, CPoint(ox, oy), std::max(scale, std::max(std::abs(ox), std::abs(oy))), {}, {},
+                       Deviation::OffCenter});
+    }
+    return out;
+  }
+
+  static std::string tri_text(const Tri& t) { return "(" + std::to_string(t[0]) + "," + std::to_string(t[1]) + "," + std::to_string(t[2]) + ")"; }
+
+  // One line: which point of which configuration the match is.
+  static std::string what(const DeviationMatch& m) {
+    const ReplayChoice& w = m.where;
+    const std::string edge = "(" + std::to_string(w.terminal_edge[0]) + "," + std::to_string(w.terminal_edge[1]) + ")";
+    const std::string lepp = "the Lepp of " + std::string(m.deviation == Deviation::GoodTriangle ? "good" : "bad") +
+                             " triangle " + tri_text(w.bad);
+    switch (m.deviation) {
+      case Deviation::AreaCentroid: return "the area centroid of the terminal quad of edge " + edge + " (" + lepp + ")";
+      case Deviation::VertexCentroid: return "the vertex average of the terminal quad of edge " + edge + " (" + lepp + ")";
+      case Deviation::TriangleCentroid: return "the centroid of one terminal triangle of edge " + edge + " (" + lepp + ")";
+      case Deviation::TerminalMidpoint: return "the midpoint of terminal edge " + edge + " (" + lepp + ")";
+      case Deviation::CentroidNotMidpoint: return "the quad centroid at terminal edge " + edge + ", where the paper asks for a midpoint (" + lepp + ")";
+      case Deviation::Remark10Reversed: return "Remark 10 the wrong way round at terminal edge " + edge + " (" + lepp + ")";
+      case Deviation::OtherSecondLongest:
+        return "the midpoint of another edge of a terminal triangle of edge " + edge +
+               " than the terminal edge and the paper's second-longest edge (" + lepp + ")";
+      case Deviation::Circumcenter: return "the circumcenter of bad triangle " + tri_text(w.bad);
+      case Deviation::OffCenter: return "the off-center of bad triangle " + tri_text(w.bad);
+      case Deviation::GoodTriangle: return "the paper's choice at terminal edge " + edge + " for " + lepp;
+      case Deviation::Precision: return "near the paper's choice at terminal edge " + edge + " (" + lepp + "), beyond the tolerance";
+      case Deviation::Unknown: break;
+    }
+    return "no rule of the catalogue";
+  }
+
+  // One table (deviation_points, triangle_points, the paper's choices for good
+  // triangles and at 1000 times the tolerance), one loop: the first rule in
+  // catalogue order with a point within its tolerance of p names it.
+  DeviationMatch diagnose(const Point& p) const {
+    DeviationMatch best;
+    int best_rank = kDeviations;
+    double best_d = std::numeric_limits<double>::infinity();
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return best;
+    auto consider = [&](const Candidate& c, double tol, const Terminal* t, const std::vector<FH>& lepp) {
+      const int rank = static_cast<int>(c.deviation);
+      if (rank > best_rank) return;
+      const double d = distance(p, c.point);
+      if (!(d <= tol) || (rank == best_rank && d >= best_d)) return;
+      best_rank = rank, best_d = d;
+      best.deviation = c.deviation;
+      best.paper.clear();
+      if (t) {
+        best.where = describe(*t, c, p, lepp);
+        for (const Candidate& k : paper_candidates(*t)) best.paper.push_back(describe(*t, k, p, lepp));
+        if (!best.paper.empty()) best.where.rule = best.paper.front().rule;
+      } else {
+        ReplayChoice r;
+        r.bad = ccw_ids(lepp.front());
+        r.lepp = {r.bad};
+        r.point = {round_nearest(c.point.x()), round_nearest(c.point.y())};
+        r.distance = d;
+        r.euclidean = euclidean(p, c.point);
+        best.where = r;
+      }
+      best.where.tolerance = tol;
+    };
+    for (FH f : tr.cdt.finite_face_handles()) {
+      if (!in_domain(f)) continue;
+      const bool bad = maybe_bad(f);
+      std::vector<FH> path{f};
+      std::vector<std::pair<std::vector<FH>, Terminal>> ends;
+      lepp_ends(f, -1, path, ends, 64);
+      if (bad)
+        for (const Candidate& c : triangle_points(f)) consider(c, tolerance(c.scale), nullptr, path);
+      for (const auto& [lepp, t] : ends) {
+        if (!bad) {
+          for (Candidate c : paper_candidates(t)) {
+            c.deviation = Deviation::GoodTriangle;
+            consider(c, tolerance(c.scale), &t, lepp);
+          }
+          continue;
+        }
+        for (const Candidate& c : deviation_points(t)) consider(c, tolerance(c.scale), &t, lepp);
+        for (Candidate c : paper_candidates(t)) {
+          c.deviation = Deviation::Precision;
+          consider(c, 1000 * tolerance(c.scale), &t, lepp);
+        }
+      }
+    }
+    best.what = what(best);
+    return best;
+  }
+
+  // Theorem 2 on a choice's terminal pair, exactly: the angle at apex c of
+  // terminal edge ab is over 120 degrees iff dot(ca, cb) < 0 and
+  // 4 dot^2 > |ca|^2 |cb|^2.
+  Theorem2Check theorem2(const ReplayChoice& choice) const {
+    Theorem2Check out;
+    if (choice.t2[0] < 0 || choice.terminal_edge[0] < 0) return out;  // a constrained terminal edge: not the theorem's case
+    auto V = [&](int i) { return tr.vertex.at(static_cast<std::size_t>(i))->point(); };
+    const int ia = choice.terminal_edge[0], ib = choice.terminal_edge[1];
+    for (const Tri& t : {choice.t1, choice.t2}) {
+      int ic = -1;
+      for (int v : t)
+        if (v != ia && v != ib) ic = v;
+      if (ic < 0) continue;
+      const CPoint &A = V(ia), &B = V(ib), &C = V(ic);
+      const K::Vector_2 u = A - C, v = B - C;
+      const FT dot = u * v;
+      if (!(dot < 0) || !(4 * dot * dot > u.squared_length() * v.squared_length())) continue;
+      out.holds = false;
+      out.apex = ic;
+      const double cosv = CGAL::to_double(dot) / std::sqrt(CGAL::to_double(u.squared_length()) * CGAL::to_double(v.squared_length()));
+      out.angle_deg = std::acos(std::max(-1.0, std::min(1.0, cosv))) * 180 / M_PI;
+      return out;
+    }
+    return out;
+  }
+
   std::vector<ReplayChoice> all_choices(const Point& p, std::size_t limit, std::size_t& total) const {
     std::vector<ReplayChoice> all;
     for (FH f : tr.cdt.finite_face_handles()) {
@@ -765,6 +1019,59 @@ struct Replay::Impl {
   }
 };
 
+const char* to_string(CentroidReading reading) { return reading == CentroidReading::Area ? "area" : "vertex"; }
+
+const char* to_string(Deviation d) {
+  switch (d) {
+    case Deviation::AreaCentroid: return "area-centroid";
+    case Deviation::VertexCentroid: return "vertex-centroid";
+    case Deviation::TriangleCentroid: return "triangle-centroid";
+    case Deviation::TerminalMidpoint: return "terminal-midpoint";
+    case Deviation::CentroidNotMidpoint: return "centroid-not-midpoint";
+    case Deviation::Remark10Reversed: return "remark10-reversed";
+    case Deviation::OtherSecondLongest: return "other-second-longest";
+    case Deviation::Circumcenter: return "circumcenter";
+    case Deviation::OffCenter: return "off-center";
+    case Deviation::GoodTriangle: return "good-triangle";
+    case Deviation::Precision: return "precision";
+    case Deviation::Unknown: return "unknown";
+  }
+  return "unknown";
+}
+
+const char* definition(Deviation d) {
+  switch (d) {
+    case Deviation::AreaCentroid:
+      return "the area centroid (centre of mass) of the terminal quad instead of the average of its four vertices (Lemma 11)";
+    case Deviation::VertexCentroid:
+      return "the average of the terminal quad's four vertices where the declared reading is the area centroid";
+    case Deviation::TriangleCentroid: return "the centroid of one terminal triangle instead of the quad's";
+    case Deviation::TerminalMidpoint: return "the terminal edge's midpoint where the paper chooses another point";
+    case Deviation::CentroidNotMidpoint:
+      return "the quad centroid where the paper asks for a midpoint (both second-longest edges constrained, or the midpoint method)";
+    case Deviation::Remark10Reversed:
+      return "Remark 10 the wrong way round: the centroid where it is not inside the other triangle, or the constrained "
+             "second-longest edge's midpoint where it is";
+    case Deviation::OtherSecondLongest:
+      return "the midpoint of another edge of a terminal triangle than the terminal edge and the paper's second-longest edge";
+    case Deviation::Circumcenter: return "the circumcenter of a bad triangle (Ruppert, Chew)";
+    case Deviation::OffCenter: return "the off-center of a bad triangle (Ungor)";
+    case Deviation::GoodTriangle: return "the paper's choice for the Lepp of a triangle that is not bad: a wrong threshold";
+    case Deviation::Precision: return "within 1000 times the point tolerance of a paper choice: rounding beyond the tolerance";
+    case Deviation::Unknown: return "no rule of the catalogue";
+  }
+  return "";
+}
+
+bool has_variant(Deviation d) {
+  switch (d) {
+    case Deviation::AreaCentroid: case Deviation::VertexCentroid: case Deviation::TriangleCentroid:
+    case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Reversed:
+    case Deviation::OtherSecondLongest: return true;
+    default: return false;
+  }
+}
+
 Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_unique<Impl>(pslg, rules)) {}
 Replay::~Replay() = default;
 bool Replay::match(const Point& p, ReplayChoice& choice) { return impl_->match(p, choice); }
@@ -772,6 +1079,8 @@ void Replay::insert(const Point& p, const ReplayChoice& choice) { impl_->insert(
 std::vector<ReplayChoice> Replay::all_choices(const Point& p, std::size_t limit, std::size_t& total) {
   return impl_->all_choices(p, limit, total);
 }
+DeviationMatch Replay::diagnose(const Point& p) const { return impl_->diagnose(p); }
+Theorem2Check Replay::theorem2(const ReplayChoice& choice) const { return impl_->theorem2(choice); }
 Mesh Replay::mesh() const { return extract_mesh(impl_->tr); }
 std::size_t Replay::steiner_points() const { return impl_->tr.vertex.size() - impl_->tr.input_vertices; }
 std::int64_t Replay::cocircular_ties() const { return impl_->tr.cocircular_ties; }

@@ -112,7 +112,7 @@ Sizes sizes_of(const std::string& path) {
 // saved as input.poly with its reproduce command.
 // unshrunk: for generated inputs, the report of the same audit with --no-shrink.
 void expect_caught(const AuditRun& r, const std::string& bug, const std::string& row_key, const std::string& detail,
-                   const json* unshrunk = nullptr, bool strictly_smaller = false) {
+                   const json* unshrunk = nullptr, bool strictly_smaller = false, const std::string& deviation = "") {
   ASSERT_FALSE(r.report.is_discarded()) << "no JSON report; stderr:\n" << r.err;
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_FALSE(r.report.value("holds", true));
@@ -164,6 +164,17 @@ void expect_caught(const AuditRun& r, const std::string& bug, const std::string&
     const json rerun = json::parse(slurp(dir / "reproduced.json"), nullptr, false);
     ASSERT_FALSE(rerun.is_discarded()) << cmd << "\n" << slurp(dir / "reproduced.stderr");
     EXPECT_GE(row(rerun, row_key).at("failed").get<std::size_t>(), 1u) << "not reproduced: " << cmd;
+    if (!deviation.empty()) {
+      // Named in the JSON (the counterexample and the row's count), the markdown
+      // finding and a picture of the step; the shrunk input shows the same deviation.
+      EXPECT_EQ(cx.value("deviation", ""), deviation) << cx.dump();
+      EXPECT_GE(caught.at("deviations").value(deviation, 0u), 1u) << caught.at("deviations").dump();
+      const std::string md = slurp(dir / "finding.md");
+      EXPECT_NE(md.find("**Deviation: `" + deviation + "`**"), std::string::npos) << md;
+      EXPECT_NE(slurp(dir / "step.svg").find("<svg"), std::string::npos) << dir;
+      EXPECT_GE(row(rerun, row_key).at("deviations").value(deviation, 0u), 1u)
+          << "the shrunk input does not show " << deviation << ": " << row(rerun, row_key).dump();
+    }
     std::cout << "[shrunk --bug " << bug << " / " << row_key << "] " << fs::path(origin).filename().string() << " theta "
               << cx.at("theta") << ": " << before.vertices << " vertices, " << before.segments << " segments -> "
               << after.vertices << " vertices, " << after.segments << " segments (" << cx.at("shrink_steps")
@@ -206,6 +217,7 @@ TEST(AuditClean, LeppEnginesThroughCmd) {
 struct BugCase {
   std::string bug, row, detail, args;
   bool strictly_smaller = false;  // the input it is found on has a smaller one that fails too
+  std::string deviation = "";     // conformance: the catalogue's name for it
 };
 
 void PrintTo(const BugCase& c, std::ostream* os) { *os << "--bug " << c.bug << " -> " << c.row; }
@@ -216,7 +228,7 @@ TEST_P(AuditCatches, BugInItsRowShrunk) {
   const BugCase& c = GetParam();
   const AuditRun r = audit("bug-" + c.bug, mesher("--bug " + c.bug),
                            kOwnInputs + " --method centroid --max-findings 1 " + c.args);
-  expect_caught(r, c.bug, c.row, c.detail, nullptr, c.strictly_smaller);
+  expect_caught(r, c.bug, c.row, c.detail, nullptr, c.strictly_smaller, c.deviation);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -227,9 +239,16 @@ INSTANTIATE_TEST_SUITE_P(
                       BugCase{"loop", "termination", "", "--theta 30 --cases 5 --timeout 0.5 --shrink-seconds 4", true},
                       BugCase{"crash", "certificate", "crash", "--theta 30 --cases 5", true},
                       BugCase{"garbage", "certificate", "unreadable", "--theta 30 --cases 5", true},
-                      BugCase{"triangle-centroid", "conformance", "", "--theta 30 --cases 5", true},
-                      BugCase{"no-remark10", "conformance", "", "--theta 20,25,30 --cases 12", true},
-                      BugCase{"shortest-edge", "conformance", "", "--theta 30 --cases 5", true}),
+                      BugCase{"triangle-centroid", "conformance", "", "--theta 30 --cases 5", true, "triangle-centroid"},
+                      BugCase{"no-remark10", "conformance", "", "--theta 20,25,30 --cases 12", true, "remark10-reversed"},
+                      BugCase{"shortest-edge", "conformance", "", "--theta 30 --cases 5", true},
+                      // The deviation catalogue: each named, pictured and shrunk to an input showing it.
+                      BugCase{"area-centroid", "conformance", "", "--theta 30 --cases 5", true, "area-centroid"},
+                      BugCase{"terminal-midpoint", "conformance", "", "--theta 30 --cases 5", true, "terminal-midpoint"},
+                      BugCase{"centroid-not-midpoint", "conformance", "", "--theta 20,25,30 --cases 15", false, "centroid-not-midpoint"},
+                      BugCase{"remark10-reversed", "conformance", "", "--theta 20,25,30 --cases 12", true, "remark10-reversed"},
+                      BugCase{"other-second-longest", "conformance", "", "--theta 20,25,30 --cases 12", true, "other-second-longest"},
+                      BugCase{"good-triangle", "conformance", "", "--theta 25 --cases 5", true, "good-triangle"}),
     [](const ::testing::TestParamInfo<BugCase>& info) {
       std::string name = info.param.bug;
       for (char& ch : name)

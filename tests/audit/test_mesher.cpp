@@ -17,7 +17,9 @@
 // mesh as it is written): the audit then judges the output, not the exit status.
 //
 // Seeded bugs (--bug): non-delaunay, drop-segment, skinny, loop, crash, garbage,
-// triangle-centroid, no-remark10, shortest-edge. Each is described at its use.
+// triangle-centroid, no-remark10, shortest-edge, and one per deviation of the
+// audit's catalogue: area-centroid, terminal-midpoint, centroid-not-midpoint,
+// remark10-reversed, other-second-longest, good-triangle. Each is described at its use.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -64,7 +66,9 @@ using Vertex = Cdt::Vertex_handle;
 
 enum class Bug {
   none, non_delaunay, drop_segment, skinny, loop, crash, garbage,
-  triangle_centroid, no_remark10, shortest_edge
+  triangle_centroid, no_remark10, shortest_edge,
+  // The deviation catalogue's rules (docs/CONFORMANCE.md, "Deviations"), one each.
+  area_centroid, terminal_midpoint, centroid_not_midpoint, remark10_reversed, other_second_longest, good_triangle
 };
 
 struct Options {
@@ -88,7 +92,10 @@ Bug parse_bug(const std::string& s) {
       {"none", Bug::none}, {"non-delaunay", Bug::non_delaunay}, {"drop-segment", Bug::drop_segment},
       {"skinny", Bug::skinny}, {"loop", Bug::loop}, {"crash", Bug::crash}, {"garbage", Bug::garbage},
       {"triangle-centroid", Bug::triangle_centroid}, {"no-remark10", Bug::no_remark10},
-      {"shortest-edge", Bug::shortest_edge}};
+      {"shortest-edge", Bug::shortest_edge}, {"area-centroid", Bug::area_centroid},
+      {"terminal-midpoint", Bug::terminal_midpoint}, {"centroid-not-midpoint", Bug::centroid_not_midpoint},
+      {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
+      {"good-triangle", Bug::good_triangle}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -171,7 +178,10 @@ class Mesher {
   bool edge_less(Face f, int i, Face g, int j) const;
   // Edge indices of f sorted shortest .. longest.
   std::array<int, 3> edges_sorted(Face f) const;
-  bool bad(Face f) const { return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + 1e-9; }
+  // The good-triangle bug: a threshold 3 degrees too high.
+  bool bad(Face f) const {
+    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + (opt_.bug == Bug::good_triangle ? 3 : 1e-9);
+  }
   bool skipped(Face f) const;  // small input angle: left as it is
   const P2& p(Face f, int i) const { return f->vertex(i)->point(); }
 
@@ -366,6 +376,13 @@ bool Mesher::process(Face f) {
     bool c1 = blocked(t1, s1), c2 = blocked(t2, s2);
     const P2 &A = p(t1, Cdt::ccw(l)), &B = p(t1, Cdt::cw(l)), &C = p(t1, l), &D = p(t2, l2);
     P2 quad((A.x() + B.x() + C.x() + D.x()) / 4, (A.y() + B.y() + C.y() + D.y()) / 4);
+    if (opt_.bug == Bug::area_centroid) {
+      // The quad's centre of mass: the triangles' centroids weighted by their areas.
+      double w1 = std::fabs((B.x() - A.x()) * (C.y() - A.y()) - (B.y() - A.y()) * (C.x() - A.x()));
+      double w2 = std::fabs((B.x() - A.x()) * (D.y() - A.y()) - (B.y() - A.y()) * (D.x() - A.x()));
+      quad = P2((w1 * (A.x() + B.x() + C.x()) + w2 * (A.x() + B.x() + D.x())) / (3 * (w1 + w2)),
+                (w1 * (A.y() + B.y() + C.y()) + w2 * (A.y() + B.y() + D.y())) / (3 * (w1 + w2)));
+    }
     if (!opt_.centroid) {
       // Select Point: midpoint of l, or of the first constrained second-longest edge.
       if (c1) v = split_constrained(t1, s1);
@@ -374,10 +391,13 @@ bool Mesher::process(Face f) {
     } else if (!c1 && !c2) {
       if (opt_.bug == Bug::triangle_centroid)  // the terminal triangle's centroid, not the quad's
         v = insert_point(P2((A.x() + B.x() + C.x()) / 3, (A.y() + B.y() + C.y()) / 3), t1);
+      else if (opt_.bug == Bug::terminal_midpoint)  // Lepp-midpoint's point in the centroid method
+        v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
       else
         v = insert_point(quad, t1);
     } else if (c1 && c2) {
-      v = split_constrained(t2, s2);  // "a constrained second longest edge": t2's
+      if (opt_.bug == Bug::centroid_not_midpoint) v = insert_point(quad, t1);  // the centroid where a midpoint is asked for
+      else v = split_constrained(t2, s2);  // "a constrained second longest edge": t2's
     } else {
       // Remark 10: the centroid if it lies strictly inside the other triangle,
       // else the midpoint of the constrained second-longest edge.
@@ -386,8 +406,17 @@ bool Mesher::process(Face f) {
       bool inside = true;
       for (int i = 0; i < 3; ++i)
         if (CGAL::orientation(p(other, Cdt::ccw(i)), p(other, Cdt::cw(i)), quad) != CGAL::LEFT_TURN) inside = false;
-      if (inside || opt_.bug == Bug::no_remark10) v = insert_point(quad, other);
-      else v = split_constrained(star, ls);
+      if (opt_.bug == Bug::remark10_reversed) inside = !inside;  // the centroid when it lies in t*, the midpoint otherwise
+      if (inside || opt_.bug == Bug::no_remark10) {
+        v = insert_point(quad, other);
+      } else if (opt_.bug == Bug::other_second_longest) {
+        // The wrong second-longest edge: the other triangle's, not t*'s constrained one.
+        int lo = c1 ? s2 : s1;
+        const P2 &U = p(other, Cdt::ccw(lo)), &W = p(other, Cdt::cw(lo));
+        v = insert_point(P2((U.x() + W.x()) / 2, (U.y() + W.y()) / 2), other);
+      } else {
+        v = split_constrained(star, ls);
+      }
     }
   }
   if (v == Vertex()) return false;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <csignal>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,85 @@ TEST(TestMesherSelfCheck, SkinnyBugShows) {
 TEST(TestMesherSelfCheck, TriangleCentroidBugShows) { EXPECT_GT(shows_nonconformance("triangle-centroid"), 0u); }
 TEST(TestMesherSelfCheck, NoRemark10BugShows) { EXPECT_GT(shows_nonconformance("no-remark10"), 0u); }
 TEST(TestMesherSelfCheck, ShortestEdgeBugShows) { EXPECT_GT(shows_nonconformance("shortest-edge"), 0u); }
+
+// Each deviation bug of the test mesher is caught by conformance and named by
+// the catalogue (docs/CONFORMANCE.md, "Deviations"): every failing run's first
+// failing step is that deviation, with the mesh before the step and the place
+// where it matched; for the deviations that are a whole rule set, some run's
+// every step fits that one variant.
+struct DeviationBug {
+  std::string bug, deviation;
+};
+class DeviationNamed : public ::testing::TestWithParam<DeviationBug> {};
+
+TEST_P(DeviationNamed, EveryFailureNamed) {
+  const DeviationBug& d = GetParam();
+  std::size_t failed = 0, consistent = 0;
+  for (const Case& c : cases()) {
+    if (c.method != lepp::Method::Centroid) continue;
+    const MesherRun r = run_mesher(c, "--bug " + d.bug);
+    if (r.status != 0) continue;
+    const lepp::audit::ConformanceReport conf = conformance(c, r);
+    if (conf.conforms) continue;
+    ++failed;
+    ASSERT_TRUE(conf.failure);
+    EXPECT_EQ(conf.failure->deviation, d.deviation) << name(c) << "\n" << lepp::audit::describe(conf);
+    EXPECT_FALSE(conf.failure->mesh.triangles.empty()) << name(c);
+    if (conf.failure->deviation == d.deviation) {
+      ASSERT_TRUE(conf.failure->deviation_at) << name(c);
+      EXPECT_LE(conf.failure->deviation_at->distance, conf.failure->deviation_at->tolerance);
+      EXPECT_NE(lepp::audit::describe(conf).find("deviation: " + d.deviation), std::string::npos);
+    }
+    consistent += conf.failure->consistent_variant;
+  }
+  EXPECT_GT(failed, 0u) << "--bug " << d.bug << " never caught";
+  if (d.deviation != "good-triangle") EXPECT_GT(consistent, 0u) << "--bug " << d.bug << ": no run fits one variant";
+  std::cout << "--bug " << d.bug << ": " << failed << " failing runs named " << d.deviation << ", " << consistent
+            << " fit one consistent variant\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalogue, DeviationNamed,
+                         ::testing::Values(DeviationBug{"area-centroid", "area-centroid"},
+                                           DeviationBug{"triangle-centroid", "triangle-centroid"},
+                                           DeviationBug{"terminal-midpoint", "terminal-midpoint"},
+                                           DeviationBug{"centroid-not-midpoint", "centroid-not-midpoint"},
+                                           DeviationBug{"remark10-reversed", "remark10-reversed"},
+                                           DeviationBug{"no-remark10", "remark10-reversed"},
+                                           DeviationBug{"other-second-longest", "other-second-longest"},
+                                           DeviationBug{"good-triangle", "good-triangle"}),
+                         [](const ::testing::TestParamInfo<DeviationBug>& info) {
+                           std::string n = info.param.bug;
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n;
+                         });
+
+// The declared reading: the area-centroid program conforms when its reading
+// is declared, and the program without bugs does not (where the two differ).
+TEST(TestMesherSelfCheck, DeclaredAreaReading) {
+  std::size_t area_conforms = 0, vertex_rejected = 0, runs = 0;
+  for (const Case& c : cases()) {
+    if (c.method != lepp::Method::Centroid) continue;
+    ++runs;
+    lepp::audit::ConformanceOptions o;
+    o.method = c.method;
+    o.min_angle_deg = c.theta;
+    o.area_centroid = true;
+    const MesherRun bugged = run_mesher(c, "--bug area-centroid");
+    ASSERT_EQ(bugged.status, 0);
+    const auto with_area = lepp::audit::check_conformance(validated(c.input), lepp::read_trace(bugged.prefix + ".trace"), o);
+    area_conforms += with_area.conforms;
+    EXPECT_TRUE(with_area.area_centroid);
+    const MesherRun plain = run_mesher(c, "");
+    const auto vertex_under_area = lepp::audit::check_conformance(validated(c.input), lepp::read_trace(plain.prefix + ".trace"), o);
+    if (!vertex_under_area.conforms) {
+      ++vertex_rejected;
+      EXPECT_EQ(vertex_under_area.failure->deviation, "vertex-centroid") << name(c) << "\n" << lepp::audit::describe(vertex_under_area);
+    }
+  }
+  EXPECT_EQ(area_conforms, runs);
+  EXPECT_GT(vertex_rejected, 0u);
+}
 
 TEST(TestMesherSelfCheck, CrashGarbageLoopBugsShow) {
   const Case c = cases().back();

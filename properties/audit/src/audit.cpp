@@ -80,6 +80,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   rep.thetas = opt.thetas;
   rep.seed = opt.inputs.seed;
   rep.out_dir = opt.out_dir;
+  rep.area_centroid = opt.checks.area_centroid;
   for (std::size_t i = 0; i < kRows; ++i) rep.rows[i].row = kAllRows[i];
 
   InputSources src = opt.inputs;
@@ -153,6 +154,9 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
         if (r.verdict != Verdict::Failed && r.verdict != Verdict::Finding) continue;
         any_failed = any_failed || r.verdict == Verdict::Failed;
         if (s.first_detail.empty()) s.first_detail = fmt::format("{} at theta {}: {}", input.name, theta, r.detail);
+        if (r.verdict == Verdict::Failed && !r.deviation.empty() && s.deviations[r.deviation]++ == 0)
+          s.deviation_first[r.deviation] = fmt::format("step {} of {} at {} degrees", r.step, input.name, theta_text(theta));
+        if (r.verdict == Verdict::Failed && !r.deviation.empty() && r.consistent_variant) ++s.deviation_consistent[r.deviation];
         if (s.counterexamples.size() >= opt.max_findings_per_row) continue;
         // One saved counterexample per input and row: the next ones come from other inputs.
         if (!saved.insert({static_cast<int>(row), input.name}).second) continue;
@@ -200,6 +204,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
         cx.shrink_steps = sh.steps;
         cx.shrink_runs = sh.runs;
         cx.detail = last_result[row].detail;
+        cx.deviation = last_result[row].deviation;
         if (!opt.reproduce_prefix.empty())
           cx.reproduce = fmt::format("{} --method {} --theta {} --timeout {} --inputs {}", opt.reproduce_prefix,
                                      to_string(opt.method), theta_text(theta), opt.timeout_seconds, cx.dir + "/input.poly");

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/conformance.h"
+#include "lepp/audit/diagnosis.h"
 #include "lepp/gen.h"
 
 namespace lepp::audit {
@@ -158,13 +159,32 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     c[Row::Conformance] = {Verdict::NotChecked, "no trace", {}};
     return c;
   }
+  std::vector<certify::Violation> scratch_violations;
   ConformanceOptions co;
   co.method = req.method;
   co.min_angle_deg = req.theta;
   co.angle_tolerance_deg = options.angle_tolerance_deg;
   co.point_tolerance_ulps = options.point_tolerance_ulps;
+  co.area_centroid = options.area_centroid;
+  const bool not_delaunay = !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
   try {
     const ConformanceReport conf = check_conformance(pslg, *run.trace, co);
+    // Theorem 2 on the terminal pair of every replayed step, reported like a conformance finding.
+    if (conf.theorem2_failure && c[Row::Theorem2].verdict == Verdict::Held) {
+      const Theorem2StepFailure& f = *conf.theorem2_failure;
+      RowResult r;
+      r.verdict = Verdict::Failed;
+      r.step = static_cast<long>(f.step) + 1;
+      r.detail = fmt::format("step {} of {} ({:.17g}, {:.17g}): terminal edge ({},{}) of the replayed mesh: the angle at vertex {} "
+                             "is over 120 degrees (about {:.6g})",
+                             r.step, conf.steps, f.point.x, f.point.y, f.terminal_edge[0], f.terminal_edge[1], f.apex, f.angle_deg);
+      r.diagnosis = std::make_shared<StepDiagnosis>(theorem2_diagnosis(conf, req.theta));
+      certify::Violation v;
+      v.message = r.detail;
+      v.points.push_back(f.point);
+      r.violations.push_back(std::move(v));
+      c[Row::Theorem2] = std::move(r);
+    }
     if (conf.conforms) {
       c[Row::Conformance] = {Verdict::Held, "", {}};
     } else {
@@ -173,7 +193,17 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
       r.detail = conf.failure ? fmt::format("step {} of {} ({:.17g}, {:.17g}): {}", conf.failure->step + 1, conf.steps,
                                             conf.failure->point.x, conf.failure->point.y, conf.failure->reason)
                               : "does not conform";
+      r.deviation = conf.failure ? conf.failure->deviation : "unknown";
+      r.step = conf.failure ? static_cast<long>(conf.failure->step) + 1 : 0;
       if (conf.failure) {
+        r.detail += fmt::format("; deviation {}: {}", conf.failure->deviation, conf.failure->deviation_what);
+        r.consistent_variant = conf.failure->consistent_variant;
+        if (r.consistent_variant) r.detail += fmt::format(" (every step fits this one variant)");
+        if (not_delaunay)
+          r.detail += "; the final mesh is not constrained Delaunay: the program's intermediate meshes probably differ "
+                      "from the replay's (missing flips are the likely cause)";
+        if (co.area_centroid) r.detail += " [reading: area centroid]";
+        r.diagnosis = std::make_shared<StepDiagnosis>(conformance_diagnosis(conf, req.theta, not_delaunay));
         certify::Violation v;
         v.message = describe(conf, 3);
         v.points.push_back(conf.failure->point);
@@ -183,7 +213,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
       c[Row::Conformance] = std::move(r);
     }
   } catch (const std::exception& e) {
-    c[Row::Conformance] = {Verdict::Failed, std::string("the replay stopped: ") + e.what(), {}};
+    c[Row::Conformance] = {Verdict::Failed, std::string("the replay stopped: ") + e.what(), {}, "unknown"};
   }
   return c;
 }

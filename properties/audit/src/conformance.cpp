@@ -23,16 +23,14 @@ ConformanceCandidate candidate(const reference::ReplayChoice& c) {
   out.point = c.point;
   out.distance = c.distance;
   out.tolerance = c.tolerance;
+  out.euclidean = c.euclidean;
+  out.t1 = c.t1;
+  out.t2 = c.t2;
+  out.split_edge = c.split_edge;
   return out;
 }
 
-std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
-
-}  // namespace
-
-ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
-                                    const ConformanceOptions& options) {
-  auto start = std::chrono::steady_clock::now();
+reference::ReplayRules rules_of(const ConformanceOptions& options) {
   reference::ReplayRules rules;
   rules.method = options.method;
   rules.min_angle_deg = options.min_angle_deg;
@@ -42,10 +40,44 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   rules.region_area_bounds = options.region_area_bounds;
   rules.follow_cocircular_flips = options.follow_cocircular_flips;
   rules.cocircular_search_budget = options.cocircular_search_budget;
+  rules.centroid = options.area_centroid ? reference::CentroidReading::Area : reference::CentroidReading::Vertex;
+  return rules;
+}
+
+// The whole trace again with one catalogue rule allowed wherever it applies:
+// true when every step is the paper's choice or the variant's; variant_steps
+// counts the variant's.
+bool fits_variant(const Pslg& validated, const std::vector<Point>& trace, reference::ReplayRules rules,
+                  reference::Deviation variant, std::size_t& variant_steps) {
+  rules.variant = variant;
+  reference::Replay replay(validated, rules);
+  variant_steps = 0;
+  for (const Point& p : trace) {
+    reference::ReplayChoice choice;
+    if (!replay.match(p, choice)) return false;
+    try {
+      replay.insert(p, choice);
+    } catch (const std::runtime_error&) {
+      return false;
+    }
+    variant_steps += choice.deviation == variant;
+  }
+  return true;
+}
+
+std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
+
+}  // namespace
+
+ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
+                                    const ConformanceOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  const reference::ReplayRules rules = rules_of(options);
   reference::Replay replay(validated, rules);
 
   ConformanceReport report;
   report.steps = trace.size();
+  report.area_centroid = options.area_centroid;
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const Point& p = trace[i];
     reference::ReplayChoice choice;
@@ -53,6 +85,22 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
       reason = "not a finite point";
     } else if (replay.match(p, choice)) {
+      if (options.theorem2_every_step && choice.t2[0] >= 0) {
+        ++report.theorem2_pairs_checked;
+        const reference::Theorem2Check t2 = replay.theorem2(choice);
+        if (!t2.holds && !report.theorem2_failure) {
+          Theorem2StepFailure f;
+          f.step = i;
+          f.point = p;
+          f.terminal_edge = choice.terminal_edge;
+          f.t1 = choice.t1;
+          f.t2 = choice.t2;
+          f.apex = t2.apex;
+          f.angle_deg = t2.angle_deg;
+          f.mesh = replay.mesh();
+          report.theorem2_failure = std::move(f);
+        }
+      }
       try {
         replay.insert(p, choice);
         ++report.steps_checked;
@@ -80,10 +128,29 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
                              all.front().distance, all.front().tolerance);
     }
     failure.reason = reason;
+    // The catalogue, on the same mesh with the same arithmetic and tolerance.
+    const reference::DeviationMatch dm = replay.diagnose(p);
+    failure.deviation = reference::to_string(dm.deviation);
+    failure.deviation_what = dm.what;
+    failure.deviation_definition = reference::definition(dm.deviation);
+    if (dm.deviation != reference::Deviation::Unknown) {
+      failure.deviation_at = candidate(dm.where);
+      for (const auto& c : dm.paper) failure.deviation_paper.push_back(candidate(c));
+    }
     report.cocircular_search_exhausted = replay.cocircular_search_exhausted();
     report.conforms = false;
     report.failure = std::move(failure);
     break;
+  }
+  if (report.failure && options.check_variant) {
+    const reference::Deviation d = [&] {
+      for (int k = 0; k < reference::kDeviations; ++k)
+        if (report.failure->deviation == reference::to_string(static_cast<reference::Deviation>(k)))
+          return static_cast<reference::Deviation>(k);
+      return reference::Deviation::Unknown;
+    }();
+    if (reference::has_variant(d))
+      report.failure->consistent_variant = fits_variant(validated, trace, rules, d, report.failure->variant_steps);
   }
   report.cocircular_ties = replay.cocircular_ties();
   report.cocircular_flips = replay.cocircular_flips();
@@ -95,6 +162,14 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
   if (r.conforms) return fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
   const ConformanceFailure& f = *r.failure;
   std::string s = fmt::format("step {} of {}: point ({:.17g}, {:.17g}): {}\n", f.step, r.steps, f.point.x, f.point.y, f.reason);
+  s += fmt::format("deviation: {}: {}", f.deviation, f.deviation_what);
+  if (f.deviation_at) s += fmt::format(", at ({:.17g}, {:.17g}), {:.3g} away", f.deviation_at->point.x, f.deviation_at->point.y, f.deviation_at->euclidean);
+  s += "\n";
+  for (const ConformanceCandidate& c : f.deviation_paper)
+    s += fmt::format("  the paper's choice there: ({:.17g}, {:.17g}) {}, {:.3g} away\n", c.point.x, c.point.y, to_string(c.rule), c.euclidean);
+  if (f.consistent_variant)
+    s += fmt::format("every one of the {} steps is the paper's choice or {}'s ({} of them {}'s): one consistent variant\n", r.steps,
+                     f.deviation, f.variant_steps, f.deviation);
   std::size_t n = std::min(max_candidates, f.candidates.size());
   if (n) s += fmt::format("nearest of {} choices at this step:\n", f.candidates_total);
   for (std::size_t i = 0; i < n; ++i) {
@@ -102,8 +177,13 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
     std::string lepp;
     for (const Tri& t : c.lepp) lepp += " " + tri(t);
     s += fmt::format("  ({:.17g}, {:.17g}) {} distance {:.3g}: bad {}, Lepp{}, terminal edge ({},{})\n", c.point.x, c.point.y,
-                     to_string(c.rule), c.distance, tri(c.bad), lepp, c.terminal_edge[0], c.terminal_edge[1]);
+                     to_string(c.rule), c.euclidean, tri(c.bad), lepp, c.terminal_edge[0], c.terminal_edge[1]);
   }
+  if (r.theorem2_failure)
+    s += fmt::format("Theorem 2 fails at step {}: the angle at vertex {} of terminal edge ({},{}) is over 120 degrees (about {:.6g})\n",
+                     r.theorem2_failure->step, r.theorem2_failure->apex, r.theorem2_failure->terminal_edge[0],
+                     r.theorem2_failure->terminal_edge[1], r.theorem2_failure->angle_deg);
+  if (r.area_centroid) s += "reading declared: the quad centroid is its area centroid (--centroid area)\n";
   if (r.cocircular_search_exhausted)
     s += "note: the search of the cocircular cells' other triangulations gave up (cocircular_search_budget): "
          "the point may be a choice of a constrained Delaunay mesh it did not reach\n";

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "lepp/audit/diagnosis.h"
 #include "lepp/io.h"
 #include "lepp/render.h"
 #include "xml_escape.h"
@@ -148,6 +149,15 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
       row_passage(row), result.detail, to_string(run.status), run.detail.empty() ? "" : " (" + run.detail + ")",
       input.vertices.size(), input.segments.size(), input.holes.size(), text.input_origin);
   if (!text.reproduce.empty()) md += "- reproduce: `" + text.reproduce + "`\n";
+  // A step finding: the mesh just before the step, and the named deviation.
+  if (result.diagnosis) {
+    md += diagnosis_markdown(*result.diagnosis);
+    try {
+      write_text(d / "step.svg", diagnosis_svg(*result.diagnosis, fmt::format("{} step {}", row_key(row), result.diagnosis->step)));
+    } catch (const std::exception& e) {
+      md += fmt::format("\n(step.svg not drawn: {})\n", e.what());
+    }
+  }
   write_text(d / "finding.md", md);
 }
 

@@ -33,6 +33,38 @@ std::string smallest_cell(const RowSummary& r) {
 
 }  // namespace
 
+std::string deviations_text(const AuditReport& rep) {
+  const RowSummary& r = rep[Row::Conformance];
+  std::string md;
+  if (rep.area_centroid)
+    md += "\nConformance is checked against the declared reading `--centroid area`: the quad centroid is its area "
+          "centroid (centre of mass), not the paper's vertex average (A+B+C+D)/4 of Lemma 11.\n";
+  if (r.deviations.empty()) return md;
+  md += "\nConformance deviations (the catalogue rule the first failing step of each run is, docs/CONFORMANCE.md):";
+  std::size_t named = 0;
+  bool first = true;
+  for (const auto& [name, runs] : r.deviations) {
+    named += runs;
+    auto it = r.deviation_first.find(name);
+    md += fmt::format("{} {}: {} run{}", first ? "" : ";", name, runs, runs == 1 ? "" : "s");
+    if (it != r.deviation_first.end()) md += ", first at " + it->second;
+    auto c = r.deviation_consistent.find(name);
+    if (c != r.deviation_consistent.end() && c->second > 0)
+      md += fmt::format(" (every traced step of {} of them fits {} as one consistent variant)", c->second, name);
+    first = false;
+  }
+  md += ".\n";
+  if (r.deviations.size() == 1) {
+    const auto& [name, runs] = *r.deviations.begin();
+    auto c = r.deviation_consistent.find(name);
+    if (runs == r.failed && c != r.deviation_consistent.end() && c->second == runs)
+      md += fmt::format("Every traced step of the program fits one consistent variant: {} in place of the paper's rule where they "
+                        "differ ({} of {} failing runs).\n",
+                        name, runs, r.failed);
+  }
+  return md;
+}
+
 std::string md_cell(const std::string& s) {
   std::string r;
   for (char c : s) r += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
@@ -53,6 +85,7 @@ std::string markdown_report(const AuditReport& rep) {
     md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", i + 1, row_key(r.row), md_cell(row_passage(r.row)),
                       r.run, r.held, failed, verdict_of(r), smallest_cell(r));
   }
+  md += deviations_text(rep);
   md += "\nRuns a row did not apply to: ";
   for (std::size_t i = 0; i < kRows; ++i) {
     const RowSummary& r = rep.rows[i];
@@ -96,7 +129,7 @@ nlohmann::json json_report(const AuditReport& rep) {
   nlohmann::json rows = nlohmann::json::array();
   for (const RowSummary& r : rep.rows) {
     nlohmann::json cx = nlohmann::json::array();
-    for (const Counterexample& c : r.counterexamples)
+    for (const Counterexample& c : r.counterexamples) {
       cx.push_back({{"dir", c.dir},
                     {"input", c.input},
                     {"theta", c.theta},
@@ -110,6 +143,8 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"shrink_runs", c.shrink_runs},
                     {"detail", c.detail},
                     {"reproduce", c.reproduce}});
+      if (!c.deviation.empty()) cx.back()["deviation"] = c.deviation;
+    }
     rows.push_back({{"check", row_key(r.row)},
                     {"statement", row_statement(r.row)},
                     {"paper", row_passage(r.row)},
@@ -121,6 +156,8 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"not_checked", r.not_checked},
                     {"holds", r.holds()},
                     {"first", r.first_detail},
+                    {"deviations", r.deviations},
+                    {"deviations_consistent", r.deviation_consistent},
                     {"counterexamples", cx}});
   }
   nlohmann::json ratios = nlohmann::json::array();
@@ -136,6 +173,7 @@ nlohmann::json json_report(const AuditReport& rep) {
           {"runs", rep.cases},
           {"holds", rep.holds()},
           {"rows", rows},
+          {"centroid", rep.area_centroid ? "area" : "vertex"},
           {"points_ratio", ratios},
           {"run_status", statuses},
           {"exempt_triangles", rep.exempt_triangles},

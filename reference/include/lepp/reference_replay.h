@@ -16,6 +16,34 @@
 
 namespace lepp::reference {
 
+// How "the centroid of the quad" is read: the paper's, the average of the
+// four vertices (A+B+C+D)/4 as in the proof of Lemma 11, or the quad's area
+// centroid (its centre of mass), which a user may declare (`--centroid area`).
+enum class CentroidReading { Vertex, Area };
+const char* to_string(CentroidReading reading);  // "vertex", "area"
+
+// The deviation catalogue (docs/CONFORMANCE.md, "Deviations"): the other rules
+// a Lepp implementation plausibly follows, each computed exactly like the
+// paper's choices on the same mesh and matched with the same tolerance.
+// The order is the order they are tried in: the first that matches names it.
+enum class Deviation {
+  AreaCentroid,         // the terminal quad's area centroid (vertex reading)
+  VertexCentroid,       // the vertex average (declared area reading)
+  TriangleCentroid,     // the centroid of one terminal triangle
+  TerminalMidpoint,     // the terminal edge's midpoint where the paper chooses otherwise
+  CentroidNotMidpoint,  // the quad centroid where the paper asks for a midpoint (not Remark 10's case)
+  Remark10Reversed,     // Remark 10 the wrong way round
+  OtherSecondLongest,   // the midpoint of another edge of a terminal triangle
+  Circumcenter,         // the bad triangle's circumcenter
+  OffCenter,            // the bad triangle's off-center (Ungor)
+  GoodTriangle,         // the paper's choice for the Lepp of a triangle that is not bad
+  Precision,            // within 1000 times the tolerance of a paper choice
+  Unknown,              // none of these
+};
+constexpr int kDeviations = 12;
+const char* to_string(Deviation deviation);   // "area-centroid", ..., "unknown"
+const char* definition(Deviation deviation);  // one sentence, as in docs/CONFORMANCE.md
+
 // What counts as the paper's choice (docs/AUDIT.md, "Conformance").
 struct ReplayRules {
   Method method = Method::Centroid;
@@ -41,7 +69,17 @@ struct ReplayRules {
   // tried (any triangulation of each exactly cocircular cell), looking at
   // most at this many triangles per point.
   std::size_t cocircular_search_budget = 200000;
+  CentroidReading centroid = CentroidReading::Vertex;
+  // A consistent variant of the algorithm (a catalogue rule put in place of
+  // the paper's where it applies; Unknown: the paper's own rules). Used to ask
+  // whether every step of a trace fits one deviation: AreaCentroid (the area
+  // reading), TriangleCentroid, TerminalMidpoint, CentroidNotMidpoint and
+  // Remark10Reversed have a variant; the others are not a rule set.
+  Deviation variant = Deviation::Unknown;
 };
+
+// The deviations that are a whole rule set (ReplayRules::variant).
+bool has_variant(Deviation deviation);
 
 // One choice the paper allows at this moment.
 struct ReplayChoice {
@@ -52,8 +90,28 @@ struct ReplayChoice {
   Rule rule = Rule::QuadCentroid;
   Point point;                   // the exact choice, rounded to the nearest doubles
   double distance = 0;           // max(|dx|, |dy|) from the point asked about to the exact choice
+  double euclidean = 0;          // the Euclidean distance, for reports
   double tolerance = 0;          // the point tolerance for this choice, same units
   std::array<int, 2> split_edge{{-1, -1}};  // the constrained edge the choice splits, or -1s
+  Deviation deviation = Deviation::Unknown;  // a variant's point (ReplayRules::variant); Unknown: the paper's
+};
+
+// The catalogue rule a point is, at one step (Replay::diagnose).
+struct DeviationMatch {
+  Deviation deviation = Deviation::Unknown;
+  // Where it matched: the bad (or, for GoodTriangle, good) triangle, its Lepp,
+  // the terminal pair, and the rule's point (point, distance, tolerance); rule
+  // is the paper's rule at that configuration. Unset (-1s) for Unknown.
+  ReplayChoice where;
+  std::string what;                  // one line: which point of which configuration
+  std::vector<ReplayChoice> paper;   // the paper's choices at that configuration
+};
+
+// Theorem 2 on the terminal pair of one replayed step.
+struct Theorem2Check {
+  bool holds = true;
+  int apex = -1;                     // the vertex whose angle is over 120 degrees
+  double angle_deg = 0;              // about (display only; the test is exact)
 };
 
 class Replay {
@@ -77,6 +135,13 @@ class Replay {
   // For reports (slow: walks the Lepp of every bad triangle): every choice of
   // the current mesh, nearest to p first, at most limit; total gets how many.
   std::vector<ReplayChoice> all_choices(const Point& p, std::size_t limit, std::size_t& total);
+  // Which catalogue rule p is at the current mesh (slow, for reports: walks
+  // the Lepp of every triangle). Call it where match(p) failed.
+  DeviationMatch diagnose(const Point& p) const;
+  // Theorem 2 (Section 2) on the terminal pair of a choice match() returned,
+  // before inserting it: the angles at both apexes of an unconstrained
+  // terminal edge are at most 120 degrees, exactly (cos >= -1/2).
+  Theorem2Check theorem2(const ReplayChoice& choice) const;
   // The current mesh (domain triangles), canonical.
   Mesh mesh() const;
   std::size_t steiner_points() const;

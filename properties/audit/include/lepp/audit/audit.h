@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,6 +60,7 @@ struct Counterexample {
   std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;  // of the input as found
   std::size_t shrink_steps = 0, shrink_runs = 0;
   std::string detail;       // the row's one line on the shrunk input
+  std::string deviation;    // conformance: the named deviation on the shrunk input (RowResult::deviation)
   std::string reproduce;    // one command line
 };
 
@@ -67,6 +69,11 @@ struct RowSummary {
   std::size_t run = 0, held = 0, failed = 0, findings = 0, not_applicable = 0, not_checked = 0;
   std::vector<Counterexample> counterexamples;  // saved ones, smallest first
   std::string first_detail;                     // the first failure or finding seen, before shrinking
+  // Conformance: failed runs by named deviation, and where each was first seen
+  // ("step 2 of corpus/paper/square400.poly at theta 25").
+  std::map<std::string, std::size_t> deviations;
+  std::map<std::string, std::string> deviation_first;
+  std::map<std::string, std::size_t> deviation_consistent;  // of those, runs whose every traced step fits that one variant
   bool holds() const { return failed == 0; }
 };
 
@@ -84,6 +91,7 @@ struct AuditReport {
   std::uint64_t seed = 0;
   std::size_t inputs = 0, cases = 0;
   std::array<RowSummary, kRows> rows;
+  bool area_centroid = false;                  // conformance checked against the declared area-centroid reading
   std::vector<PointsRatio> ratios;
   std::vector<std::string> skipped_inputs;
   std::size_t status_counts[6] = {};          // by RunStatus

@@ -6,6 +6,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "lepp/certify.h"
 
 namespace lepp::audit {
+
+struct StepDiagnosis;  // lepp/audit/diagnosis.h
 
 enum class Row { Certificate, MinAngle, Theorem2, Termination, Conformance };
 constexpr std::size_t kRows = 5;
@@ -36,12 +39,21 @@ struct RowResult {
   Verdict verdict = Verdict::NotChecked;
   std::string detail;                         // one line: the first violation, why not applicable, ...
   std::vector<certify::Violation> violations; // what to mark in the picture
+  // Conformance failures: the named deviation (ConformanceFailure::deviation);
+  // empty for the other rows. Same name, same bug: shrinking keeps it.
+  std::string deviation;
+  long step = 0;  // conformance, stepwise Theorem 2: the failing step, 1-based (0: not a step finding)
+  // A step finding's picture and words (lepp/audit/diagnosis.h); null otherwise.
+  std::shared_ptr<const StepDiagnosis> diagnosis;
+  // Conformance: every traced step fits the deviation's variant (ConformanceFailure::consistent_variant).
+  bool consistent_variant = false;
 };
 
 // Passed to the conformance replay (lepp/audit/conformance.h, ConformanceOptions).
 struct CheckOptions {
   double angle_tolerance_deg = 1e-3;  // a triangle this close above theta may count as bad or good
   double point_tolerance_ulps = 8;    // how far a point may be from the exact choice, DBL_EPSILON x |coordinate| units
+  bool area_centroid = false;         // the declared reading: the quad centroid is its area centroid (--centroid area)
 };
 
 struct CaseResult {

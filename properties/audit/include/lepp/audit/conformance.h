@@ -39,6 +39,16 @@ struct ConformanceOptions {
   bool follow_cocircular_flips = true;
   // Triangles the search of the cells' other triangulations may look at per point.
   std::size_t cocircular_search_budget = 200000;
+  // The declared reading of "the centroid of the quad": false, the paper's
+  // vertex average (A+B+C+D)/4 (Lemma 11); true, the area centroid.
+  bool area_centroid = false;
+  // At a failing step whose deviation is a whole rule set (area-centroid,
+  // triangle-centroid, terminal-midpoint, centroid-not-midpoint,
+  // remark10-reversed, other-second-longest), replay the trace again with that
+  // rule allowed wherever it applies: does every step fit that one variant?
+  bool check_variant = true;
+  // Theorem 2 on the terminal pair of every replayed step.
+  bool theorem2_every_step = true;
 };
 
 // One choice the paper allows, as reported for a failing step.
@@ -49,7 +59,10 @@ struct ConformanceCandidate {
   Rule rule = Rule::QuadCentroid;
   Point point;                    // the exact choice, rounded
   double distance = 0;            // max(|dx|, |dy|) to the trace's point
-  double tolerance = 0;           // the point tolerance for this choice
+  double tolerance = 0;           // the point tolerance for this choice (same units as distance)
+  double euclidean = 0;           // the Euclidean distance to the trace's point, for reports
+  Tri t1{{-1, -1, -1}}, t2{{-1, -1, -1}};  // the terminal pair (t2 -1s: constrained terminal edge)
+  std::array<int, 2> split_edge{{-1, -1}};  // a midpoint's edge
 };
 
 struct ConformanceFailure {
@@ -60,6 +73,31 @@ struct ConformanceFailure {
   std::size_t candidates_total = 0;              // before the cap
   double nearest_distance = -1;   // -1: the mesh had no bad triangle
   Mesh mesh;                      // the mesh just before the step (vertex ids as in the replay)
+  // The named deviation that explains the point (docs/CONFORMANCE.md,
+  // "Deviations"): "area-centroid", "remark10-reversed", ..., "unknown". Part of
+  // the JSON contract, and of a conformance failure's shrink signature.
+  std::string deviation = "unknown";
+  std::string deviation_what;     // one line: which point of which configuration it is
+  std::string deviation_definition;  // the catalogue's definition of the name
+  // Where the deviation matched (its bad triangle, Lepp, terminal pair, the
+  // rule's point) and the paper's choices at that configuration; none for unknown.
+  std::optional<ConformanceCandidate> deviation_at;
+  std::vector<ConformanceCandidate> deviation_paper;
+  // check_variant: every step of the trace is the paper's choice or this
+  // deviation's, and variant_steps of them are the deviation's.
+  bool consistent_variant = false;
+  std::size_t variant_steps = 0;
+};
+
+// Theorem 2 failing on the terminal pair of a replayed step.
+struct Theorem2StepFailure {
+  std::size_t step = 0;                       // 0-based index in the trace
+  Point point;                                // the trace's point at that step
+  std::array<int, 2> terminal_edge{{-1, -1}};
+  Tri t1{{-1, -1, -1}}, t2{{-1, -1, -1}};
+  int apex = -1;                              // the vertex whose angle is over 120 degrees
+  double angle_deg = 0;                       // about
+  Mesh mesh;                                  // the mesh just before the step
 };
 
 struct ConformanceReport {
@@ -70,6 +108,9 @@ struct ConformanceReport {
   std::int64_t cocircular_flips = 0;  // cocircular edges flipped to follow the implementation
   bool cocircular_search_exhausted = false;  // the failing step's search of the cells ran out of budget
   std::optional<ConformanceFailure> failure;
+  std::optional<Theorem2StepFailure> theorem2_failure;  // the first step whose terminal pair breaks Theorem 2
+  std::size_t theorem2_pairs_checked = 0;               // unconstrained terminal pairs of the replayed steps
+  bool area_centroid = false;                           // the reading checked against
   double seconds = 0;
 };
 

@@ -15,6 +15,10 @@ std::string markdown_report(const AuditReport& report);
 nlohmann::json json_report(const AuditReport& report);
 std::string junit_report(const AuditReport& report);
 
+// The conformance row's deviations, by name, and the declared reading: the
+// paragraph of the markdown report under the table.
+std::string deviations_text(const AuditReport& report);
+
 // A markdown table cell: pipes escaped, one line, at most 200 characters.
 std::string md_cell(const std::string& text);
 

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The deviation catalogue's rules that the test mesher does not seed
+// (circumcenter, off-center, precision, unknown), the catalogue's names, and
+// Theorem 2 at a step rejecting a pair that breaks it. The seeded ones are in
+// tests/audit (test_mesher_selfcheck_test.cpp, audit_test_mesher_test.cpp).
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <set>
+
+#include "lepp/angle.h"
+#include "lepp/reference_replay.h"
+#include "lepp/validate.h"
+
+namespace {
+
+using lepp::Point;
+using lepp::reference::Deviation;
+using lepp::reference::Replay;
+using lepp::reference::ReplayRules;
+
+// A quadrilateral whose CDT has a skinny triangle: a long, flat box with a
+// vertex pushed in.
+lepp::Pslg flat_box() {
+  lepp::Pslg p;
+  p.vertices = {{0, 0}, {10, 0}, {10, 1}, {0, 1}, {5, 0.9}};
+  p.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  std::vector<std::string> warnings;
+  return lepp::validate(p, warnings);
+}
+
+double min_angle(const Point& a, const Point& b, const Point& c) {
+  auto at = [](const Point& o, const Point& u, const Point& v) {
+    return std::atan2(std::abs((u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x)),
+                      (u.x - o.x) * (v.x - o.x) + (u.y - o.y) * (v.y - o.y)) * 180 / M_PI;
+  };
+  return std::min({at(a, b, c), at(b, c, a), at(c, a, b)});
+}
+
+TEST(DeviationCatalogue, NamesAreTheContract) {
+  std::set<std::string> names;
+  for (int k = 0; k < lepp::reference::kDeviations; ++k) {
+    const auto d = static_cast<Deviation>(k);
+    names.insert(lepp::reference::to_string(d));
+    EXPECT_GT(std::string(lepp::reference::definition(d)).size(), 10u);
+  }
+  for (const char* n : {"area-centroid", "triangle-centroid", "terminal-midpoint", "centroid-not-midpoint", "remark10-reversed",
+                        "other-second-longest", "good-triangle", "circumcenter", "off-center", "precision", "unknown"})
+    EXPECT_TRUE(names.count(n)) << n;
+  EXPECT_EQ(names.size(), static_cast<std::size_t>(lepp::reference::kDeviations));
+}
+
+TEST(DeviationCatalogue, CircumcenterOffCenterPrecisionUnknown) {
+  const lepp::Pslg pslg = flat_box();
+  ReplayRules rules;
+  rules.min_angle_deg = 30;
+  Replay replay(pslg, rules);
+  const lepp::Mesh mesh = replay.mesh();
+  // The skinniest triangle: bad.
+  const lepp::Tri* worst = nullptr;
+  double worst_angle = 90;
+  for (const lepp::Tri& t : mesh.triangles) {
+    double a = min_angle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    if (a < worst_angle) worst_angle = a, worst = &t;
+  }
+  ASSERT_TRUE(worst && worst_angle < 30);
+  const Point &a = mesh.vertices[(*worst)[0]], &b = mesh.vertices[(*worst)[1]], &c = mesh.vertices[(*worst)[2]];
+  // Circumcenter, in doubles (a program's formula).
+  const double d = 2 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
+  const double ux = ((a.x * a.x + a.y * a.y) * (b.y - c.y) + (b.x * b.x + b.y * b.y) * (c.y - a.y) + (c.x * c.x + c.y * c.y) * (a.y - b.y)) / d;
+  const double uy = ((a.x * a.x + a.y * a.y) * (c.x - b.x) + (b.x * b.x + b.y * b.y) * (a.x - c.x) + (c.x * c.x + c.y * c.y) * (b.x - a.x)) / d;
+  lepp::reference::ReplayChoice choice;
+  if (!replay.match({ux, uy}, choice)) EXPECT_EQ(replay.diagnose({ux, uy}).deviation, Deviation::Circumcenter);
+  // Off-center: on the bisector of the shortest edge, angle theta at the point.
+  const Point* s[3] = {&a, &b, &c};
+  int e = 0;
+  auto len = [&](int i) { return std::hypot(s[(i + 1) % 3]->x - s[(i + 2) % 3]->x, s[(i + 1) % 3]->y - s[(i + 2) % 3]->y); };
+  for (int i = 1; i < 3; ++i)
+    if (len(i) < len(e)) e = i;
+  const Point &p = *s[(e + 1) % 3], &q = *s[(e + 2) % 3];
+  const double mx = (p.x + q.x) / 2, my = (p.y + q.y) / 2, h = len(e) / 2 / std::tan(30 * M_PI / 360);
+  const double dist = std::hypot(ux - mx, uy - my);
+  if (dist > h) {
+    const Point off{mx + (ux - mx) * h / dist, my + (uy - my) * h / dist};
+    if (!replay.match(off, choice)) {
+      const auto m = replay.diagnose(off);
+      EXPECT_EQ(m.deviation, Deviation::OffCenter) << m.what;
+    }
+  }
+  // A paper choice moved by 100 times its tolerance: precision; by a lot: unknown.
+  std::size_t total = 0;
+  const auto all = replay.all_choices({5, 0.5}, 1, total);
+  ASSERT_FALSE(all.empty());
+  const Point exact = all.front().point;
+  const double tol = all.front().tolerance;
+  const Point rounded{exact.x + 100 * tol, exact.y};
+  EXPECT_FALSE(replay.match(rounded, choice));
+  const auto pm = replay.diagnose(rounded);
+  EXPECT_EQ(pm.deviation, Deviation::Precision) << pm.what;
+  EXPECT_LE(pm.where.distance, pm.where.tolerance);
+  const auto um = replay.diagnose({1.2345, 0.0678});
+  EXPECT_EQ(um.deviation, Deviation::Unknown) << um.what;
+}
+
+// Theorem 2 at a step: a pair whose apex angle is over 120 degrees is
+// rejected, a right angle is not. (On the replay's own meshes, which are
+// constrained Delaunay, the theorem holds: this checks the check.)
+TEST(DeviationCatalogue, Theorem2CheckRejectsAnObtusePair) {
+  lepp::Pslg p;
+  p.vertices = {{0, 0}, {2, 0}, {1, 0.2}, {1, -1}, {1, 1}};
+  p.segments = {{0, 3}, {3, 1}, {1, 4}, {4, 0}};
+  std::vector<std::string> warnings;
+  const lepp::Pslg pslg = lepp::validate(p, warnings);
+  Replay replay(pslg, ReplayRules{});
+  lepp::reference::ReplayChoice pair;
+  pair.terminal_edge = {0, 1};
+  pair.t1 = {0, 1, 2};  // the angle at (1, 0.2) is about 157 degrees
+  pair.t2 = {0, 1, 3};
+  const auto bad = replay.theorem2(pair);
+  EXPECT_FALSE(bad.holds);
+  EXPECT_EQ(bad.apex, 2);
+  EXPECT_NEAR(bad.angle_deg, 157.38, 0.01);
+  pair.t1 = {0, 1, 4};  // 90 degrees at (1, 1)
+  EXPECT_TRUE(replay.theorem2(pair).holds);
+  pair.t2 = {-1, -1, -1};  // a constrained terminal edge: not the theorem's case
+  pair.t1 = {0, 1, 2};
+  EXPECT_TRUE(replay.theorem2(pair).holds);
+}
+
+}  // namespace
