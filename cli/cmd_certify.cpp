@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "lepp/certify.h"
+#include "lepp/certify_json.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
@@ -29,69 +30,6 @@ struct CertifyArgs {
   std::size_t max_listed = 50;
   DomainOptions domain;
 };
-
-nlohmann::json to_json(const certify::Report& r, std::size_t max_listed) {
-  const certify::Statistics& s = r.stats;
-  nlohmann::json counts = nlohmann::json::object();
-  for (std::size_t i = 0; i < r.count_by_reason.size(); ++i)
-    if (r.count_by_reason[i]) counts[certify::to_string(static_cast<certify::Reason>(i))] = r.count_by_reason[i];
-  nlohmann::json violations = nlohmann::json::array();
-  for (const certify::Violation& v : r.violations) {
-    nlohmann::json points = nlohmann::json::array();
-    for (const Point& p : v.points) points.push_back({p.x, p.y});
-    violations.push_back({{"reason", certify::to_string(v.reason)},
-                          {"check", certify::to_string(certify::check_of(v.reason))},
-                          {"message", v.message},
-                          {"triangles", v.triangles},
-                          {"edges", v.edges},
-                          {"vertices", v.vertices},
-                          {"points", points},
-                          {"segment", v.segment},
-                          {"region", v.region}});
-  }
-  nlohmann::json unimprovable = nlohmann::json::array();
-  for (const UnimprovableTriangle& u : r.unimprovable_accepted)
-    unimprovable.push_back({{"triangle", u.triangle}, {"apex", u.apex}, {"segment1", u.segment1}, {"segment2", u.segment2}});
-  nlohmann::json angles = nlohmann::json::array();
-  for (const certify::SmallInputAngle& a : r.small_angles)
-    angles.push_back({{"apex", a.apex},
-                      {"segment1", a.segment1},
-                      {"segment2", a.segment2},
-                      {"angle", a.angle_deg},
-                      {"radius", a.radius}});
-  nlohmann::json exempt = nlohmann::json::array();
-  for (std::size_t i = 0; i < r.exempt_triangles.size() && i < max_listed; ++i)
-    exempt.push_back({{"triangle", r.exempt_triangles[i]}, {"small_angle", r.exempt_angle[i]}});
-  nlohmann::json regions = nlohmann::json::array();
-  for (std::size_t i = 0; i < r.region_places.size(); ++i)
-    regions.push_back({{"region", i}, {"place", certify::to_string(r.region_places[i])}, {"triangles", r.region_triangles[i]}});
-  return {{"certified", r.certified()},
-          {"min_angle_checked", r.min_angle_deg},
-          {"statistics",
-           {{"vertices", s.vertices},
-            {"triangles", s.triangles},
-            {"edges", s.edges},
-            {"min_angle", s.min_angle_deg},
-            {"avg_min_angle", s.avg_min_angle_deg},
-            {"min_area_quality", s.min_area_quality},
-            {"shortest_edge", s.shortest_edge},
-            {"shortest_edge_ratio", s.shortest_edge_ratio},
-            {"avg_lepp_size", s.avg_lepp_size},
-            {"incircle_tests", s.delaunay_edges_checked},
-            {"cocircular_edges", s.cocircular_edges},
-            {"constrained_edges", s.constrained_edges},
-            {"terminal_pairs", s.terminal_pairs_checked},
-            {"euler_mesh", s.euler_mesh},
-            {"euler_domain", s.euler_domain}}},
-          {"violation_counts", counts},
-          {"violations", violations},
-          {"unimprovable_accepted", unimprovable},
-          {"small_input_angles", angles},
-          {"exempt_count", r.exempt_count},
-          {"exempt_triangles", exempt},
-          {"size_bound",
-           {{"max_area", r.max_area}, {"region_areas", r.region_area_bounds}, {"triangles_checked", r.area_checked}, {"regions", regions}}}};
-}
 
 int run_certify(const CertifyArgs& args) {
   Pslg input;
@@ -119,7 +57,7 @@ int run_certify(const CertifyArgs& args) {
   options.region_area_bounds = args.region_areas;
   const certify::Report report = certify::certify(input, mesh, options);
   if (args.json) {
-    nlohmann::json j = to_json(report, args.max_listed);
+    nlohmann::json j = certify::json_report(report, args.max_listed);
     add_version(j);
     std::printf("%s\n", j.dump(2).c_str());
   } else {

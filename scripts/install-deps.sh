@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs everything lepp needs on Debian 12 (run as root). Debian packages only,
 # plus Node.js's npm from Debian when the machine has no npm yet. dpkg-dev and file:
-# cpack -G DEB reads the command's shared-library dependencies with them.
+# cpack -G DEB reads the command's shared-library dependencies with them. pybind11-dev,
+# python3-dev, python3-numpy: the Python package (python/); pytest, Hypothesis: its tests.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
@@ -13,6 +14,7 @@ apt-get install -y --no-install-recommends \
   clang-14 libclang-rt-14-dev libfuzzer-14-dev \
   libcli11-dev nlohmann-json3-dev libfmt-dev \
   python3-matplotlib zip \
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis \
   dpkg-dev file gcovr llvm-14
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# lepp as Debian packages: cpack -G DEB from the existing build directory makes lepp and
-# lepp-dev (cmake/LeppDebian.cmake); check that every dependency they declare is installed
-# here, unpack both into a throwaway root (dpkg -x: nothing touches the system), then run the
-# installed command (--version, refine and certify on a paper problem) and build and run
-# examples/outside_project with find_package(lepp) against that root only.
+# lepp as Debian packages: cpack -G DEB from the existing build directory makes lepp,
+# lepp-dev and python3-lepp (cmake/LeppDebian.cmake); check that every dependency they declare
+# is installed here, unpack them into a throwaway root (dpkg -x: nothing touches the system),
+# then run the installed command (--version, refine and certify on a paper problem), build and
+# run examples/outside_project with find_package(lepp) against that root only, and import the
+# installed Python package from an empty directory (refine and certify through it).
 # LEPP_BUILD_DIR overrides the build directory (default build/, made by scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -16,9 +17,9 @@ rm -rf "$work"
 mkdir -p "$work/debs"
 
 # 1. The packages. cpack installs the headers from the source tree and the libraries from the
-# build: bring `lepp` (which links every packaged library) up to date first, or a stale build
-# pairs new headers with old libraries (a no-op after scripts/build.sh).
-cmake --build "$build" --target lepp > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+# build: bring `lepp` (which links every packaged library) and the Python package up to date
+# first, or a stale build pairs new headers with old libraries (a no-op after scripts/build.sh).
+cmake --build "$build" --target lepp lepp_python > "$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 if ! (cd "$build" && cpack -G DEB -B "$work/debs") > "$work/cpack.log" 2>&1; then
   cat "$work/cpack.log"
   exit 1
@@ -26,20 +27,22 @@ fi
 shopt -s nullglob
 runtime=("$work"/debs/lepp_*.deb)
 dev=("$work"/debs/lepp-dev_*.deb)
-if [ ${#runtime[@]} -ne 1 ] || [ ${#dev[@]} -ne 1 ]; then
-  echo "40-package: expected one lepp_*.deb and one lepp-dev_*.deb in $work/debs" >&2
+python=("$work"/debs/python3-lepp_*.deb)
+if [ ${#runtime[@]} -ne 1 ] || [ ${#dev[@]} -ne 1 ] || [ ${#python[@]} -ne 1 ]; then
+  echo "40-package: expected one lepp_*.deb, one lepp-dev_*.deb and one python3-lepp_*.deb in $work/debs" >&2
   ls -l "$work/debs" >&2
   exit 1
 fi
+debs=("${runtime[0]}" "${dev[0]}" "${python[0]}")
 version=$(dpkg-deb -f "${runtime[0]}" Version)
-for deb in "${runtime[0]}" "${dev[0]}"; do
+for deb in "${debs[@]}"; do
   echo "$(basename "$deb"): $(du -k "$deb" | cut -f1) KiB, Installed-Size $(dpkg-deb -f "$deb" Installed-Size) KiB"
   echo "  Depends: $(dpkg-deb -f "$deb" Depends)"
 done
 
 # 2. Every declared dependency (name and version constraint) is satisfied on this machine.
 missing=0
-for deb in "${runtime[0]}" "${dev[0]}"; do
+for deb in "${debs[@]}"; do
   IFS=',' read -ra deps <<< "$(dpkg-deb -f "$deb" Depends)"
   for dep in "${deps[@]}"; do
     dep=$(echo "$dep" | xargs)                      # trim
@@ -74,7 +77,7 @@ done
 
 # 3. The docs agree with the packages: each declared dependency is in docs/DEPENDENCIES.md,
 # CHANGELOG.md has a section for this version, the packaged copyright is LICENSE.
-for deb in "${runtime[0]}" "${dev[0]}"; do
+for deb in "${debs[@]}"; do
   IFS=',' read -ra deps <<< "$(dpkg-deb -f "$deb" Depends)"
   for dep in "${deps[@]}"; do
     name=$(echo "$dep" | xargs | cut -d' ' -f1)
@@ -88,8 +91,7 @@ grep -q "^## \[.*\] - $version\$\|^## \[$version\]" CHANGELOG.md || { echo "40-p
 
 # 4. Unpack into a throwaway root.
 root="$work/root"
-dpkg -x "${runtime[0]}" "$root"
-dpkg -x "${dev[0]}" "$root"
+for deb in "${debs[@]}"; do dpkg -x "$deb" "$root"; done
 lepp="$root/usr/bin/lepp"
 cmp -s LICENSE "$root/usr/share/doc/lepp/copyright" || { echo "40-package: packaged copyright is not LICENSE" >&2; exit 1; }
 if ldd "$lepp" | grep -q "not found"; then
@@ -123,5 +125,26 @@ case $lepp_dir in
 esac
 cmake --build "$work/example" >> "$work/example.log"
 RC_PARAMS="${RC_PARAMS:-seed=20261122 max_success=100}" "$work/example/cdt_property"
+
+# 7. The Python package where Debian's python3 looks (dist-packages), imported from an empty
+# directory with only that directory on the path: the installed files alone make it work.
+site="$root/usr/lib/python3/dist-packages"
+cmp -s LICENSE "$root/usr/share/doc/python3-lepp/copyright" || { echo "40-package: python3-lepp copyright is not LICENSE" >&2; exit 1; }
+for so in "$site"/lepp/_lepp*.so; do
+  if ldd "$so" | grep -q "not found"; then ldd "$so" >&2; echo "40-package: $so misses a shared library" >&2; exit 1; fi
+done
+mkdir "$work/empty"
+(cd "$work/empty" && PYTHONPATH="$site" /usr/bin/python3 -c "import lepp; print(lepp.__file__, lepp.__version__)") | tee "$work/import.txt"
+case $(cut -d' ' -f1 "$work/import.txt") in
+  "$site"/lepp/__init__.py) ;;
+  *) echo "40-package: import lepp did not load the packaged lepp" >&2; exit 1 ;;
+esac
+[ "$(cut -d' ' -f2 "$work/import.txt")" = "$version" ] || { echo "40-package: lepp.__version__ is not $version" >&2; exit 1; }
+(cd "$work/empty" && PYTHONPATH="$site" /usr/bin/python3 -c "
+import lepp, sys
+mesh = lepp.refine(sys.argv[1], min_angle=30)
+assert mesh.converged and lepp.certify(sys.argv[1], mesh, min_angle=30).ok
+import lepp.testing
+print('installed python3-lepp: refine + certify of A.poly at 30 degrees: ok')" "$PWD/corpus/paper/A.poly")
 rm -rf "$work"
 echo "40-package: ok in $(( $(date +%s) - start )) s"

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// refine: validate and refine as `lepp refine` does, with the GIL released;
+// the mesh comes back as arrays owning the engine's vectors. A guard stop
+// (Steiner budget, edge floor, time limit) is an outcome, never an exception.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pybind11/stl.h>
+
+#include "arrays.h"
+#include "bindings.h"
+#include "lepp/fast.h"
+#include "lepp/input.h"
+#include "lepp/io.h"
+#include "lepp/reference.h"
+#include "lepp/stats.h"
+
+namespace lepp::python {
+namespace {
+
+struct RefineCall {
+  double min_angle = 30;
+  double max_area = 0;
+  bool region_areas = false;
+  std::string method = "centroid", order = "fifo", engine = "fast";
+  std::int64_t max_steiner = -1;
+  double edge_floor = -1;
+  double time_limit = 0;
+  bool convex_hull = false, split_crossings = false, trace = false;
+};
+
+// The checks lepp refine's options make (CLI11 ranges and choices), as ValueError.
+RefineOptions options_of(const RefineCall& c) {
+  if (!(c.min_angle >= 0 && c.min_angle <= 60)) throw std::invalid_argument("min_angle: must be in [0, 60] degrees");
+  if (!(c.max_area >= 0) || std::isinf(c.max_area)) throw std::invalid_argument("max_area: must be a positive number (or None)");
+  if (c.method != "centroid" && c.method != "midpoint") throw std::invalid_argument("method: 'centroid' or 'midpoint'");
+  if (c.order != "fifo" && c.order != "lifo") throw std::invalid_argument("order: 'fifo' or 'lifo'");
+  if (c.engine != "fast" && c.engine != "reference") throw std::invalid_argument("engine: 'fast' or 'reference'");
+  if (c.max_steiner < -1) throw std::invalid_argument("max_steiner: must be >= 0 (or None)");
+  if (!(c.time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");
+  RefineOptions o;
+  o.min_angle_deg = c.min_angle;
+  o.method = c.method == "midpoint" ? Method::Midpoint : Method::Centroid;
+  o.order = c.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+  o.max_steiner = c.max_steiner;
+  o.max_area = c.max_area;
+  o.region_area_bounds = c.region_areas;
+  o.time_limit_seconds = c.time_limit;
+  o.edge_floor = c.edge_floor;
+  o.trace = c.trace;
+  return o;
+}
+
+py::dict run(const py::dict& pslg, const RefineCall& call) {
+  RefineOptions options = options_of(call);
+  Pslg raw = pslg_from_dict(pslg);
+  // Ctrl-C stops a long run: the engines call this now and then.
+  options.on_progress = [](std::int64_t) {
+    py::gil_scoped_acquire gil;
+    check_signals();
+  };
+  Pslg input;
+  std::vector<std::string> warnings;
+  RefineResult result;
+  MeshStats stats;
+  {
+    py::gil_scoped_release release;
+    input = validate(raw, DomainOptions{call.convex_hull, call.split_crossings}, warnings);
+    if (call.engine == "fast") {
+      if (!fast::available()) throw std::runtime_error("the fast engine is not implemented yet; use engine='reference'");
+      result = fast::refine(input, options);
+    } else {
+      result = reference::refine(input, options);
+    }
+    stats = mesh_stats(result.mesh, input);
+  }
+  py::dict out;
+  // Markers as lepp refine writes them: the input segment's, and with split
+  // crossings the file's segment number (both pieces keep their segment's).
+  std::vector<int> edges, edge_segments, edge_markers;
+  for (const ConstrainedEdge& e : result.mesh.constrained_edges) {
+    edges.insert(edges.end(), {e.a, e.b});
+    int segment = e.segment;
+    edge_markers.push_back(segment >= 0 && static_cast<std::size_t>(segment) < input.segments.size()
+                               ? input.segments[static_cast<std::size_t>(segment)].marker
+                               : 0);
+    if (call.split_crossings && segment >= 0 && static_cast<std::size_t>(segment) < input.segment_origin.size())
+      segment = input.segment_origin[static_cast<std::size_t>(segment)];
+    edge_segments.push_back(segment);
+  }
+  out["edges"] = int_array(edges, 2);
+  out["edge_segments"] = int_array(edge_segments);
+  out["edge_markers"] = int_array(edge_markers);
+  out["input_vertices"] = result.mesh.input_vertices;
+  out["vertices"] = take_points(std::move(result.mesh.vertices));
+  out["triangles"] = take_triangles(std::move(result.mesh.triangles));
+  std::vector<int> input_markers = input.vertex_markers;
+  out["input_vertex_markers"] = int_array(input_markers);
+  py::list unimprovable;
+  for (const UnimprovableTriangle& u : result.unimprovable) unimprovable.append(unimprovable_to_dict(u));
+  out["unimprovable"] = unimprovable;
+  if (call.trace) {
+    std::vector<Point> points;
+    py::list rules, splits;
+    points.reserve(result.trace.size());
+    for (const TraceStep& s : result.trace) {
+      points.push_back(s.point);
+      rules.append(to_string(s.rule));
+      splits.append(s.split_segment);
+    }
+    out["trace"] = take_points(std::move(points));
+    out["trace_rules"] = rules;
+    out["trace_split_segments"] = splits;
+  } else {
+    out["trace"] = py::none();
+  }
+  const double avg_lepp =
+      result.lepp_searches ? static_cast<double>(result.lepp_triangles) / static_cast<double>(result.lepp_searches) : 0;
+  py::dict s;  // the keys of lepp refine --json
+  s["engine"] = call.engine;
+  s["method"] = to_string(options.method);
+  s["order"] = to_string(options.order);
+  s["min_angle_target"] = call.min_angle;
+  s["max_area"] = call.max_area;
+  s["region_areas"] = call.region_areas;
+  s["input_vertices"] = input.vertices.size();
+  s["steiner_points"] = result.steiner_points;
+  s["vertices"] = stats.vertices;
+  s["triangles"] = stats.triangles;
+  s["min_angle"] = stats.min_angle_deg;
+  s["avg_min_angle"] = stats.avg_min_angle_deg;
+  s["min_area_quality"] = stats.min_area_quality;
+  s["shortest_edge_ratio"] = stats.shortest_edge_ratio;
+  s["avg_lepp_size"] = avg_lepp;
+  s["cocircular_ties"] = result.cocircular_ties;
+  s["area_refined"] = result.area_refined;
+  s["unimprovable"] = result.unimprovable.size();
+  s["outcome"] = to_string(result.outcome);
+  s["stuck"] = result.stuck;
+  s["seconds"] = result.seconds;
+  out["statistics"] = s;
+  out["outcome"] = to_string(result.outcome);
+  out["converged"] = exit_status(result.outcome) == 0;
+  out["warnings"] = warnings;
+  return out;
+}
+
+}  // namespace
+
+void bind_refine(py::module_& m) {
+  m.def(
+      "refine",
+      [](const py::dict& pslg, double min_angle, double max_area, bool region_areas, const std::string& method,
+         const std::string& order, const std::string& engine, std::int64_t max_steiner, double edge_floor,
+         double time_limit, bool convex_hull, bool split_crossings, bool trace) {
+        return run(pslg, RefineCall{min_angle, max_area, region_areas, method, order, engine, max_steiner, edge_floor,
+                                    time_limit, convex_hull, split_crossings, trace});
+      },
+      py::arg("pslg"), py::arg("min_angle") = 30.0, py::arg("max_area") = 0.0, py::arg("region_areas") = false,
+      py::arg("method") = "centroid", py::arg("order") = "fifo", py::arg("engine") = "fast", py::arg("max_steiner") = -1,
+      py::arg("edge_floor") = -1.0, py::arg("time_limit") = 0.0, py::arg("convex_hull") = false,
+      py::arg("split_crossings") = false, py::arg("trace") = false,
+      "Validate and refine a PSLG dict; a dict of the mesh arrays, statistics and outcome.");
+}
+
+}  // namespace lepp::python

@@ -1,0 +1,29 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The README's Python example runs as shown (the first ```python block of its
+"Python" section), in an empty directory, with only PYTHONPATH set to the package."""
+import os
+import re
+import subprocess
+import sys
+
+from conftest import SOURCE
+
+
+def readme_example():
+    with open(os.path.join(SOURCE, "README.md")) as f:
+        text = f.read()
+    section = text[text.index("\n## Python"):]
+    m = re.search(r"```python\n(.*?)```", section, re.S)
+    assert m, "no ```python block in the README's Python section"
+    return m.group(1)
+
+
+def test_readme_example_runs_as_shown(tmp_path):
+    code = readme_example()
+    for call in ("lepp.refine(", "lepp.certify(", "lepp.audit(", ".write("):
+        assert call in code, call
+    r = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True, text=True,
+                       env=dict(os.environ))
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "<lepp.Mesh" in r.stdout and "| certificate" in r.stdout
+    assert (tmp_path / "square.svg").exists()
