@@ -134,6 +134,7 @@ for so in "$site"/lepp/_lepp*.so; do
   if ldd "$so" | grep -q "not found"; then ldd "$so" >&2; echo "40-package: $so misses a shared library" >&2; exit 1; fi
 done
 mkdir "$work/empty"
+paper_a="$PWD/corpus/paper/A.poly"
 (cd "$work/empty" && PYTHONPATH="$site" /usr/bin/python3 -c "import lepp; print(lepp.__file__, lepp.__version__)") | tee "$work/import.txt"
 case $(cut -d' ' -f1 "$work/import.txt") in
   "$site"/lepp/__init__.py) ;;
@@ -145,6 +146,6 @@ import lepp, sys
 mesh = lepp.refine(sys.argv[1], min_angle=30)
 assert mesh.converged and lepp.certify(sys.argv[1], mesh, min_angle=30).ok
 import lepp.testing
-print('installed python3-lepp: refine + certify of A.poly at 30 degrees: ok')" "$PWD/corpus/paper/A.poly")
+print('installed python3-lepp: refine + certify of A.poly at 30 degrees: ok')" "$paper_a")
 rm -rf "$work"
 echo "40-package: ok in $(( $(date +%s) - start )) s"
