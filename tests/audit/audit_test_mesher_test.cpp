@@ -212,6 +212,33 @@ TEST(AuditClean, LeppEnginesThroughCmd) {
                      kOwnInputs + " --method centroid --theta 30 --cases 5"));
 }
 
+// --- the declared reading: --centroid area -----------------------------------
+
+// A program that uses the area centroid on purpose audits clean once it says
+// so; the report states the reading. The program with the paper's vertex
+// average is then named vertex-centroid, and its finding states the reading too.
+TEST(AuditDeclaredReading, CentroidArea) {
+  const std::string args = kOwnInputs + " --method centroid --theta 20,25,30 --cases 15 --centroid area --max-findings 1";
+  const AuditRun area = audit("reading-area", mesher("--bug area-centroid"), args);
+  expect_clean(area);
+  EXPECT_EQ(area.report.value("centroid", ""), "area");
+  const AuditRun vertex = audit("reading-area-vertex-program", mesher(), args);
+  ASSERT_FALSE(vertex.report.is_discarded()) << vertex.err;
+  EXPECT_EQ(vertex.status, 1);
+  const json& conf = row(vertex.report, "conformance");
+  EXPECT_GE(conf.at("deviations").value("vertex-centroid", 0u), 1u) << conf.dump(2);
+  ASSERT_GE(conf.at("counterexamples").size(), 1u);
+  const json& cx = conf.at("counterexamples").at(0);
+  EXPECT_NE(cx.at("reproduce").get<std::string>().find("--centroid area"), std::string::npos) << cx.dump();
+  const std::string md = slurp(fs::path(cx.at("dir").get<std::string>()) / "finding.md");
+  EXPECT_NE(md.find("--centroid area"), std::string::npos) << md;
+  // Without the declaration the area program fails, named area-centroid.
+  const AuditRun plain = audit("reading-vertex-area-program", mesher("--bug area-centroid"),
+                               kOwnInputs + " --method centroid --theta 20,25,30 --cases 15 --max-findings 1");
+  EXPECT_EQ(plain.report.value("centroid", ""), "vertex");
+  EXPECT_GE(row(plain.report, "conformance").at("deviations").value("area-centroid", 0u), 1u);
+}
+
 // --- each seeded bug is caught by its row and shrunk -----------------------
 
 struct BugCase {

@@ -113,3 +113,34 @@ TEST(Report, XmlTextEscapedInJUnitAndSvg) {
 }
 
 }  // namespace
+
+namespace {
+
+// The conformance row's deviations in the report: counts by name, where each
+// was first seen, and the one-consistent-variant sentence only when one name
+// explains every failing run and each fits it whole.
+lepp::audit::AuditReport report_with_deviations(std::size_t consistent) {
+  lepp::audit::AuditReport rep;
+  for (std::size_t i = 0; i < lepp::audit::kRows; ++i) rep.rows[i].row = lepp::audit::kAllRows[i];
+  lepp::audit::RowSummary& c = rep[lepp::audit::Row::Conformance];
+  c.run = 40, c.failed = 20, c.held = 20;
+  c.deviations["area-centroid"] = 20;
+  c.deviation_first["area-centroid"] = "step 2 of square400 at 25 degrees";
+  if (consistent) c.deviation_consistent["area-centroid"] = consistent;
+  return rep;
+}
+
+}  // namespace
+
+TEST(Report, DeviationsByNameAndOneConsistentVariant) {
+  const std::string all = lepp::audit::markdown_report(report_with_deviations(20));
+  EXPECT_NE(all.find("area-centroid: 20 runs, first at step 2 of square400 at 25 degrees"), std::string::npos) << all;
+  EXPECT_NE(all.find("Every traced step of the program fits one consistent variant: area-centroid"), std::string::npos) << all;
+  const std::string some = lepp::audit::markdown_report(report_with_deviations(19));
+  EXPECT_EQ(some.find("Every traced step of the program fits"), std::string::npos) << some;
+  EXPECT_NE(some.find("every traced step of 19 of them fits area-centroid"), std::string::npos) << some;
+  const nlohmann::json j = lepp::audit::json_report(report_with_deviations(20));
+  for (const auto& row : j.at("rows"))
+    if (row.at("check") == "conformance") EXPECT_EQ(row.at("deviations").value("area-centroid", 0), 20);
+  EXPECT_EQ(j.value("centroid", ""), "vertex");
+}
