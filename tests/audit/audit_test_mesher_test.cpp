@@ -239,6 +239,24 @@ TEST(AuditDeclaredReading, CentroidArea) {
   EXPECT_GE(row(plain.report, "conformance").at("deviations").value("area-centroid", 0u), 1u);
 }
 
+// A program that does not flip after inserting: its final mesh is not
+// Delaunay, and the conformance finding names missing flips as the likely
+// cause of its intermediate meshes differing from the replay's.
+TEST(AuditDeclaredReading, MissingFlipsNamedAsTheLikelyCause) {
+  const AuditRun r = audit("no-flips", mesher("--bug no-flips"), kOwnInputs + " --method centroid --theta 30 --cases 5 --no-shrink");
+  ASSERT_FALSE(r.report.is_discarded()) << r.err;
+  const json& cert = row(r.report, "certificate");
+  const json& conf = row(r.report, "conformance");
+  ASSERT_GE(cert.at("failed").get<std::size_t>(), 1u) << cert.dump(2);
+  ASSERT_GE(conf.at("failed").get<std::size_t>(), 1u) << conf.dump(2);
+  bool named = false;
+  for (const json& cx : conf.at("counterexamples")) {
+    const std::string md = slurp(fs::path(cx.at("dir").get<std::string>()) / "finding.md");
+    named = named || md.find("missing Delaunay flips after an insertion are the likely cause") != std::string::npos;
+  }
+  EXPECT_TRUE(named) << conf.dump(2);
+}
+
 // --- each seeded bug is caught by its row and shrunk -----------------------
 
 struct BugCase {

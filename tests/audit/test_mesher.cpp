@@ -19,7 +19,7 @@
 // Seeded bugs (--bug): non-delaunay, drop-segment, skinny, loop, crash, garbage,
 // triangle-centroid, no-remark10, shortest-edge, and one per deviation of the
 // audit's catalogue: area-centroid, terminal-midpoint, centroid-not-midpoint,
-// remark10-reversed, other-second-longest, good-triangle. Each is described at its use.
+// remark10-reversed, other-second-longest, good-triangle; and no-flips. Each is described at its use.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -68,7 +68,8 @@ enum class Bug {
   none, non_delaunay, drop_segment, skinny, loop, crash, garbage,
   triangle_centroid, no_remark10, shortest_edge,
   // The deviation catalogue's rules (docs/CONFORMANCE.md, "Deviations"), one each.
-  area_centroid, terminal_midpoint, centroid_not_midpoint, remark10_reversed, other_second_longest, good_triangle
+  area_centroid, terminal_midpoint, centroid_not_midpoint, remark10_reversed, other_second_longest, good_triangle,
+  no_flips  // inserts without Delaunay flips (the audit names the non-Delaunay mesh as the likely cause)
 };
 
 struct Options {
@@ -95,7 +96,7 @@ Bug parse_bug(const std::string& s) {
       {"shortest-edge", Bug::shortest_edge}, {"area-centroid", Bug::area_centroid},
       {"terminal-midpoint", Bug::terminal_midpoint}, {"centroid-not-midpoint", Bug::centroid_not_midpoint},
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
-      {"good-triangle", Bug::good_triangle}};
+      {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -335,7 +336,8 @@ Vertex Mesher::insert_point(const P2& q, Face hint) {
   if (lt == Cdt::VERTEX || lt == Cdt::OUTSIDE_CONVEX_HULL || lt == Cdt::OUTSIDE_AFFINE_HULL || !in_domain(loc))
     return Vertex();
   if (lt == Cdt::EDGE && loc->is_constrained(li)) return Vertex();
-  Vertex v = cdt_.insert(q, lt, loc, li);
+  // The no-flips bug: the plain constrained triangulation's insertion, no Delaunay flips after it.
+  Vertex v = opt_.bug == Bug::no_flips ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
   v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
   steiner_.push_back(q);
   vertex_of_id_.push_back(v);
