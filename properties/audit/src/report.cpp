@@ -199,6 +199,7 @@ std::string junit_report(const AuditReport& rep) {
     x += fmt::format("    <testcase classname=\"lepp.audit.{}\" name=\"{}\">\n", xml_escape(rep.engine), row_key(r.row));
     if (r.failed > 0) {
       std::string body = fmt::format("{} of {} runs failed. {}\nPaper: {}\n", r.failed, r.run, r.first_detail, row_passage(r.row));
+      for (const auto& [name, runs] : r.deviations) body += fmt::format("deviation {}: {} runs\n", name, runs);
       for (const Counterexample& c : r.counterexamples)
         body += fmt::format("shrunk: {} ({} vertices): {}\n{}\n", c.dir, c.vertices, c.detail, c.reproduce);
       x += fmt::format("      <failure message=\"{}\">{}</failure>\n", xml_escape(row_statement(r.row)), xml_escape(body));

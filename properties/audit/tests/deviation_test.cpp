@@ -71,7 +71,8 @@ TEST(DeviationCatalogue, CircumcenterOffCenterPrecisionUnknown) {
   const double ux = ((a.x * a.x + a.y * a.y) * (b.y - c.y) + (b.x * b.x + b.y * b.y) * (c.y - a.y) + (c.x * c.x + c.y * c.y) * (a.y - b.y)) / d;
   const double uy = ((a.x * a.x + a.y * a.y) * (c.x - b.x) + (b.x * b.x + b.y * b.y) * (a.x - c.x) + (c.x * c.x + c.y * c.y) * (b.x - a.x)) / d;
   lepp::reference::ReplayChoice choice;
-  if (!replay.match({ux, uy}, choice)) EXPECT_EQ(replay.diagnose({ux, uy}).deviation, Deviation::Circumcenter);
+  ASSERT_FALSE(replay.match({ux, uy}, choice));
+  EXPECT_EQ(replay.diagnose({ux, uy}).deviation, Deviation::Circumcenter);
   // Off-center: on the bisector of the shortest edge, angle theta at the point.
   const Point* s[3] = {&a, &b, &c};
   int e = 0;
@@ -81,13 +82,11 @@ TEST(DeviationCatalogue, CircumcenterOffCenterPrecisionUnknown) {
   const Point &p = *s[(e + 1) % 3], &q = *s[(e + 2) % 3];
   const double mx = (p.x + q.x) / 2, my = (p.y + q.y) / 2, h = len(e) / 2 / std::tan(30 * M_PI / 360);
   const double dist = std::hypot(ux - mx, uy - my);
-  if (dist > h) {
-    const Point off{mx + (ux - mx) * h / dist, my + (uy - my) * h / dist};
-    if (!replay.match(off, choice)) {
-      const auto m = replay.diagnose(off);
-      EXPECT_EQ(m.deviation, Deviation::OffCenter) << m.what;
-    }
-  }
+  ASSERT_GT(dist, h);  // a skinny triangle: the off-center is nearer than the circumcenter
+  const Point off{mx + (ux - mx) * h / dist, my + (uy - my) * h / dist};
+  ASSERT_FALSE(replay.match(off, choice));
+  const auto m = replay.diagnose(off);
+  EXPECT_EQ(m.deviation, Deviation::OffCenter) << m.what;
   // A paper choice moved by 100 times its tolerance: precision; by a lot: unknown.
   std::size_t total = 0;
   const auto all = replay.all_choices({5, 0.5}, 1, total);
@@ -126,6 +125,49 @@ TEST(DeviationCatalogue, Theorem2CheckRejectsAnObtusePair) {
   pair.t2 = {-1, -1, -1};  // a constrained terminal edge: not the theorem's case
   pair.t1 = {0, 1, 2};
   EXPECT_TRUE(replay.theorem2(pair).holds);
+}
+
+}  // namespace
+
+// The diagnosis of a step: words and picture, for a conformance failure and
+// for Theorem 2 at a step.
+#include "lepp/audit/diagnosis.h"
+
+namespace {
+
+TEST(StepDiagnosis, ConformanceAndTheorem2Drawn) {
+  lepp::Pslg p;
+  p.vertices = {{0, 0}, {10, 0}, {10, 1}, {0, 1}, {5, 0.9}};
+  p.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  std::vector<std::string> warnings;
+  const lepp::Pslg pslg = lepp::validate(p, warnings);
+  lepp::audit::ConformanceOptions o;
+  o.min_angle_deg = 30;
+  const auto conf = lepp::audit::check_conformance(pslg, {{1.2345, 0.0678}}, o);
+  ASSERT_FALSE(conf.conforms);
+  EXPECT_EQ(conf.failure->deviation, "unknown");
+  const auto d = lepp::audit::conformance_diagnosis(conf, 30, true);
+  const std::string md = lepp::audit::diagnosis_markdown(d);
+  EXPECT_NE(md.find("**Deviation: `unknown`**"), std::string::npos) << md;
+  EXPECT_NE(md.find("missing Delaunay flips"), std::string::npos) << md;
+  EXPECT_NE(md.find("Euclidean distances"), std::string::npos) << md;
+  const std::string svg = lepp::audit::diagnosis_svg(d, "conformance step 1");
+  EXPECT_NE(svg.find("the program's point, step 1"), std::string::npos) << svg.substr(svg.size() - 800);
+  EXPECT_NE(svg.find("the paper"), std::string::npos);
+
+  lepp::audit::ConformanceReport t2 = conf;
+  lepp::audit::Theorem2StepFailure f;
+  f.step = 0;
+  f.point = {5, 0.5};
+  f.mesh = conf.failure->mesh;
+  f.terminal_edge = {f.mesh.triangles[0][0], f.mesh.triangles[0][1]};
+  f.t1 = f.mesh.triangles[0];
+  f.apex = f.mesh.triangles[0][2];
+  f.angle_deg = 150;
+  t2.theorem2_failure = f;
+  const auto d2 = lepp::audit::theorem2_diagnosis(t2, 30);
+  EXPECT_NE(lepp::audit::diagnosis_markdown(d2).find("Theorem 2 fails"), std::string::npos);
+  EXPECT_NE(lepp::audit::diagnosis_svg(d2, "theorem-2 step 1").find("terminal pair of step 1"), std::string::npos);
 }
 
 }  // namespace
