@@ -161,6 +161,7 @@ TEST(TestMesherSelfCheck, ShortestEdgeBugShows) { EXPECT_GT(shows_nonconformance
 struct DeviationBug {
   std::string bug, deviation;
 };
+void PrintTo(const DeviationBug& d, std::ostream* os) { *os << "--bug " << d.bug << " -> " << d.deviation; }
 class DeviationNamed : public ::testing::TestWithParam<DeviationBug> {};
 
 TEST_P(DeviationNamed, EveryFailureNamed) {
