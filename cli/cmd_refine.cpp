@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp refine IN.poly -o PREFIX`: read, validate, refine, write, report.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,6 +14,8 @@
 #include "lepp/fast.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "lepp/mesh_formats.h"
+#include "lepp/mesh_labels.h"
 #include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "lepp/trace_io.h"
@@ -35,6 +39,8 @@ struct RefineArgs {
   bool json = false;
   bool quiet = false;
   bool trace = false;
+  std::vector<std::string> formats;  // empty: triangle
+  bool binary = false;               // .msh in Gmsh's binary variant
   DomainOptions domain;
 };
 
@@ -43,7 +49,30 @@ std::string detail_where(const Pslg& p, std::size_t region) {
   return line > 0 ? p.source + ":" + std::to_string(line) : p.source;
 }
 
+// The formats asked for, each once, in the order given; empty when two of them
+// would write the same file (msg says why).
+std::vector<MeshFormat> output_formats(const RefineArgs& args, std::string& msg) {
+  std::vector<MeshFormat> formats;
+  for (const std::string& name : args.formats) {
+    const MeshFormat f = *parse_mesh_format(name);  // CLI11 checked the name
+    if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
+  }
+  if (formats.empty()) formats.push_back(MeshFormat::Triangle);
+  if (std::find(formats.begin(), formats.end(), MeshFormat::Msh2) != formats.end() &&
+      std::find(formats.begin(), formats.end(), MeshFormat::Msh4) != formats.end()) {
+    msg = fmt::format("--format msh2 and --format msh4 would both write {}.msh; ask for one per run", args.output);
+    return {};
+  }
+  return formats;
+}
+
 int run_refine(const RefineArgs& args) {
+  std::string format_error;
+  const std::vector<MeshFormat> formats = output_formats(args, format_error);
+  if (formats.empty()) {
+    std::fprintf(stderr, "lepp refine: %s\n", format_error.c_str());
+    return 2;
+  }
   Pslg input;
   std::vector<std::string> warnings;
   try {
@@ -87,6 +116,8 @@ int run_refine(const RefineArgs& args) {
     result = reference::refine(input, options);
   }
   if (options.on_progress) std::fprintf(stderr, "\r\033[K");
+  // Before the renumbering below: the labels read markers by validated segment.
+  const MeshLabels labels = mesh_labels(result.mesh, input);
   if (args.domain.split_crossings) {
     // Both pieces of a split segment keep its identity: the marker of each
     // constrained edge is the file's segment number (docs/FORMATS.md).
@@ -95,7 +126,9 @@ int run_refine(const RefineArgs& args) {
         e.segment = input.segment_origin[static_cast<std::size_t>(e.segment)];
   }
   try {
-    write_mesh(args.output, result.mesh);
+    MeshWriteOptions write_options;
+    write_options.binary = args.binary;
+    for (MeshFormat f : formats) write_mesh(args.output, result.mesh, f, labels, write_options);
     write_unimprovable(args.output, result.unimprovable);
     if (args.trace) {
       std::vector<Point> points;
@@ -164,9 +197,19 @@ int run_refine(const RefineArgs& args) {
 
 void add_refine_command(CLI::App& app, int& status) {
   auto args = std::make_shared<RefineArgs>();
-  auto* cmd = app.add_subcommand("refine", "Refine a .poly file into a quality mesh (writes PREFIX.node/.ele/.poly)");
+  auto* cmd = app.add_subcommand("refine", "Refine a .poly file into a quality mesh (writes PREFIX.node/.ele/.poly, or --format)");
   cmd->add_option("input", args->input, "Input PSLG in Triangle's .poly format, or a .node point set, or a bare prefix X (X.poly, else X.node)")->required();
-  cmd->add_option("-o,--output", args->output, "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly (Triangle's formats; see --format)")
+      ->required();
+  cmd->add_option("--format", args->formats,
+                  "Output format, repeatable: triangle (PREFIX.node/.ele/.poly, the default), vtu (PREFIX.vtu, VTK XML with "
+                  "per-triangle quality), msh2 or msh4 (PREFIX.msh, Gmsh 2.2 or 4.1 with physical groups); "
+                  "docs/FORMATS.md; also comma-separated (--format triangle,vtu)")
+      ->allow_extra_args(false)
+      ->delimiter(',')
+      ->check(CLI::IsMember({"triangle", "vtu", "msh2", "msh4"}));
+  cmd->add_flag("--binary", args->binary, "Write .msh in Gmsh's binary variant instead of ASCII (.vtu is always binary)");
   cmd->add_option("--min-angle", args->min_angle, "Smallest angle wanted, degrees (a triangle below it is bad)")
       ->default_val(30)
       ->check(CLI::Range(0.0, 60.0));

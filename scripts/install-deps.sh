@@ -4,6 +4,7 @@
 # plus Node.js's npm from Debian when the machine has no npm yet. dpkg-dev and file:
 # cpack -G DEB reads the command's shared-library dependencies with them. pybind11-dev,
 # python3-dev, python3-numpy: the Python package (python/); pytest, Hypothesis: its tests.
+# meshio and Gmsh (its program and Python API) read back the .vtu and .msh files in tests/formats.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
@@ -15,6 +16,7 @@ apt-get install -y --no-install-recommends \
   libcli11-dev nlohmann-json3-dev libfmt-dev \
   python3-matplotlib zip \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis \
+  python3-meshio gmsh python3-gmsh \
   dpkg-dev file gcovr llvm-14
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.

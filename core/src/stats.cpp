@@ -8,15 +8,36 @@
 namespace lepp {
 namespace {
 double len(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// The angle at o of triangle opq, in radians.
+double angle_at(const Point& o, const Point& p, const Point& q) {
+  double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
+  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
 }  // namespace
 
 double min_angle_deg(const Point& a, const Point& b, const Point& c) {
-  auto angle = [](const Point& o, const Point& p, const Point& q) {
-    double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
-    return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
-  };
-  double m = std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+  double m = std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
   return m * 180.0 / M_PI;
+}
+
+double max_angle_deg(const Point& a, const Point& b, const Point& c) {
+  double m = std::max({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
+  return m * 180.0 / M_PI;
+}
+
+double radius_ratio(const Point& a, const Point& b, const Point& c) {
+  // 2 r / R = 16 area^2 / (|ab| |bc| |ca| (|ab| + |bc| + |ca|)).
+  const double area2 = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  const double ab = len(a, b), bc = len(b, c), ca = len(c, a);
+  const double den = ab * bc * ca * (ab + bc + ca);
+  return den > 0 ? 4.0 * area2 * area2 / den : 0.0;
+}
+
+double edge_ratio(const Point& a, const Point& b, const Point& c) {
+  const double ab = len(a, b), bc = len(b, c), ca = len(c, a);
+  const double lo = std::min({ab, bc, ca});
+  return lo > 0 ? std::max({ab, bc, ca}) / lo : std::numeric_limits<double>::infinity();
 }
 
 double area_quality(const Point& a, const Point& b, const Point& c) {

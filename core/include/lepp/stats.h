@@ -23,5 +23,12 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input);
 // Smallest angle of triangle abc in degrees, and its area quality q.
 double min_angle_deg(const Point& a, const Point& b, const Point& c);
 double area_quality(const Point& a, const Point& b, const Point& c);
+// The other per-triangle measures the .vtu carries (docs/FORMATS.md), each 1
+// for an equilateral triangle: largest angle in degrees (60 at best); radius
+// ratio 2 r_in / R_circ (in (0, 1], 0 when degenerate); edge ratio longest /
+// shortest edge (>= 1, infinite when an edge has length 0).
+double max_angle_deg(const Point& a, const Point& b, const Point& c);
+double radius_ratio(const Point& a, const Point& b, const Point& c);
+double edge_ratio(const Point& a, const Point& b, const Point& c);
 
 }  // namespace lepp

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// An output file written in large blocks: text (fmt) and raw bytes are
+// gathered in memory and written 4 MiB at a time, so the writers of big meshes
+// make a few thousand system calls, not one per element. Internal to lepp_core.
+#pragma once
+#include <cstdio>
+#include <iterator>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace lepp::detail {
+
+class BlockFile {
+ public:
+  // Throws std::system_error naming the path when it cannot be opened.
+  explicit BlockFile(const std::string& path);
+  BlockFile(const BlockFile&) = delete;
+  BlockFile& operator=(const BlockFile&) = delete;
+  ~BlockFile();  // closes (errors ignored) if close() was not called
+
+  template <class... Args>
+  void print(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(fmt::appender(buffer_), format, std::forward<Args>(args)...);
+    if (buffer_.size() >= kBlock) flush();
+  }
+  void bytes(const void* data, std::size_t n);
+  // One value's bytes, in this machine's byte order (the formats say which).
+  template <class T>
+  void raw(const T& value) {
+    bytes(&value, sizeof value);
+  }
+  // Writes what is left and closes; throws std::system_error on any failure
+  // (a full disk shows here).
+  void close();
+
+ private:
+  static constexpr std::size_t kBlock = std::size_t{1} << 22;
+  void flush();
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  fmt::memory_buffer buffer_;
+};
+
+// True on a little-endian machine (for the .vtu's byte_order).
+bool little_endian();
+
+}  // namespace lepp::detail
