@@ -389,6 +389,7 @@ bool Mesher::process(Face f) {
       // Select Point: midpoint of l, or of the first constrained second-longest edge.
       if (c1) v = split_constrained(t1, s1);
       else if (c2) v = split_constrained(t2, s2);
+      else if (opt_.bug == Bug::centroid_not_midpoint) v = insert_point(quad, t1);  // the centroid in the midpoint method
       else v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
     } else if (!c1 && !c2) {
       if (opt_.bug == Bug::triangle_centroid)  // the terminal triangle's centroid, not the quad's

@@ -206,6 +206,22 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, DeviationNamed,
                            return n;
                          });
 
+// The midpoint method: a quad centroid anywhere is centroid-not-midpoint.
+TEST(TestMesherSelfCheck, MidpointMethodCentroidNamed) {
+  std::size_t failed = 0;
+  for (const Case& c : cases()) {
+    if (c.method != lepp::Method::Midpoint) continue;
+    const MesherRun r = run_mesher(c, "--bug centroid-not-midpoint");
+    ASSERT_EQ(r.status, 0);
+    const lepp::audit::ConformanceReport conf = conformance(c, r);
+    if (conf.conforms) continue;
+    ++failed;
+    EXPECT_EQ(conf.failure->deviation, "centroid-not-midpoint") << name(c) << "\n" << lepp::audit::describe(conf);
+    EXPECT_TRUE(conf.failure->consistent_variant) << name(c) << "\n" << lepp::audit::describe(conf);
+  }
+  EXPECT_GT(failed, 0u);
+}
+
 // The declared reading: the area-centroid program conforms when its reading
 // is declared, and the program without bugs does not (where the two differ).
 TEST(TestMesherSelfCheck, DeclaredAreaReading) {
