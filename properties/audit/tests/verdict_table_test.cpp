@@ -328,3 +328,31 @@ TEST(VerdictTable, ReportVerdictColumn) {
   EXPECT_TRUE(rep.holds());
   EXPECT_EQ(exit_status(rep), 0);
 }
+
+// A converged run whose mesh is not Delaunay at a terminal edge: the
+// certificate row fails for the Delaunay check and theorem-2 for the angle
+// over 120 degrees (kills audit-certificate-no-delaunay and audit-no-theorem2;
+// the table's outcomes all come from Delaunay meshes, where Theorem 2 holds).
+// The mesh: v (0,0), a (10,0), b (8,6), c (5,-1), d (-6,8); triangles vab, vca,
+// vbd; v-a is the longest edge of vab (the tie with v-b goes to the older
+// vertex) and of vca, whose angle at c is 157 degrees (certify_boundary_test.cpp).
+TEST(VerdictTable, ConvergedMeshNotDelaunayAtATerminalEdge) {
+  Pslg p;
+  p.vertices = {{0, 0}, {10, 0}, {8, 6}, {5, -1}, {-6, 8}};
+  p.segments = {{3, 1, 0}, {1, 2, 0}, {2, 4, 0}, {4, 0, 0}, {0, 3, 0}};
+  std::vector<std::string> warnings;
+  p = validate(p, warnings);
+  EngineRun run;
+  run.mesh.vertices = p.vertices;
+  run.mesh.input_vertices = 5;
+  run.mesh.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 4}};
+  EngineRequest req;
+  req.theta = 20;
+  const CaseResult r = check_run(p, req, run, CheckOptions{});
+  EXPECT_EQ(r[Row::Certificate].verdict, Verdict::Failed);
+  EXPECT_NE(r[Row::Certificate].detail.find("Delaunay"), std::string::npos) << r[Row::Certificate].detail;
+  EXPECT_EQ(r[Row::Theorem2].verdict, Verdict::Failed);
+  EXPECT_NE(r[Row::Theorem2].detail.find("120"), std::string::npos) << r[Row::Theorem2].detail;
+  EXPECT_EQ(r[Row::Termination].verdict, Verdict::Held);
+  EXPECT_EQ(r[Row::Conformance].verdict, Verdict::NotChecked);
+}
