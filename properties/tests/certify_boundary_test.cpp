@@ -236,6 +236,46 @@ TEST(CertifyBoundary, ExemptionDiskEndsAtItsRadius) {
   EXPECT_TRUE(r.has(certify::Reason::AngleBelowTheta));
 }
 
+// Two equal shortest edges: every shortest edge is tried (kills
+// cert-exempt-shortest-strict, where a tie leaves none). Another mesher split
+// the arm V-E1 at P=(10,0) and Q=(20,0) and put Y=(15,0.5) above: the flat
+// triangle PQY has |PY| = |QY| (25.25 squared) and 5.7-degree angles at P and
+// Q; P and Y are in the disk (radius 65), so it is exempt by the disk rule.
+TEST(CertifyBoundary, ExemptionTriesEveryShortestEdgeOfATie) {
+  Pslg p;
+  p.vertices = {{0, 0}, {65, 0}, {56, 42}, {15, 0.5}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  p = validated(p);
+  Pslg split = p;  // the same input with the arm split at P and Q: the other mesher's points
+  split.vertices.push_back({10, 0});
+  split.vertices.push_back({20, 0});
+  split = validated(split);
+  Mesh m = test::cgal_cdt(split);
+  m.input_vertices = 0;  // as read: input vertices found by their coordinates, P and Q Steiner points
+  m.constrained_edges.clear();
+  int P = -1, Q = -1, Y = -1;
+  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+    if (m.vertices[i] == Point{10, 0}) P = static_cast<int>(i);
+    if (m.vertices[i] == Point{20, 0}) Q = static_cast<int>(i);
+    if (m.vertices[i] == Point{15, 0.5}) Y = static_cast<int>(i);
+  }
+  ASSERT_GE(std::min({P, Q, Y}), 0);
+  int pqy = -1;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Tri& x = m.triangles[t];
+    if (std::find(x.begin(), x.end(), P) != x.end() && std::find(x.begin(), x.end(), Q) != x.end() &&
+        std::find(x.begin(), x.end(), Y) != x.end())
+      pqy = static_cast<int>(t);
+  }
+  ASSERT_GE(pqy, 0) << "the CDT has the flat triangle on the arm";
+  certify::Options o;
+  o.min_angle_deg = 30;
+  o.exempt_small_input_angles = true;
+  const certify::Report r = certify::certify(p, m, o);
+  EXPECT_NE(std::find(r.exempt_triangles.begin(), r.exempt_triangles.end(), pqy), r.exempt_triangles.end())
+      << certify::format_report(r);
+}
+
 // ---- a cluster of small input angles across a notch ---------------------------
 // Four segments from V=(0,0) to (100,0), (100,27), (100,57), (100,90) (about 0,
 // 15.1, 29.7 and 42 degrees). With a crack: the triangle V (100,0) (100,57)
