@@ -17,6 +17,7 @@ import os
 from . import _lepp
 from ._audit import AuditReport, audit
 from ._certify import Report, certify
+from ._convert import mesh_dict as _mesh_dict
 from ._convert import pslg_dict as _pslg_dict
 from ._mesh import Mesh
 from .triangle_api import triangulate
@@ -77,8 +78,7 @@ def render(mesh, path=None, *, color="quality", highlight_bad=False, min_angle=3
            triangles=(), points=()):
     """Draws a mesh (a lepp.Mesh or a mesh dict) as `lepp render` does and writes the SVG to
     path (when given); returns the SVG text. triangles and points are highlighted in red."""
-    from ._convert import mesh_dict
-    svg = _lepp.render_svg(mesh_dict(mesh), color, bool(highlight_bad), float(min_angle), float(width), title,
+    svg = _lepp.render_svg(_mesh_dict(mesh), color, bool(highlight_bad), float(min_angle), float(width), title,
                            [int(t) for t in triangles], [(float(x), float(y)) for x, y in points])
     if path is not None:
         with open(os.fspath(path), "w") as f:

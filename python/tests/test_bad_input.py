@@ -32,8 +32,8 @@ def test_bad_file_raises_input_error_with_the_cli_message(path, workdir):
 
 
 @pytest.mark.parametrize("path", BAD, ids=os.path.basename)
-def test_bad_file_through_certify_and_triangulate(path):
-    """The same errors from the other entry points that read or validate the input."""
+def test_bad_file_through_certify(path):
+    """The same error from lepp.certify, which reads and validates the input too."""
     mesh = {"vertices": np.array([[0.0, 0], [1, 0], [0, 1]]), "triangles": np.array([[0, 1, 2]])}
     with pytest.raises(lepp.InputError):
         lepp.certify(path, mesh)

@@ -154,3 +154,17 @@ def test_mesh_arrays_are_not_copies():
     v = mesh.vertices
     del mesh
     assert np.isfinite(v).all()
+
+
+def test_ctrl_c_stops_a_long_run():
+    """SIGINT during a run of more than 65536 Steiner points raises KeyboardInterrupt (the
+    engine checks at its progress calls); the interpreter goes on."""
+    import signal
+
+    pslg = lepp.read_poly(corpus("paper", "square400.poly"))
+    timer = threading.Timer(0.05, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        lepp.refine(pslg, min_angle=36)  # 267 thousand points when left to finish
+    timer.join()
+    assert lepp.refine(corpus("paper", "A.poly")).converged
