@@ -12,7 +12,8 @@ mesher's test suite states the paper's properties in three lines:
 The families are those of lepp's RapidCheck generators (properties/gen/include/lepp/gen.h),
 drawn the same way: every coordinate an integer of a small lattice times `scale` (a power of
 two), so the predicates on them are exact in double and a shrunk counterexample is readable;
-every PSLG passes lepp.validate. Each dict has the `triangle` package's keys (vertices,
+every PSLG of pslgs() and well_shaped_pslgs() passes lepp.validate without a warning
+(degenerate_pslgs() may warn: a hole point on a segment removes nothing). Each dict has the `triangle` package's keys (vertices,
 segments, segment_markers, holes; 0-based NumPy arrays) and 'family' ('gen:convex', ...).
 Hypothesis shrinks them toward fewer vertices and smaller coordinates.
 """
@@ -29,6 +30,7 @@ from ._certify import certify
 
 __all__ = ["pslgs", "well_shaped_pslgs", "convex_polygons", "star_polygons", "polygons_with_hole",
            "point_clouds_in_box", "boxes_with_cracks", "near_degenerate", "small_input_angles",
+           "mirror_symmetric", "mirror_kites", "holes_on_boundaries", "threshold_angles", "degenerate_pslgs",
            "assert_certified"]
 
 
@@ -368,6 +370,107 @@ def well_shaped_pslgs(scale=1.0):
         return b.build("gen:box-hole", scale)
 
     return st.one_of(point_clouds_in_box(scale), regular(), box_hole())
+
+
+# ---- the degenerate families (properties/gen/include/lepp/gen_degenerate.h) -------------
+# Where docs/ALGORITHM.md's decisions meet their boundaries: exact ties in edge length,
+# orientation and in-circle exactly zero, angles at a threshold, hole points on vertices,
+# segments and unconstrained edges. Some make validation warn (a hole point on a segment
+# removes nothing): run them through lepp.validate before a mesher sees them.
+
+def mirror_symmetric(scale=1.0):
+    """A box [-W, W] x [-H, H] (sides sampled every `stride` lattice points) and up to 12
+    points of the quadrant x, y > 0 with their images under x -> -x, y -> -y, both, or the
+    half turn: equal edge lengths and cocircular quadruples everywhere. 'gen:mirror'"""
+    @st.composite
+    def gen(draw):
+        w, h, stride, group = draw(_ints(3, 17)), draw(_ints(3, 17)), draw(_ints(0, 3)), draw(_ints(0, 4))
+        raw = draw(_pairs(0, 64, 0, 64, max_size=12))
+        b = _Builder()
+        b.ring([(-w, -h), (w, -h), (w, h), (-w, h)], stride, 1)
+        for rx, ry in raw:
+            x, y = 1 + rx % (w - 1), 1 + ry % (h - 1)
+            orbit = [(x, y)]
+            if group in (0, 2):
+                orbit.append((-x, y))
+            if group in (1, 2):
+                orbit.append((x, -y))
+            if group in (2, 3):
+                orbit.append((-x, -y))
+            for p in orbit:
+                if not b.occupied(p):
+                    b.vertex(p)
+        return b.build("gen:mirror", scale)
+    return gen()
+
+
+def mirror_kites(scale=1.0):
+    """Kites about their diagonal (-a, 0)-(a, 0) with apexes (c, h1), (c, -h2) (h1 = h2: the
+    quad centroid exactly on the diagonal), up to 3 interior points on an axis. 'gen:kite'"""
+    @st.composite
+    def gen(draw):
+        a, c, h1, h2 = draw(_ints(2, 33)), draw(_ints(0, 33)), draw(_ints(1, 57)), draw(_ints(1, 57))
+        equal = draw(st.booleans())
+        inner = draw(st.lists(_ints(0, 256), max_size=3))
+        A, C, H1 = a, c % a, h1
+        H2 = h1 if equal else h2
+        b = _Builder()
+        b.ring([(-A, 0), (C, -H2), (A, 0), (C, H1)], 1, 1)
+        for i in inner:
+            low = min(H1, H2)
+            p = (-A + 1 + (i >> 1) % (2 * A - 1), 0) if i & 1 else (C, -low + 1 + (i >> 1) % (2 * low - 1))
+            if not b.occupied(p):
+                b.vertex(p)
+        return b.build("gen:kite", scale)
+    return gen()
+
+
+def holes_on_boundaries(scale=1.0):
+    """A box around a triangle ring with a free vertex inside, and one hole point inside a
+    triangle, on an unconstrained edge, on a ring vertex, on the free vertex, on a segment or
+    on the outer boundary (only the first two remove the ring's inside). 'gen:hole-on'"""
+    @st.composite
+    def gen(draw):
+        k, where, jx, jy = draw(_ints(2, 9)), draw(_ints(0, 6)), draw(_ints(0, 4)), draw(_ints(0, 4))
+        K = 4 * k
+        b = _Builder()
+        b.ring([(0, 0), (2 * K, 0), (2 * K, 2 * K), (0, 2 * K)], 0, 1)
+        p0, p1, p2 = (K // 2, K // 2), (K + K // 2, K // 2 + 2 * (jx % 2)), (K, K + K // 2 + 2 * (jy % 2))
+        q = (K, K)
+        b.vertex(q)
+        b.ring([p0, p1, p2], 0, 2)
+        hole = [(q[0], q[1] - 1), ((q[0] + p0[0]) // 2, (q[1] + p0[1]) // 2), p1, q,
+                ((p1[0] + p2[0]) // 2, (p1[1] + p2[1]) // 2), (K, 0)][where]
+        b.holes.append(hole)
+        return b.build("gen:hole-on", scale)
+    return gen()
+
+
+def threshold_angles(scale=1.0):
+    """Input angles exactly at or next to the thresholds compared: a right isosceles corner
+    (45 and 90 degrees exactly), a sliver of slope 1/L, a boundary bent by one lattice unit
+    (near 180, convex and reflex), an almost right corner. 'gen:angles'"""
+    @st.composite
+    def gen(draw):
+        kind, L, stride = draw(_ints(0, 6)), draw(_ints(4, 33)), draw(_ints(0, 3))
+        ring = [
+            [(0, 0), (L, 0), (0, L)],
+            [(0, 0), (L, 0), (L, L), (0, 2 * L)],
+            [(0, 0), (L, 0), (L, 1)],
+            [(0, 0), (L, 1), (2 * L, 0), (2 * L, L), (0, L)],
+            [(0, 0), (L, -1), (2 * L, 0), (2 * L, L), (0, L)],
+            [(0, 0), (L, 0), (1, L)],
+        ][kind]
+        b = _Builder()
+        b.ring(ring, stride, 1)
+        return b.build("gen:angles", scale)
+    return gen()
+
+
+def degenerate_pslgs(scale=1.0):
+    """Any degenerate family above, or near_degenerate's (lepp::gen::anyDegenerate)."""
+    return st.one_of(mirror_symmetric(scale), mirror_kites(scale), holes_on_boundaries(scale),
+                     threshold_angles(scale), near_degenerate(scale))
 
 
 def assert_certified(pslg, mesh, min_angle=0, **options):

@@ -7,7 +7,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import lepp
-from lepp.testing import assert_certified, pslgs, well_shaped_pslgs
+from lepp.testing import assert_certified, degenerate_pslgs, pslgs, well_shaped_pslgs
 
 CI = settings(derandomize=True, database=None, deadline=None, max_examples=60,
               suppress_health_check=[HealthCheck.too_slow])
@@ -43,6 +43,15 @@ def test_well_shaped_inputs_converge(pslg, theta):
     assert_certified(pslg, mesh, min_angle=theta)
 
 
+@CI
+@given(degenerate_pslgs(), st.sampled_from([20, 30]))
+def test_degenerate_inputs_are_certified(pslg, theta):
+    """Ties, zero orientations, threshold angles, hole points on edges and vertices."""
+    mesh = lepp.refine(pslg, min_angle=theta, max_steiner=20000)
+    assert mesh.outcome in ("converged", "unimprovable")
+    assert_certified(pslg, mesh, min_angle=theta, exempt_small_input_angles=True)
+
+
 def test_assert_certified_rejects_a_broken_mesh():
     pslg = {"vertices": np.array([[0.0, 0], [4, 0], [4, 4], [0, 4]]), "segments": np.array([[0, 1], [1, 2], [2, 3], [3, 0]])}
     mesh = lepp.refine(pslg, min_angle=30).to_dict()
@@ -64,3 +73,12 @@ def test_every_family_is_drawn():
 
     collect()
     assert {"gen:convex", "gen:star", "gen:hole", "gen:cloud", "gen:cracks", "gen:wedge"} <= families
+    degenerate = set()
+
+    @settings(derandomize=True, database=None, max_examples=200)
+    @given(degenerate_pslgs())
+    def collect_degenerate(p):
+        degenerate.add(p["family"])
+
+    collect_degenerate()
+    assert {"gen:mirror", "gen:kite", "gen:hole-on", "gen:angles"} <= degenerate
