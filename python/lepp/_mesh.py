@@ -18,6 +18,8 @@ class Mesh:
     edges           (k, 2) int32: the constrained edges (pieces of input segments)
     edge_segments   (k,) int32: the input segment each lies on (0-based, -1 unknown)
     edge_markers    (k,) int32: that segment's marker
+    triangle_regions (m,) int32: k + 1 for the input's region k (regions[k]), 0 for none;
+                    empty when the input has no regions
     input_vertices  how many leading vertices are input vertices
     trace           (s, 2) float64 Steiner points in insertion order (trace=True), else None
     trace_rules     the paper's rule that chose each point (trace=True), else None
@@ -38,6 +40,8 @@ class Mesh:
         self.edges = result["edges"]
         self.edge_segments = result["edge_segments"]
         self.edge_markers = result["edge_markers"]
+        self.triangle_regions = result["triangle_regions"]
+        self._region_count = int(result["region_count"])
         self.trace = result["trace"]
         self.trace_rules = result.get("trace_rules")
         self.unimprovable = result["unimprovable"]
@@ -58,6 +62,9 @@ class Mesh:
             "edges": self.edges,
             "edge_segments": self.edge_segments,
             "input_vertices": self.input_vertices,
+            "edge_markers": self.edge_markers,
+            "triangle_regions": self.triangle_regions,
+            "region_count": self._region_count,
         }
 
     def to_dict(self):
@@ -67,12 +74,13 @@ class Mesh:
         d["trace"] = self.trace
         return d
 
-    def write(self, path, format="triangle"):
-        """Writes the mesh. format 'triangle': PATH.node, PATH.ele, PATH.poly (and
-        PATH.unimprovable when triangles were left bad), as `lepp refine -o PATH` writes them."""
-        path = os.fspath(path)
-        if format == "triangle":
-            _lepp.write_triangle(path, self._arrays(), self.unimprovable)
-            return
-        raise ValueError(f"format: {format!r} is not one lepp writes (triangle)")
-
+    def write(self, prefix, format="triangle", *, binary=False):
+        """Writes the mesh as `lepp refine -o PREFIX --format FORMAT` does (docs/FORMATS.md):
+        'triangle' PREFIX.node, PREFIX.ele, PREFIX.poly; 'vtu' PREFIX.vtu (VTK XML, with the
+        quality of each triangle and its region); 'msh2' or 'msh4' PREFIX.msh (Gmsh 2.2 or
+        4.1, physical groups from the boundary markers and regions; binary=True for Gmsh's
+        binary variant). format may list several ('triangle,vtu' or a list). PREFIX.unimprovable
+        too when triangles were left bad by the small-input-angle rule."""
+        formats = format.split(",") if isinstance(format, str) else list(format)
+        _lepp.write_mesh(os.fspath(prefix), self._arrays(), [f.strip() for f in formats], bool(binary),
+                         self.unimprovable)

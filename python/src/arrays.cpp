@@ -130,6 +130,25 @@ Mesh mesh_from_dict(const py::dict& d) {
   return mesh;
 }
 
+MeshLabels labels_from_dict(const py::dict& d, const Mesh& mesh) {
+  // An empty array is none of that kind (mesh_labels() gives none for an input without regions).
+  MeshLabels labels;
+  if (present(d, "edge_markers")) {
+    Ints m = table<Ints>(d, "edge_markers", 1);
+    if (m.size() != 0 && static_cast<std::size_t>(m.size()) != mesh.constrained_edges.size())
+      throw std::invalid_argument("edge_markers: expected one per edge");
+    labels.edge_markers.assign(m.data(), m.data() + m.size());
+  }
+  if (present(d, "triangle_regions")) {
+    Ints r = table<Ints>(d, "triangle_regions", 1);
+    if (r.size() != 0 && static_cast<std::size_t>(r.size()) != mesh.triangles.size())
+      throw std::invalid_argument("triangle_regions: expected one per triangle");
+    labels.triangle_regions.assign(r.data(), r.data() + r.size());
+  }
+  if (present(d, "region_count")) labels.region_count = d["region_count"].cast<int>();
+  return labels;
+}
+
 py::dict unimprovable_to_dict(const UnimprovableTriangle& u) {
   py::dict d;
   d["triangle"] = py::make_tuple(u.triangle[0], u.triangle[1], u.triangle[2]);

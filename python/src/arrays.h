@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 
 #include "lepp/mesh.h"
+#include "lepp/mesh_labels.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
 
@@ -30,6 +31,11 @@ py::dict pslg_to_dict(const Pslg& pslg);
 // edge_segments (k,) (constrained edges and their input segment ids, -1 unknown)
 // and input_vertices (how many leading vertices are the input's, 0: unknown).
 Mesh mesh_from_dict(const py::dict& d);
+
+// The labels the VTU and Gmsh writers take (lepp/mesh_labels.h) from a mesh dict's
+// edge_markers (one per edge), triangle_regions (one per triangle) and
+// region_count; missing keys give no labels of that kind.
+MeshLabels labels_from_dict(const py::dict& d, const Mesh& mesh);
 
 // A triangle left bad by the small-input-angle rule as a dict (triangle, apex,
 // segment1, segment2, input_angle) and back.

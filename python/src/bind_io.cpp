@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading inputs as `lepp refine` does, validating them with the domain
-// options, and writing meshes in Triangle's formats.
+// options, and writing meshes in every format lepp refine --format writes.
+#include <algorithm>
+#include <optional>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -11,6 +14,7 @@
 #include "bindings.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "lepp/mesh_formats.h"
 #include "lepp/validate.h"
 
 namespace lepp::python {
@@ -39,16 +43,34 @@ void bind_io(py::module_& m) {
       py::arg("pslg"), py::arg("convex_hull") = false, py::arg("split_crossings") = false,
       "The PSLG as the engines see it (duplicates merged, ...): (PSLG dict, warnings); InputError when it is not one.");
   m.def(
-      "write_triangle",
-      [](const std::string& prefix, const py::dict& mesh, const py::list& unimprovable) {
+      "write_mesh",
+      [](const std::string& prefix, const py::dict& mesh, const std::vector<std::string>& formats, bool binary,
+         const py::list& unimprovable) {
+        std::vector<MeshFormat> fs;
+        for (const std::string& name : formats) {
+          const std::optional<MeshFormat> f = parse_mesh_format(name);
+          if (!f) throw std::invalid_argument("format: '" + name + "' is none of triangle, vtu, msh2, msh4");
+          if (std::find(fs.begin(), fs.end(), *f) == fs.end()) fs.push_back(*f);
+        }
+        if (std::find(fs.begin(), fs.end(), MeshFormat::Msh2) != fs.end() &&
+            std::find(fs.begin(), fs.end(), MeshFormat::Msh4) != fs.end())
+          throw std::invalid_argument("format: msh2 and msh4 would both write " + prefix + ".msh; ask for one per call");
         Mesh m = mesh_from_dict(mesh);
+        const MeshLabels labels = labels_from_dict(mesh, m);
         std::vector<UnimprovableTriangle> bad = unimprovable_from_list(unimprovable);
+        MeshWriteOptions options;
+        options.binary = binary;
         py::gil_scoped_release release;
-        write_mesh(prefix, m);
+        try {
+          for (MeshFormat f : fs) write_mesh(prefix, m, f, labels, options);
+        } catch (const std::system_error& e) {
+          throw InputError(prefix, 0, std::string("cannot write mesh: ") + e.what());
+        }
         write_unimprovable(prefix, bad);
       },
-      py::arg("prefix"), py::arg("mesh"), py::arg("unimprovable") = py::list(),
-      "PREFIX.node, PREFIX.ele, PREFIX.poly (and PREFIX.unimprovable) as lepp refine writes them.");
+      py::arg("prefix"), py::arg("mesh"), py::arg("formats"), py::arg("binary") = false,
+      py::arg("unimprovable") = py::list(),
+      "PREFIX.node/.ele/.poly, PREFIX.vtu, PREFIX.msh (and PREFIX.unimprovable) as lepp refine --format writes them.");
 }
 
 }  // namespace lepp::python

@@ -14,6 +14,7 @@
 #include "lepp/fast.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "lepp/mesh_labels.h"
 #include "lepp/reference.h"
 #include "lepp/stats.h"
 
@@ -65,6 +66,7 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
   std::vector<std::string> warnings;
   RefineResult result;
   MeshStats stats;
+  MeshLabels labels;
   {
     py::gil_scoped_release release;
     input = validate(raw, DomainOptions{call.convex_hull, call.split_crossings}, warnings);
@@ -75,24 +77,24 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
       result = reference::refine(input, options);
     }
     stats = mesh_stats(result.mesh, input);
+    labels = mesh_labels(result.mesh, input);  // markers and regions, by validated segment
   }
   py::dict out;
-  // Markers as lepp refine writes them: the input segment's, and with split
-  // crossings the file's segment number (both pieces keep their segment's).
-  std::vector<int> edges, edge_segments, edge_markers;
+  // Segment ids as lepp refine writes them: with split crossings the file's
+  // segment number (both pieces keep their segment's).
+  std::vector<int> edges, edge_segments;
   for (const ConstrainedEdge& e : result.mesh.constrained_edges) {
     edges.insert(edges.end(), {e.a, e.b});
     int segment = e.segment;
-    edge_markers.push_back(segment >= 0 && static_cast<std::size_t>(segment) < input.segments.size()
-                               ? input.segments[static_cast<std::size_t>(segment)].marker
-                               : 0);
     if (call.split_crossings && segment >= 0 && static_cast<std::size_t>(segment) < input.segment_origin.size())
       segment = input.segment_origin[static_cast<std::size_t>(segment)];
     edge_segments.push_back(segment);
   }
   out["edges"] = int_array(edges, 2);
   out["edge_segments"] = int_array(edge_segments);
-  out["edge_markers"] = int_array(edge_markers);
+  out["edge_markers"] = int_array(labels.edge_markers);
+  out["triangle_regions"] = int_array(labels.triangle_regions);
+  out["region_count"] = labels.region_count;
   out["input_vertices"] = result.mesh.input_vertices;
   out["vertices"] = take_points(std::move(result.mesh.vertices));
   out["triangles"] = take_triangles(std::move(result.mesh.triangles));

@@ -26,4 +26,6 @@ def test_readme_example_runs_as_shown(tmp_path):
                        env=dict(os.environ))
     assert r.returncode == 0, r.stdout + r.stderr
     assert "<lepp.Mesh" in r.stdout and "| certificate" in r.stdout
-    assert (tmp_path / "square.svg").exists()
+    assert (tmp_path / "square.svg").exists() and (tmp_path / "square.node").exists()
+    vtu = (tmp_path / "square.vtu").read_bytes()
+    assert vtu.startswith(b"<?xml") and b"UnstructuredGrid" in vtu

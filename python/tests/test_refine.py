@@ -168,3 +168,33 @@ def test_ctrl_c_stops_a_long_run():
         lepp.refine(pslg, min_angle=36)  # 267 thousand points when left to finish
     timer.join()
     assert lepp.refine(corpus("paper", "A.poly")).converged
+
+
+@pytest.mark.parametrize("format,files", [("vtu", [".vtu"]), ("msh2", [".msh"]), ("msh4", [".msh"]),
+                                          ("triangle,vtu", [".node", ".ele", ".poly", ".vtu"])])
+@pytest.mark.parametrize("binary", [False, True])
+def test_write_formats_are_the_cli_output(format, files, binary, workdir):
+    """Mesh.write(format=...) writes the bytes of lepp refine --format (labels from the input:
+    boundary markers and regions)."""
+    path = corpus("triangle-formats", "region-areas.poly")
+    mesh = lepp.refine(path, min_angle=20, region_areas=True)
+    mesh.write(workdir / "py", format=format, binary=binary)
+    args = ["refine", path, "-o", str(workdir / "cli"), "-q", "--min-angle", "20", "--region-areas", "--format", format]
+    assert run_cli(*args, *(["--binary"] if binary else [])).returncode == 0
+    for ext in files:
+        assert (workdir / ("py" + ext)).read_bytes() == (workdir / ("cli" + ext)).read_bytes(), ext
+    assert (mesh.triangle_regions > 0).any() and mesh.triangle_regions.shape == (mesh.triangles.shape[0],)
+
+
+def test_vtu_read_back_by_meshio(workdir):
+    meshio = pytest.importorskip("meshio")
+    mesh = lepp.refine(corpus("paper", "A.poly"), min_angle=30)
+    mesh.write(workdir / "a", format="vtu")
+    back = meshio.read(str(workdir / "a.vtu"))
+    np.testing.assert_array_equal(back.points[:, :2], mesh.vertices)
+    np.testing.assert_array_equal(back.cells_dict["triangle"], mesh.triangles)
+    assert back.cell_data  # the per-triangle quality arrays
+    with pytest.raises(ValueError, match="none of"):
+        mesh.write(workdir / "a", format="stl")
+    with pytest.raises(ValueError, match="msh2 and msh4"):
+        mesh.write(workdir / "a", format=["msh2", "msh4"])
