@@ -134,7 +134,7 @@ def test_the_gil_is_released_while_the_engine_runs():
 
     def work():
         span["start"] = time.perf_counter()
-        lepp.refine(pslg, min_angle=33)
+        lepp.refine(pslg, min_angle=36, max_steiner=150000)  # a few tenths of a second in the engine
         span["end"] = time.perf_counter()
         done.set()
 
