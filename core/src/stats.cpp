@@ -9,21 +9,32 @@ namespace lepp {
 namespace {
 double len(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
-// The angle at o of triangle opq, in radians.
-double angle_at(const Point& o, const Point& p, const Point& q) {
-  double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
-  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+// p - o scaled by a power of two so that its larger component is in [1, 2): the
+// direction is kept and neither the difference nor the products after it over- or
+// underflow. A difference that overflows is taken of the halves (exact at that size).
+Point scaled_direction(const Point& o, const Point& p) {
+  double dx = p.x - o.x, dy = p.y - o.y;
+  if (!std::isfinite(dx) || !std::isfinite(dy)) dx = p.x / 2 - o.x / 2, dy = p.y / 2 - o.y / 2;
+  const double m = std::max(std::abs(dx), std::abs(dy));
+  if (!(m > 0) || !std::isfinite(m)) return {dx, dy};
+  const int e = std::ilogb(m);
+  return {std::ldexp(dx, -e), std::ldexp(dy, -e)};
 }
 }  // namespace
 
+double signed_angle_deg(const Point& o, const Point& p, const Point& q) {
+  const Point u = scaled_direction(o, p), v = scaled_direction(o, q);
+  return std::atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y) * 180.0 / M_PI;
+}
+
+double angle_deg(const Point& o, const Point& p, const Point& q) { return std::abs(signed_angle_deg(o, p, q)); }
+
 double min_angle_deg(const Point& a, const Point& b, const Point& c) {
-  double m = std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
-  return m * 180.0 / M_PI;
+  return std::min({angle_deg(a, b, c), angle_deg(b, c, a), angle_deg(c, a, b)});
 }
 
 double max_angle_deg(const Point& a, const Point& b, const Point& c) {
-  double m = std::max({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)});
-  return m * 180.0 / M_PI;
+  return std::max({angle_deg(a, b, c), angle_deg(b, c, a), angle_deg(c, a, b)});
 }
 
 double radius_ratio(const Point& a, const Point& b, const Point& c) {

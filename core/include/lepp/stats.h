@@ -20,7 +20,14 @@ struct MeshStats {
 
 MeshStats mesh_stats(const Mesh& mesh, const Pslg& input);
 
-// Smallest angle of triangle abc in degrees, and its area quality q.
+// The angle at o between o->p and o->q, degrees in [0, 180], and its signed form
+// (counter-clockwise from o->p to o->q, in (-180, 180]). Right at any magnitude:
+// each vector is scaled by a power of two before the products, so coordinates
+// near 1e300 do not overflow and near 1e-300 do not underflow (issue 19).
+double angle_deg(const Point& o, const Point& p, const Point& q);
+double signed_angle_deg(const Point& o, const Point& p, const Point& q);
+
+// Smallest angle of triangle abc in degrees (right at any magnitude), and its area quality q.
 double min_angle_deg(const Point& a, const Point& b, const Point& c);
 double area_quality(const Point& a, const Point& b, const Point& c);
 // The other per-triangle measures the .vtu carries (docs/FORMATS.md), each 1

@@ -752,9 +752,7 @@ class Certifier {
         const int c = apex(half);
         if (exact::angle_over_120(P(c), P(a), P(b))) {
           const Point &C = P(c), &A = P(a), &B = P(b);
-          const double deg = std::atan2(std::abs((A.x - C.x) * (B.y - C.y) - (A.y - C.y) * (B.x - C.x)),
-                                        (A.x - C.x) * (B.x - C.x) + (A.y - C.y) * (B.y - C.y)) *
-                             180 / M_PI;
+          const double deg = angle_deg(C, A, B);  // scaled: right at 1e299 and 1e-301 too
           add({Reason::TerminalAngleOver120,
                fmt::format("terminal edge {}-{} {} {} (triangles {} and {}): the angle at {} {} is over 120 degrees (about {})", a, b,
                            pt(A), pt(B), h / 3, g / 3, c, pt(C), deg),

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "exact.h"
+#include "lepp/stats.h"
 #include "expected_domain.h"
 #include "small_input_angles_internal.h"
 
@@ -76,8 +77,7 @@ std::vector<SmallInputAngle> small_input_angles(const Pslg& pslg, const Expected
         a.end1 = e1;
         a.end2 = e2;
         a.near_end = exact::compare_squared_length(V, P(e2), V, P(e1)) < 0 ? e2 : e1;
-        const double ux = P(e1).x - V.x, uy = P(e1).y - V.y, wx = P(e2).x - V.x, wy = P(e2).y - V.y;
-        a.angle_deg = std::atan2(ux * wy - uy * wx, ux * wx + uy * wy) * 180 / M_PI;
+        a.angle_deg = signed_angle_deg(V, P(e1), P(e2));  // scaled: right at any magnitude
         a.radius = std::hypot(P(a.near_end).x - V.x, P(a.near_end).y - V.y);
         out.push_back(a);
       }

@@ -25,6 +25,7 @@
 #include <rapidcheck.h>
 
 #include "lepp/pslg.h"
+#include "lepp/stats.h"
 
 namespace lepp::gen {
 
@@ -506,8 +507,7 @@ inline double min_input_angle_deg(const Pslg& p) {
       if (v < 0) continue;
       const Point &o = p.vertices[static_cast<std::size_t>(v)], &x = p.vertices[static_cast<std::size_t>(a)],
                   &y = p.vertices[static_cast<std::size_t>(b)];
-      const double ux = x.x - o.x, uy = x.y - o.y, wx = y.x - o.x, wy = y.y - o.y;
-      best = std::min(best, std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / M_PI);
+      best = std::min(best, angle_deg(o, x, y));  // scaled vectors: right at 1e299 and 1e-301 too
     }
   return best;
 }
