@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -18,8 +19,10 @@
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
 #include "lepp/audit/command_engine.h"
+#include "lepp/audit/data_root.h"
 #include "lepp/audit/isolated_engine.h"
 #include "lepp/audit/peer_engines.h"
+#include "lepp/audit/points_cache.h"
 #include "lepp/audit/report.h"
 #include "lepp/audit/subprocess.h"
 #include "lepp/fast.h"
@@ -38,7 +41,7 @@ struct AuditArgs {
   std::vector<std::string> inputs;
   std::string sources = "gen,paper,corpus";
   std::string compare = "auto";
-  std::string root = ".";
+  std::string root;  // empty: share/lepp beside the executable, else the source tree (data_root.h)
   double timeout = 10;
   std::size_t memory = 0;
   double angle_tolerance = 1e-3, point_tolerance = 8;
@@ -48,6 +51,10 @@ struct AuditArgs {
   bool json = false, no_shrink = false, no_isolate = false;
   std::size_t max_findings = 3;
   double shrink_seconds = 60;
+  std::size_t jobs = 0;  // 0: the machine's cores
+  std::size_t repeat = 1;
+  std::string cache;     // empty: the default cache directory
+  bool no_cache = false;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -65,9 +72,14 @@ void print_progress(const audit::Progress& p) {
   std::fflush(stderr);
 }
 
-int run_audit_command(const AuditArgs& a) {
+int run_audit_command(const AuditArgs& args) {
   try {
+    AuditArgs a = args;
     if (a.cmd.empty() == a.engine.empty()) throw audit::UsageError("give exactly one of --cmd TEMPLATE and --engine NAME");
+    a.root = audit::find_data_root(a.root);
+    // reproduce.sh names this very lepp: a bare `lepp` may not be on PATH, or be another one.
+    const std::string self = audit::executable_path();
+    const std::string lepp_word = self.empty() ? "lepp" : audit::shell_quote(self);
     audit::AuditOptions o;
     o.method = a.method == "midpoint" ? Method::Midpoint : Method::Centroid;
     QueueOrder order = a.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
@@ -77,7 +89,7 @@ int run_audit_command(const AuditArgs& a) {
     if (!a.cmd.empty()) {
       engine = audit::command_engine(a.cmd);
       o.engine_name = a.cmd;
-      o.reproduce_prefix = "lepp audit --cmd " + audit::shell_quote(a.cmd);
+      o.reproduce_prefix = lepp_word + " audit --cmd " + audit::shell_quote(a.cmd);
     } else {
       if (a.engine == "fast") engine = lepp_engine(audit::fast_engine(order));
       else if (a.engine == "reference") engine = lepp_engine(audit::reference_engine(order));
@@ -86,17 +98,21 @@ int run_audit_command(const AuditArgs& a) {
       o.engine_name = a.engine == "fast" || a.engine == "reference" ? "lepp " + a.engine + (a.order == "lifo" ? " (lifo)" : "")
                       : a.engine == "triangle"                     ? "Triangle (triangle-wasm)"
                                                                    : "CGAL refine_Delaunay_mesh_2";
-      o.reproduce_prefix = "lepp audit --engine " + a.engine + (a.order == "lifo" ? " --order lifo" : "");
+      o.reproduce_prefix = lepp_word + " audit --engine " + a.engine + (a.order == "lifo" ? " --order lifo" : "");
+      if (a.engine == "triangle") o.reproduce_prefix += " --root " + audit::shell_quote(std::filesystem::absolute(a.root).string());
     }
     std::vector<std::string> compare = a.compare == "auto" ? std::vector<std::string>{"reference", "triangle"} : split(a.compare);
     for (const std::string& c : compare) {
       if (c == "none") continue;
-      if (c == "reference") o.comparisons.push_back({"lepp reference", lepp_engine(audit::reference_engine())});
-      else if (c == "fast") o.comparisons.push_back({"lepp fast", lepp_engine(audit::fast_engine())});
-      else if (c == "cgal") o.comparisons.push_back({"CGAL", audit::cgal_engine()});
+      // Cache keys name the engine's build: a new lepp or Triangle budget is a new entry.
+      const std::string build = fmt::format("{} {}", kVersion, git_commit());
+      if (c == "reference")
+        o.comparisons.push_back({"lepp reference", lepp_engine(audit::reference_points_engine()), "lepp-reference " + build});
+      else if (c == "fast") o.comparisons.push_back({"lepp fast", lepp_engine(audit::fast_engine()), "lepp-fast " + build});
+      else if (c == "cgal") o.comparisons.push_back({"CGAL", audit::cgal_engine(), "cgal " + std::string(cgal_version())});
       else if (c == "triangle") {
         try {
-          o.comparisons.push_back({"Triangle", audit::triangle_engine(a.root)});
+          o.comparisons.push_back({"Triangle", audit::triangle_engine(a.root), "triangle-wasm -S20000 " + build});
         } catch (const audit::UsageError&) {
           if (a.compare != "auto") throw;  // asked for explicitly: say it is missing
         }
@@ -126,6 +142,10 @@ int run_audit_command(const AuditArgs& a) {
     o.shrink = !a.no_shrink;
     o.max_findings_per_row = a.max_findings;
     o.shrink_max_seconds = a.shrink_seconds;
+    o.jobs = a.jobs;
+    o.repeat = a.repeat;
+    if (a.repeat < 1) throw audit::UsageError("--repeat: at least 1");
+    o.points_cache_dir = a.no_cache ? std::string() : !a.cache.empty() ? a.cache : audit::default_points_cache_dir();
     if (isatty(STDERR_FILENO)) o.on_progress = print_progress;
 
     audit::AuditReport report = audit::run_audit(engine, o);
@@ -176,7 +196,9 @@ void add_audit_command(CLI::App& app, int& status) {
       ->default_val("gen,paper,corpus");
   cmd->add_option("--compare", a->compare, "Count points against: reference, fast, triangle, cgal, none (auto: reference and Triangle if installed)")
       ->default_val("auto");
-  cmd->add_option("--root", a->root, "The lepp source tree (corpus/, tools/triangle/)")->default_val(".");
+  cmd->add_option("--root", a->root,
+                  "Where corpus/paper, corpus/hostile (and tools/triangle/) are (default: share/lepp beside the executable, "
+                  "else the source tree lepp was built from)");
   cmd->add_option("--timeout", a->timeout, "Seconds per run; a run past it is killed: a non-termination finding")->default_val(10);
   cmd->add_option("--memory", a->memory, "Address-space cap of the program, MB (0: none)")->default_val(0);
   cmd->add_flag("--no-isolate", a->no_isolate,
@@ -198,6 +220,14 @@ void add_audit_command(CLI::App& app, int& status) {
   cmd->add_flag("--no-shrink", a->no_shrink, "Save failures as found, without shrinking");
   cmd->add_option("--max-findings", a->max_findings, "Failures shrunk and saved per row (the rest are counted)")->default_val(3);
   cmd->add_option("--shrink-seconds", a->shrink_seconds, "Time budget of one shrink")->default_val(60);
+  cmd->add_option("-j,--jobs", a->jobs, "Cases, comparisons and shrink candidates run at once (0: the machine's cores)")
+      ->default_val(0);
+  cmd->add_option("--repeat", a->repeat, "Run every case N times: each run checked, the outputs compared (determinism)")
+      ->default_val(1);
+  cmd->add_option("--cache", a->cache,
+                  "Directory of the comparison points cache (default: $XDG_CACHE_HOME/lepp/audit-points, else "
+                  "~/.cache/lepp/audit-points)");
+  cmd->add_flag("--no-cache", a->no_cache, "Run every comparison, read and write no cache");
   cmd->footer("Exit status: 0 every row holds; 1 a row failed (findings saved under --out); 2 bad usage. docs/AUDIT.md.");
   cmd->callback([a, &status] { status = run_audit_command(*a); });
 }

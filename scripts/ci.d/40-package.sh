@@ -3,9 +3,10 @@
 # lepp as Debian packages: cpack -G DEB from the existing build directory makes lepp,
 # lepp-dev and python3-lepp (cmake/LeppDebian.cmake); check that every dependency they declare
 # is installed here, unpack them into a throwaway root (dpkg -x: nothing touches the system),
-# then run the installed command (--version, refine and certify on a paper problem), build and
-# run examples/outside_project with find_package(lepp) against that root only, and import the
-# installed Python package from an empty directory (refine and certify through it).
+# then run the installed command (--version, refine and certify on a paper problem, `lepp audit`
+# from an empty directory on the packaged corpus), build and run examples/outside_project with
+# find_package(lepp) against that root only, and import the installed Python package from an
+# empty directory (refine and certify through it).
 # LEPP_BUILD_DIR overrides the build directory (default build/, made by scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -110,6 +111,30 @@ fi
 grep -q "\"lepp_version\": \"$version\"" "$work/refine.json" || { cat "$work/refine.json"; exit 1; }
 "$lepp" certify corpus/paper/A.poly "$work/A" --min-angle 30 > "$work/certify.txt" || { cat "$work/certify.txt"; exit 1; }
 echo "installed lepp refine + certify on corpus/paper/A.poly at 30 degrees: ok"
+
+# The installed `lepp audit` finds its built-in inputs beside itself (share/lepp/corpus, no
+# --root): from an empty directory, --engine fast runs the paper's problems and the hostile
+# corpus (every file is run or listed as not validating); a built-in source that is not
+# there is exit 2, never a silent skip.
+share="$root/usr/share/lepp/corpus"
+n_paper=$(ls "$share"/paper/*.poly | wc -l)
+n_files=$(ls "$share"/paper/*.poly "$share"/hostile/*.poly | wc -l)
+[ "$n_paper" -ge 4 ] || { echo "40-package: the package has $n_paper of the paper's problems under share/lepp" >&2; exit 1; }
+mkdir -p "$work/empty"
+s=0
+(cd "$work/empty" && "$lepp" audit --engine fast --sources paper,corpus --theta 25 --compare none --no-shrink \
+  --out "$work/audit-out" --json > "$work/audit.json") || s=$?
+[ $s -eq 0 ] || { cat "$work/audit.json"; echo "40-package: installed lepp audit --engine fast: exit $s" >&2; exit 1; }
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); n=int(sys.argv[2]); p=int(sys.argv[3])
+assert r["inputs"] >= p and r["inputs"] + len(r["skipped_inputs"]) == n, (r["inputs"], r["skipped_inputs"], n)
+assert all("/usr/share/lepp/corpus/hostile/" in s for s in r["skipped_inputs"]), r["skipped_inputs"]' \
+  "$work/audit.json" "$n_files" "$n_paper" || { echo "40-package: the installed audit did not run every packaged input" >&2; exit 1; }
+s=0
+(cd "$work/empty" && "$lepp" audit --engine fast --root "$work/empty" --compare none --out "$work/audit-out2" \
+  > /dev/null 2> "$work/audit.err") || s=$?
+[ $s -eq 2 ] && grep -q "paper" "$work/audit.err" ||
+  { cat "$work/audit.err"; echo "40-package: a missing built-in source gave exit $s, not 2" >&2; exit 1; }
+echo "installed lepp audit --engine fast from an empty directory: $(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(r["inputs"], "inputs,", r["runs"], "runs")' "$work/audit.json"): ok"
 
 # 6. find_package(lepp) against the unpacked root only; the package says the same version.
 grep -q "^set(PACKAGE_VERSION \"$version\")" "$root/usr/lib/cmake/lepp/leppConfigVersion.cmake" ||

@@ -16,6 +16,13 @@
 // reading lepp's read_mesh gives it. Input vertices keep their numbers (no -j).
 // Exit status: 0 ok, 2 bad input or usage, 1 Triangle failed, 77 triangle-wasm
 // not installed.
+//
+//   node triangle.js --serve      many cases, one process (lepp audit's comparisons)
+//
+// reads one case per line on stdin, a JSON array [IN, SWITCHES, OUT_PREFIX], runs
+// it as above and answers one line on stdout: "STATUS POINTS_ADDED MESSAGE"
+// (STATUS as the exit status above, POINTS_ADDED -1 unless 0). Ends at the end
+// of stdin. Starting node and loading the wasm costs far more than a small case.
 'use strict';
 
 const fs = require('fs');
@@ -32,9 +39,16 @@ try {
   process.exit(77);
 }
 
+// A failed case: its exit status and message (one process ends with it, the server answers it).
+class CaseError extends Error {
+  constructor(status, message) {
+    super(message);
+    this.status = status;
+  }
+}
+
 function usage(message) {
-  process.stderr.write(`triangle.js: ${message}\nusage: node triangle.js IN.poly SWITCHES OUT_PREFIX\n`);
-  process.exit(2);
+  throw new CaseError(2, `triangle.js: ${message}\nusage: node triangle.js IN.poly SWITCHES OUT_PREFIX`);
 }
 
 // Tokens of a Triangle file, line by line, with comments (#...) and blank lines dropped.
@@ -53,8 +67,7 @@ function readLines(file) {
 }
 
 function bad(file, what) {
-  process.stderr.write(`triangle.js: ${file}: ${what}\n`);
-  process.exit(2);
+  throw new CaseError(2, `triangle.js: ${file}: ${what}`);
 }
 
 // Reads vertices starting at lines[at] as Triangle's readnodes() does: the
@@ -206,13 +219,11 @@ function wasmSwitches(switches) {
   return s;
 }
 
-async function main() {
-  const [input, switches, prefix] = process.argv.slice(2);
+// One case: reads IN, runs Triangle with SWITCHES, writes PREFIX.*; returns the points added.
+function runCase(input, switches, prefix) {
   if (!input || !switches || !prefix) usage('three arguments needed');
   const pslg = readPoly(input);
   const inputPoints = pslg.points.length / 2;
-
-  await Triangle.init(path.join(path.dirname(require.resolve('triangle-wasm')), 'triangle.out.wasm'));
   const io = Triangle.makeIO({
     pointlist: pslg.points,
     pointattributelist: pslg.nattr > 0 ? pslg.attributes : null,
@@ -224,16 +235,51 @@ async function main() {
   });
   const out = Triangle.makeIO();
   try {
-    Triangle.triangulate(wasmSwitches(switches), io, out);
-  } catch (e) {
-    process.stderr.write(`triangle.js: Triangle failed: ${e && e.message ? e.message : e}\n`);
-    process.exit(1);
+    try {
+      Triangle.triangulate(wasmSwitches(switches), io, out);
+    } catch (e) {
+      throw new CaseError(1, `triangle.js: Triangle failed: ${e && e.message ? e.message : e}`);
+    }
+    if (path.dirname(prefix)) fs.mkdirSync(path.dirname(prefix), { recursive: true });
+    writeOutput(prefix, out, pslg.regions);
+    return out.numberofpoints - inputPoints;
+  } finally {
+    Triangle.freeIO(io, true);
+    Triangle.freeIO(out);
   }
-  if (path.dirname(prefix)) fs.mkdirSync(path.dirname(prefix), { recursive: true });
-  writeOutput(prefix, out, pslg.regions);
-  process.stdout.write(`points added ${out.numberofpoints - inputPoints}\n`);
-  Triangle.freeIO(io, true);
-  Triangle.freeIO(out);
+}
+
+// --serve: one case per line of stdin, one answer per line of stdout.
+function serve() {
+  const readline = require('readline');
+  const lines = readline.createInterface({ input: process.stdin, terminal: false });
+  lines.on('line', (line) => {
+    let answer;
+    try {
+      const [input, switches, prefix] = JSON.parse(line);
+      answer = `0 ${runCase(input, switches, prefix)} ok`;
+    } catch (e) {
+      const status = e instanceof CaseError ? e.status : 2;
+      answer = `${status} -1 ${String(e && e.message ? e.message : e).replace(/\s+/g, ' ')}`;
+    }
+    process.stdout.write(answer + '\n');
+  });
+}
+
+async function main() {
+  const args = process.argv.slice(2);
+  await Triangle.init(path.join(path.dirname(require.resolve('triangle-wasm')), 'triangle.out.wasm'));
+  if (args[0] === '--serve') {
+    serve();
+    return;
+  }
+  try {
+    const added = runCase(args[0], args[1], args[2]);
+    process.stdout.write(`points added ${added}\n`);
+  } catch (e) {
+    process.stderr.write(`${e && e.message ? e.message : e}\n`);
+    process.exit(e instanceof CaseError ? e.status : 1);
+  }
 }
 
 main();

@@ -49,6 +49,31 @@ Engine refine_engine(RefineFunction refine, QueueOrder order) {
   };
 }
 
+Engine reference_points_engine() {
+  Engine reference = reference_engine();
+  return [reference](const Pslg& pslg, const EngineRequest& req) {
+    RefineOptions o;
+    o.min_angle_deg = req.theta;
+    o.method = req.method;
+    o.time_limit_seconds = req.timeout_seconds > 0 ? req.timeout_seconds : 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      RefineResult r = fast::refine(pslg, o);
+      if (r.cocircular_ties == 0 && (r.outcome == Outcome::Converged || r.outcome == Outcome::Unimprovable)) {
+        EngineRun run;
+        run.mesh = std::move(r.mesh);
+        run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return run;
+      }
+    } catch (const std::exception&) {
+      // the reference decides
+    }
+    EngineRun run = reference(pslg, req);
+    run.trace.reset();
+    return run;
+  };
+}
+
 Engine fast_engine(QueueOrder order) { return refine_engine(&fast::refine, order); }
 Engine reference_engine(QueueOrder order) { return refine_engine(&reference::refine, order); }
 

@@ -76,6 +76,15 @@ std::uintmax_t size_or_zero(const std::string& path) {
   return ec ? 0 : s;
 }
 
+// The last non-blank line of a text, trimmed.
+std::string last_line(const std::string& text) {
+  std::size_t end = text.find_last_not_of(" \t\r\n");
+  if (end == std::string::npos) return "";
+  std::size_t start = text.rfind('\n', end);
+  start = start == std::string::npos ? 0 : start + 1;
+  return text.substr(start, end - start + 1);
+}
+
 }  // namespace
 
 std::string theta_text(double theta) { return fmt::format("{}", theta); }
@@ -166,8 +175,10 @@ EngineRun run_command(const std::string& shell_command, const std::string& out, 
   const bool nonzero = sr.exit_code != 0;
   if (nonzero) {
     run.exit_code = sr.exit_code;
-    std::string first = sr.stderr_text.substr(0, sr.stderr_text.find('\n'));
-    run.detail = fmt::format("exit status {}{}{}", sr.exit_code, first.empty() ? "" : ": ", first.substr(0, 200));
+    // Its last line, where an exception or an error message usually is (the first is
+    // often debug noise); the whole stderr is kept with the finding.
+    const std::string last = last_line(sr.stderr_text);
+    run.detail = fmt::format("exit status {}{}{}", sr.exit_code, last.empty() ? "" : ": ", last.substr(0, 200));
     if (!fs::exists(out + ".node") || !fs::exists(out + ".ele")) {
       run.status = RunStatus::ExitCode;
       return run;

@@ -141,14 +141,44 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
     }
   }
   if (!drawn) write_text(d / "finding.svg", finding_svg(input, mesh, result, title));
-  if (!text.reproduce.empty()) write_text(d / "reproduce.sh", "#!/bin/sh\n" + text.reproduce + "\n");
+  if (!text.reproduce.empty()) {
+    std::string sh = "#!/bin/sh\n";
+    if (!text.nondeterminism.empty())
+      sh += "# WARNING: the program is not deterministic (" + text.nondeterminism +
+            "): this may not reproduce the finding.\n"
+            "echo 'warning: the audited program is not deterministic: this may not reproduce the finding' >&2\n";
+    write_text(d / "reproduce.sh", sh + text.reproduce + "\n");
+  }
   std::string md = fmt::format(
-      "# {}: {}\n\n- engine: {}\n- method: {}, theta: {}\n- statement: {}\n- paper: {}\n- verdict: {}\n- run: {}{}\n"
-      "- input: input.poly ({} vertices, {} segments, {} holes), shrunk from {}\n",
+      "# {}: {}\n\n- engine: {}\n- method: {}, theta: {}\n- statement: {}\n- paper: {}\n- verdict: {}\n- run: {}{}\n",
       row_key(row), to_string(result.verdict), text.engine, to_string(text.method), text.theta, row_statement(row),
-      row_passage(row), result.detail, to_string(run.status), run.detail.empty() ? "" : " (" + run.detail + ")",
-      input.vertices.size(), input.segments.size(), input.holes.size(), text.input_origin);
-  if (!text.reproduce.empty()) md += "- reproduce: `" + text.reproduce + "`\n";
+      row_passage(row), result.detail, to_string(run.status), run.detail.empty() ? "" : " (" + run.detail + ")");
+  const std::string sizes = fmt::format("{} vertices, {} segments, {} holes", input.vertices.size(), input.segments.size(),
+                                        input.holes.size());
+  if (text.shrink_steps > 0) {
+    md += fmt::format("- input: input.poly ({}), shrunk in {} steps from {} ({} vertices, {} segments, {} holes)\n", sizes,
+                      text.shrink_steps, text.input_origin, text.original_vertices, text.original_segments, text.original_holes);
+    if (!text.original_detail.empty()) md += "- as found, before shrinking: " + text.original_detail + "\n";
+  } else {
+    md += fmt::format("- input: input.poly ({}), as found: {} ({})\n", sizes, text.input_origin,
+                      text.shrink_tried ? "no smaller input failed the same way" : "not shrunk: --no-shrink");
+  }
+  if (!text.signature.empty() && text.shrink_tried) md += "- kept while shrinking: the same row failing with " + text.signature + "\n";
+  if (!text.nondeterminism.empty())
+    md += "- **the program is not deterministic**: " + text.nondeterminism + "; the counterexample may not reproduce\n";
+  if (!text.reproduce.empty())
+    md += std::string("- reproduce") + (text.nondeterminism.empty() ? "" : " (may not reproduce: not deterministic)") + ": `" +
+          text.reproduce + "`\n";
+  // The program's stderr as kept (its first 64 KiB), not only a line of it: an exception is often the last line.
+  if (!run.stderr_text.empty()) {
+    constexpr std::size_t kShown = 16 * 1024;
+    const std::string& all = run.stderr_text;
+    std::string shown = all.size() > kShown ? "...\n" + all.substr(all.size() - kShown) : all;
+    for (std::size_t at = 0; (at = shown.find("```", at)) != std::string::npos;) shown.replace(at, 3, "'''");
+    if (shown.back() != '\n') shown += '\n';
+    md += fmt::format("\n## The program's stderr ({} bytes{}; all of it in stderr.txt)\n\n```\n{}```\n", all.size(),
+                      all.size() > kShown ? fmt::format(", the last {} here", kShown) : "", shown);
+  }
   // A step finding: the mesh just before the step, and the named deviation.
   if (result.diagnosis) {
     md += diagnosis_markdown(*result.diagnosis);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -70,15 +71,19 @@ std::vector<AuditInput> collect_inputs(const InputSources& src, std::vector<std:
       files.insert(files.end(), f.begin(), f.end());
     }
   } else {
-    for (auto [wanted, dir] : {std::pair{src.paper, "paper"}, std::pair{src.corpus, "hostile"}}) {
+    // A built-in source asked for and not there is bad usage, never a silent skip: an
+    // audit that quietly lost the paper's problems would report on what is left.
+    for (auto [wanted, dir, name] : {std::tuple{src.paper, "paper", "paper"}, std::tuple{src.corpus, "hostile", "corpus"}}) {
       if (!wanted) continue;
       const fs::path d = fs::path(src.source_root) / "corpus" / dir;
-      std::error_code ec;
-      if (!fs::is_directory(d, ec)) {
-        skipped.push_back(fmt::format("{}: not found (give the source tree with --root)", d.string()));
-        continue;
-      }
       auto f = poly_files(d);
+      if (f.empty()) {
+        std::string others = name == std::string("paper") ? "gen,corpus" : "gen,paper";
+        throw UsageError(fmt::format(
+            "the built-in source {} (corpus/{}/*.poly) is not under {}: give the directory that holds corpus/ with --root, "
+            "or leave it out with --sources {}",
+            name, dir, fs::absolute(src.source_root).lexically_normal().string(), others));
+      }
       files.insert(files.end(), f.begin(), f.end());
     }
   }

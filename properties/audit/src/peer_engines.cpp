@@ -3,10 +3,16 @@
 
 #include <chrono>
 #include <exception>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include <fmt/format.h>
 
 #include "cgal_mesher.h"
 #include "lepp/audit/command_engine.h"
 #include "lepp/audit/isolated_engine.h"
+#include "lepp/io.h"
 #include "triangle_wasm.h"
 
 namespace lepp::audit {
@@ -19,7 +25,30 @@ Engine triangle_engine(const std::string& root, std::int64_t budget) {
     EngineRun run;
     std::string in, out;
     if (!write_engine_input(pslg, req, in, out, run)) return run;
-    run = run_command(others::triangle_command(root, in, req.theta, budget, out), out, req);
+    // One node process per thread, fed every case (others::TriangleServer).
+    thread_local std::map<std::string, std::unique_ptr<others::TriangleServer>> servers;
+    auto& server = servers[root];
+    if (!server) server = std::make_unique<others::TriangleServer>(root);
+    const others::TriangleRun tr = server->run(in, req.theta, budget, out, req.timeout_seconds);
+    run.seconds = tr.seconds;
+    for (const char* ext : {".node", ".ele", ".poly"})
+      if (std::filesystem::exists(out + ext)) run.output_files.push_back(out + ext);
+    if (tr.status == 0) {
+      try {
+        run.mesh = read_mesh(out);
+      } catch (const std::exception& e) {
+        run.status = RunStatus::UnreadableOutput;
+        run.detail = e.what();
+      }
+    } else if (tr.status < 0) {
+      const bool killed = tr.output.rfind("killed after", 0) == 0;
+      run.status = killed ? RunStatus::TimedOut : RunStatus::Crashed;
+      run.detail = tr.output;
+    } else {
+      run.status = RunStatus::ExitCode;
+      run.exit_code = tr.status;
+      run.detail = fmt::format("exit status {}: {}", tr.status, tr.output);
+    }
     if (run.status == RunStatus::Ok &&
         static_cast<std::int64_t>(run.mesh.vertices.size()) - static_cast<std::int64_t>(pslg.vertices.size()) >= budget) {
       run.status = RunStatus::Stopped;

@@ -27,6 +27,8 @@ std::string verdict_of(const RowSummary& r) {
 std::string smallest_cell(const RowSummary& r) {
   if (r.counterexamples.empty()) return r.first_detail.empty() ? "" : md_cell(r.first_detail);
   const Counterexample& c = r.counterexamples.front();
+  if (c.shrink_steps == 0)
+    return fmt::format("`{}` ({} vertices, {} segments, as found; theta {})", c.dir, c.vertices, c.segments, theta_text(c.theta));
   return fmt::format("`{}` ({} vertices, {} segments, shrunk from {} vertices, {} segments; theta {})", c.dir, c.vertices,
                      c.segments, c.original_vertices, c.original_segments, theta_text(c.theta));
 }
@@ -73,8 +75,9 @@ std::string md_cell(const std::string& s) {
 
 std::string markdown_report(const AuditReport& rep) {
   std::string md = fmt::format("# lepp audit: {}\n\n", rep.engine);
-  md += fmt::format("Method {}, theta {}; {} runs on {} inputs (seed {}); {:.1f} s, of which the engine {:.1f} s.\n\n",
-                    to_string(rep.method), thetas_text(rep.thetas), rep.cases, rep.inputs, rep.seed, rep.seconds,
+  md += fmt::format("Method {}, theta {}; {} runs on {} inputs (seed {}{}); {:.1f} s with -j {}, of which the engine {:.1f} s.\n\n",
+                    to_string(rep.method), thetas_text(rep.thetas), rep.cases, rep.inputs, rep.seed,
+                    rep.repeat > 1 ? fmt::format(", each case run {} times", rep.repeat) : "", rep.seconds, rep.jobs,
                     rep.engine_seconds);
   md += "| # | check | paper | runs | held | failed | verdict | smallest counterexample |\n";
   md += "|---|---|---|---:|---:|---:|---|---|\n";
@@ -97,8 +100,16 @@ std::string markdown_report(const AuditReport& rep) {
     if (rep.status_counts[s]) md += fmt::format(" {} {},", to_string(static_cast<RunStatus>(s)), rep.status_counts[s]);
   if (md.back() == ',') md.pop_back();
   md += ".\n";
+  if (rep.nondeterministic_cases > 0) {
+    md += fmt::format("\n**Not deterministic**: in {} cases the repeated runs on the same input gave different outputs:\n",
+                      rep.nondeterministic_cases);
+    for (const std::string& n : rep.nondeterministic_first) md += "- " + md_cell(n) + "\n";
+  }
   if (!rep.ratios.empty()) {
-    md += "\nPoints added, ours / theirs on the same input and theta (runs both finished):\n\n";
+    md += fmt::format("\nPoints added, ours / theirs on the same input and theta (runs both finished; {} comparison runs, {} from "
+                      "the cache{}):\n\n",
+                      rep.comparison_runs, rep.comparison_cache_hits,
+                      rep.points_cache_dir.empty() ? "" : " in " + rep.points_cache_dir);
     md += "| against | runs | median | min | max | total |\n|---|---:|---:|---:|---:|---:|\n";
     for (const PointsRatio& p : rep.ratios)
       md += fmt::format("| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", p.against, p.cases, p.median, p.min, p.max, p.total);
@@ -106,14 +117,26 @@ std::string markdown_report(const AuditReport& rep) {
   bool any = false;
   for (const RowSummary& r : rep.rows)
     for (const Counterexample& c : r.counterexamples) {
-      if (!any) md += "\n## Findings (shrunk)\n\n";
+      if (!any) md += "\n## Findings\n\n";
       any = true;
-      md += fmt::format("- **{}** theta {}: {} ({} vertices, {} segments, {} holes, shrunk from {} vertices, {} segments, {} holes; "
-                        "{} shrink steps in {} runs; from {})\n",
-                        row_key(c.row), theta_text(c.theta), md_cell(c.detail), c.vertices, c.segments, c.holes,
-                        c.original_vertices, c.original_segments, c.original_holes, c.shrink_steps, c.shrink_runs, c.input);
+      if (c.shrink_steps > 0) {
+        md += fmt::format("- **{}** theta {}: {} ({} vertices, {} segments, {} holes, shrunk from {} vertices, {} segments, {} holes; "
+                          "{} shrink steps in {} runs, each failing with {}; from {})\n",
+                          row_key(c.row), theta_text(c.theta), md_cell(c.detail), c.vertices, c.segments, c.holes,
+                          c.original_vertices, c.original_segments, c.original_holes, c.shrink_steps, c.shrink_runs,
+                          c.signature, c.input);
+        md += fmt::format("  as found: {}\n", md_cell(c.original_detail));
+      } else {
+        md += fmt::format("- **{}** theta {}: {} ({} vertices, {} segments, {} holes, as found{}; from {})\n", row_key(c.row),
+                          theta_text(c.theta), md_cell(c.detail), c.vertices, c.segments, c.holes,
+                          c.shrink_runs > 0 ? fmt::format(": no smaller input failed with {} in {} runs", c.signature, c.shrink_runs)
+                                            : "",
+                          c.input);
+      }
+      if (!c.deterministic) md += fmt::format("  **not deterministic**: {}\n", md_cell(c.nondeterminism));
       md += fmt::format("  files: `{}/`", c.dir);
-      if (!c.reproduce.empty()) md += fmt::format("; reproduce: `{}`", c.reproduce);
+      if (!c.reproduce.empty())
+        md += fmt::format("; reproduce{}: `{}`", c.deterministic ? "" : " (may not reproduce: not deterministic)", c.reproduce);
       md += "\n";
     }
   if (!rep.skipped_inputs.empty()) {
@@ -141,7 +164,14 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"original_holes", c.original_holes},
                     {"shrink_steps", c.shrink_steps},
                     {"shrink_runs", c.shrink_runs},
+                    {"shrink_timeout", c.shrink_timeout},
+                    {"signature", c.signature},
                     {"detail", c.detail},
+                    {"original_detail", c.original_detail},
+                    {"original_input", c.original_input},
+                    {"deterministic", c.deterministic},
+                    {"nondeterminism", c.nondeterminism},
+                    {"stderr_file", c.stderr_file},
                     {"reproduce", c.reproduce}});
       if (!c.deviation.empty()) cx.back()["deviation"] = c.deviation;
     }
@@ -179,6 +209,13 @@ nlohmann::json json_report(const AuditReport& rep) {
           {"exempt_triangles", rep.exempt_triangles},
           {"runs_with_exempt_triangles", rep.runs_with_exempt},
           {"skipped_inputs", rep.skipped_inputs},
+          {"jobs", rep.jobs},
+          {"repeat", rep.repeat},
+          {"nondeterministic_cases", rep.nondeterministic_cases},
+          {"nondeterministic_first", rep.nondeterministic_first},
+          {"comparison_runs", rep.comparison_runs},
+          {"comparison_cache_hits", rep.comparison_cache_hits},
+          {"points_cache_dir", rep.points_cache_dir},
           {"seconds", rep.seconds},
           {"engine_seconds", rep.engine_seconds},
           {"comparison_seconds", rep.comparison_seconds},
@@ -201,7 +238,7 @@ std::string junit_report(const AuditReport& rep) {
       std::string body = fmt::format("{} of {} runs failed. {}\nPaper: {}\n", r.failed, r.run, r.first_detail, row_passage(r.row));
       for (const auto& [name, runs] : r.deviations) body += fmt::format("deviation {}: {} runs\n", name, runs);
       for (const Counterexample& c : r.counterexamples)
-        body += fmt::format("shrunk: {} ({} vertices): {}\n{}\n", c.dir, c.vertices, c.detail, c.reproduce);
+        body += fmt::format("{}: {} ({} vertices): {}\n{}\n", c.shrink_steps > 0 ? "shrunk" : "as found", c.dir, c.vertices, c.detail, c.reproduce);
       x += fmt::format("      <failure message=\"{}\">{}</failure>\n", xml_escape(row_statement(r.row)), xml_escape(body));
     } else if (r.run == 0) {
       x += "      <skipped message=\"no run this check applied to\"/>\n";

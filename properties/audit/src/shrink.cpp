@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "lepp/audit/parallel.h"
 #include "lepp/validate.h"
 #include "shrink_moves.h"
 
@@ -82,32 +83,67 @@ class Greedy {
   // A candidate that does not validate costs no engine run. Structural edits
   // must make the validated PSLG smaller (validation may split a segment at a
   // vertex), coordinate edits must not make it larger: the loop cannot cycle.
-  bool attempt(const Pslg& candidate, bool structural = true) {
-    if (out_of_budget()) return false;
+  std::optional<Pslg> admissible(const Pslg& candidate, bool structural) const {
     auto v = validated(candidate);
-    if (!v) return false;
-    if (structural ? size(*v) >= size(r_.pslg) : size(*v) > size(r_.pslg)) return false;
-    ++r_.runs;
-    if (!still_fails_(*v)) return false;
-    r_.pslg = std::move(*v);
-    ++r_.steps;
-    return true;
+    if (!v) return std::nullopt;
+    if (structural ? size(*v) >= size(r_.pslg) : size(*v) > size(r_.pslg)) return std::nullopt;
+    return v;
   }
+
+  // Tries the candidates in order, up to limits.jobs engine runs at once, and keeps
+  // the first that still fails: its index, or -1 when none does.
+  int attempt_first(const std::vector<Pslg>& candidates, bool structural) {
+    std::vector<std::optional<Pslg>> ok;
+    ok.reserve(candidates.size());
+    for (const Pslg& c : candidates) ok.push_back(admissible(c, structural));
+    const std::size_t jobs = std::max<std::size_t>(1, limits_.jobs);
+    std::size_t at = 0;
+    while (at < ok.size()) {
+      if (out_of_budget()) return -1;
+      std::vector<std::size_t> batch;
+      for (; at < ok.size() && batch.size() < jobs && r_.runs + batch.size() < limits_.max_runs; ++at)
+        if (ok[at]) batch.push_back(at);
+      if (batch.empty()) continue;
+      std::vector<char> fails(batch.size(), 0);
+      parallel_for(batch.size(), jobs, [&](std::size_t i) { fails[i] = still_fails_(*ok[batch[i]]) ? 1 : 0; });
+      r_.runs += batch.size();
+      for (std::size_t i = 0; i < batch.size(); ++i)
+        if (fails[i]) {
+          r_.pslg = std::move(*ok[batch[i]]);
+          ++r_.steps;
+          return static_cast<int>(batch[i]);
+        }
+    }
+    return -1;
+  }
+
+  bool attempt(const Pslg& candidate, bool structural = true) { return attempt_first({candidate}, structural) == 0; }
 
   // Removes chunks of the items count() lists, halves first (a big input goes
   // in few runs), down to single items; after a kept removal the same position
-  // is tried again, since the later items moved up.
+  // is tried again, since the later items moved up. The next `jobs` positions are
+  // tried at once.
   bool remove_chunks(const Count& count, const Remove& remove) {
     bool any = false;
     const std::size_t n = count(r_.pslg);
+    const std::size_t jobs = std::max<std::size_t>(1, limits_.jobs);
     for (std::size_t chunk = std::max<std::size_t>(n / 2, 1); chunk >= 1 && n > 0; chunk /= 2) {
       std::size_t at = 0;
       while (at + chunk <= count(r_.pslg)) {
         if (out_of_budget()) return any;
-        if (attempt(remove(bare(r_.pslg), at, at + chunk)))
+        std::vector<Pslg> candidates;
+        std::vector<std::size_t> positions;
+        for (std::size_t p = at; p + chunk <= count(r_.pslg) && candidates.size() < jobs; p += chunk) {
+          candidates.push_back(remove(bare(r_.pslg), p, p + chunk));
+          positions.push_back(p);
+        }
+        const int kept = attempt_first(candidates, true);
+        if (kept >= 0) {
           any = true;
-        else
-          at += chunk;
+          at = positions[static_cast<std::size_t>(kept)];
+        } else {
+          at = positions.back() + chunk;
+        }
       }
     }
     return any;
@@ -170,14 +206,13 @@ class Greedy {
       any |= attempt(scaled, false);
     }
     const int top = detail::extent_exponent(r_.pslg);
-    for (int g = top; g >= top - 10 && !out_of_budget(); --g) {
+    std::vector<Pslg> grids;
+    for (int g = top; g >= top - 10; --g) {
       auto c = detail::rounded(bare(r_.pslg), g);
       if (!c) break;  // already on this grid, so on every finer one
-      if (attempt(*c, false)) {
-        any = true;
-        break;
-      }
+      grids.push_back(std::move(*c));
     }
+    any |= attempt_first(grids, false) >= 0;  // the coarsest that still fails
     return any;
   }
 
@@ -200,27 +235,46 @@ ShrinkResult shrink_input(const AuditInput& input, const std::function<bool(cons
   r.pslg = input.pslg;
   const auto t0 = Clock::now();
   rc::Shrinkable<Pslg> cur = *input.shrinkable;
+  const std::size_t jobs = std::max<std::size_t>(1, limits.jobs);
   bool progress = true;
   while (progress) {
     progress = false;
     auto shrinks = cur.shrinks();
-    while (auto s = shrinks.next()) {
+    bool exhausted = false;
+    while (!exhausted && !progress) {
       if (r.runs >= limits.max_runs || std::chrono::duration<double>(Clock::now() - t0).count() > limits.max_seconds)
         return r;
-      std::optional<Pslg> v;
-      try {
-        v = validated(s->value());
-      } catch (const std::exception&) {
-        v.reset();
+      // The next `jobs` shrinks that validate (made here, on this thread), run at once; the first still failing is kept.
+      std::vector<rc::Shrinkable<Pslg>> batch;
+      std::vector<Pslg> values;
+      while (batch.size() < jobs && r.runs + batch.size() < limits.max_runs) {
+        auto s = shrinks.next();
+        if (!s) {
+          exhausted = true;
+          break;
+        }
+        std::optional<Pslg> v;
+        try {
+          v = validated(s->value());
+        } catch (const std::exception&) {
+          v.reset();
+        }
+        if (!v) continue;
+        batch.push_back(*s);
+        values.push_back(std::move(*v));
       }
-      if (!v) continue;
-      ++r.runs;
-      if (!still_fails(*v)) continue;
-      r.pslg = std::move(*v);
-      ++r.steps;
-      cur = *s;
-      progress = true;
-      break;
+      if (batch.empty()) break;
+      std::vector<char> fails(batch.size(), 0);
+      parallel_for(batch.size(), jobs, [&](std::size_t i) { fails[i] = still_fails(values[i]) ? 1 : 0; });
+      r.runs += batch.size();
+      for (std::size_t i = 0; i < batch.size(); ++i)
+        if (fails[i]) {
+          r.pslg = std::move(values[i]);
+          ++r.steps;
+          cur = batch[i];
+          progress = true;
+          break;
+        }
     }
   }
   // The tree is exhausted: what is left may still shrink by dropping parts.

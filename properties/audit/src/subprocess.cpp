@@ -73,13 +73,12 @@ struct PipeReader {
 };
 
 bool make_pipe(int fds[2], std::string& detail) {
-  if (pipe(fds) != 0) {
+  // Close-on-exec from the start (pipe2): nothing the child execs inherits them (its
+  // stderr is a dup2 copy, which is), nor a program another audit thread starts meanwhile.
+  if (pipe2(fds, O_CLOEXEC) != 0) {
     detail = std::string("pipe: ") + std::strerror(errno);
     return false;
   }
-  // Nothing the child execs inherits them (its stderr is a dup2 copy, which is inherited).
-  fcntl(fds[0], F_SETFD, FD_CLOEXEC);
-  fcntl(fds[1], F_SETFD, FD_CLOEXEC);
   return true;
 }
 

@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # `lepp audit` exit statuses and outputs: 0 clean (lepp refine through --cmd),
 # 1 findings (a crashing program, CGAL's mesher crashing in its child process),
-# 2 bad usage; JSON and JUnit well-formed; CGAL's mesher that never returns killed at --timeout.
+# 2 bad usage (a missing built-in source among them); JSON and JUnit well-formed; CGAL's
+# mesher that never returns killed at --timeout; reproduce.sh, stderr and finding.md as
+# issue 19 asks; the corpus found without --root.
 # usage: audit_cli_test.sh LEPP_BINARY SOURCE_DIR
 set -u
 lepp=$1; src=$2
@@ -25,6 +27,54 @@ grep -q '| 1 | certificate .*FAILED' "$dir/report.md" || { cat "$dir/report.md";
 ls "$dir"/findings/certificate-*/reproduce.sh > /dev/null 2>&1 || fail "no finding saved"
 python3 -c 'import sys,xml.dom.minidom as m; d=m.parse(sys.argv[1]); assert d.getElementsByTagName("failure")' \
   "$dir/junit2.xml" || fail "JUnit failure"
+
+# reproduce.sh names this very lepp by its absolute path (a bare `lepp` may not be on PATH).
+grep -qF "'$(readlink -f "$lepp")' audit --cmd" "$dir"/findings/certificate-1/reproduce.sh ||
+  { cat "$dir"/findings/certificate-1/reproduce.sh; fail "reproduce.sh does not name the absolute lepp"; }
+
+# The program's whole stderr is kept with the finding; the row names its last line (the
+# error), not its first (debug noise); under --no-shrink finding.md says so, not "shrunk from".
+"$lepp" audit --cmd "$src/properties/audit/tests/programs/noisy_fail.sh {in} {out}" --theta 25 --sources gen --compare none \
+  --cases 1 --no-shrink --out "$dir/noisy" --json > "$dir/noisy.json"; s=$?
+[ $s -eq 1 ] || fail "failing program: exit $s"
+md="$dir/noisy/certificate-1/finding.md"
+grep -q "debug: reading" "$md" && grep -q "error: the triangulation failed (boom)" "$md" || { cat "$md"; fail "stderr not kept in finding.md"; }
+grep -q "debug: 3 vertices" "$dir/noisy/certificate-1/stderr.txt" || fail "stderr.txt"
+grep -q "shrunk from" "$md" && { cat "$md"; fail "finding.md says shrunk from under --no-shrink"; }
+grep -q "not shrunk: --no-shrink" "$md" || { cat "$md"; fail "finding.md does not say it was not shrunk"; }
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); f=r["rows"][0]["first"]; assert "boom" in f and "debug" not in f, f' \
+  "$dir/noisy.json" || fail "the row's line is not the program's last stderr line"
+
+# A program whose output depends on a seed from its environment (LEPP_FLAKY_SEED, else a
+# fresh one per run): every finding is run again, found not deterministic, and its
+# reproduce.sh warns; --repeat 2 counts the cases whose two runs differ; with the seed
+# fixed the same program is deterministic.
+seeded=(--cmd "$src/properties/audit/tests/programs/seeded.py $lepp {in} {out} {theta}" --theta 25 --sources gen
+        --compare none --cases 2 --no-shrink --json)
+(unset LEPP_FLAKY_SEED; "$lepp" audit "${seeded[@]}" --out "$dir/flaky" --repeat 2 > "$dir/flaky.json"); s=$?
+[ $s -eq 1 ] || fail "seeded program: exit $s"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); c=r["rows"][0]["counterexamples"]
+assert r["nondeterministic_cases"]==2 and r["rows"][0]["runs"]==4, r
+assert c and all(not x["deterministic"] and "differ" in x["nondeterminism"] for x in c), c' "$dir/flaky.json" ||
+  fail "a program whose output changes from run to run is not called non-deterministic"
+grep -q "WARNING: the program is not deterministic" "$dir"/flaky/certificate-*/reproduce.sh || fail "reproduce.sh does not warn"
+LEPP_FLAKY_SEED=3 "$lepp" audit "${seeded[@]}" --out "$dir/fixed" --repeat 2 > "$dir/fixed.json"; s=$?
+[ $s -eq 1 ] || fail "seeded program, seed fixed: exit $s"
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); c=r["rows"][0]["counterexamples"]
+assert r["nondeterministic_cases"]==0 and c and all(x["deterministic"] for x in c), r' "$dir/fixed.json" ||
+  fail "the seeded program with its seed fixed is called non-deterministic"
+grep -q "WARNING" "$dir"/fixed/certificate-*/reproduce.sh && fail "reproduce.sh warns for a deterministic program"
+
+# A built-in source that cannot be found is bad usage (exit 2), never a silent skip...
+mkdir -p "$dir/empty"
+"$lepp" audit --engine fast --root "$dir/empty" --compare none --out "$dir/f2" > /dev/null 2> "$dir/err"; s=$?
+[ $s -eq 2 ] || fail "missing corpus/paper: exit $s"
+grep -q "corpus/paper" "$dir/err" && grep -q -- "--sources" "$dir/err" || fail "missing source message: $(cat "$dir/err")"
+# ...and without --root, from an empty directory, this build's lepp finds its source tree's corpus.
+(cd "$dir/empty" && "$lepp" audit --engine fast --sources paper --theta 30 --compare none --out "$dir/f3" --json > "$dir/paper.json"); s=$?
+[ $s -eq 0 ] || { cat "$dir/paper.json"; fail "paper problems from an empty directory: exit $s"; }
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["inputs"]==4 and r["runs"]==4, (r["inputs"], r["runs"])' \
+  "$dir/paper.json" || fail "the paper's problems were not all run from an empty directory"
 
 "$lepp" audit --cmd "$src/properties/audit/tests/programs/crash.sh {in} {out} {angle}" "${common[@]}" 2> "$dir/err"; s=$?
 [ $s -eq 2 ] || fail "unknown placeholder: exit $s"

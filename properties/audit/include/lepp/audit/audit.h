@@ -23,6 +23,7 @@ namespace lepp::audit {
 struct NamedEngine {
   std::string name;
   Engine engine;
+  std::string cache_key;  // the engine and its version, for the points cache (points_cache.h); empty: never cached
 };
 
 struct Progress {
@@ -43,6 +44,9 @@ struct AuditOptions {
   std::string out_dir = "audit-out";        // findings go to OUT/ROW-N/
   std::string work_dir;                     // scratch; empty: a fresh directory under the system temp dir
   std::vector<NamedEngine> comparisons;     // points added compared against these (lepp reference, Triangle)
+  std::string points_cache_dir;             // their points cached on disk here (points_cache.h); empty: not cached
+  std::size_t jobs = 1;                     // cases, comparisons and shrink candidates run at once (0: the machine's cores)
+  std::size_t repeat = 1;                   // every case run this many times, each run checked, the outputs compared
   bool shrink = true;
   std::size_t max_findings_per_row = 3;     // shrunk and saved; further failures are counted
   std::size_t shrink_max_runs = 300;        // engine runs per shrink at most
@@ -59,8 +63,15 @@ struct Counterexample {
   std::size_t vertices = 0, segments = 0, holes = 0;  // of the shrunk input
   std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;  // of the input as found
   std::size_t shrink_steps = 0, shrink_runs = 0;
+  double shrink_timeout = 0;  // seconds per candidate run while shrinking (termination: from the program's own time)
+  std::string signature;    // what every kept shrink step failed with, as the original (signature.h)
   std::string detail;       // the row's one line on the shrunk input
   std::string deviation;    // conformance: the named deviation on the shrunk input (RowResult::deviation)
+  std::string original_detail;  // the row's line on the input as found
+  std::string original_input;   // DIR/original.poly, the input as found (when shrunk)
+  bool deterministic = true;    // a second run on the input as found gave the same output
+  std::string nondeterminism;   // else how the runs differed
+  std::string stderr_file;      // DIR/stderr.txt when the program wrote to stderr
   std::string reproduce;    // one command line
 };
 
@@ -94,6 +105,11 @@ struct AuditReport {
   bool area_centroid = false;                  // conformance checked against the declared area-centroid reading
   std::vector<PointsRatio> ratios;
   std::vector<std::string> skipped_inputs;
+  std::size_t jobs = 1, repeat = 1;
+  std::size_t nondeterministic_cases = 0;      // cases whose repeated runs (--repeat) gave different outputs
+  std::vector<std::string> nondeterministic_first;  // the first few, with how they differed
+  std::size_t comparison_runs = 0, comparison_cache_hits = 0;
+  std::string points_cache_dir;
   std::size_t status_counts[6] = {};          // by RunStatus
   std::size_t exempt_triangles = 0, runs_with_exempt = 0;  // the small-input-angle rule at work
   double seconds = 0;                          // whole audit

@@ -17,4 +17,11 @@ Engine reference_engine(QueueOrder order = QueueOrder::Fifo);
 using RefineFunction = RefineResult (*)(const Pslg&, const RefineOptions&);
 Engine refine_engine(RefineFunction refine, QueueOrder order = QueueOrder::Fifo);
 
+// The reference engine's mesh for the points comparison (`--compare reference`),
+// made by the fast engine where the two are identical (docs/ALGORITHM.md: the
+// same mesh when neither meets four cocircular points; the audit's tests check
+// it on the audit's inputs) and by the reference where the fast run met a
+// cocircular tie or did not end normally. No trace.
+Engine reference_points_engine();
+
 }  // namespace lepp::audit

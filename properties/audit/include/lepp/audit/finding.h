@@ -6,6 +6,7 @@
 // DIR/finding.md (the row, its paper passage, the verdict line) and
 // DIR/reproduce.sh (one command line that reproduces it).
 #pragma once
+#include <cstddef>
 #include <string>
 
 #include "lepp/audit/checks.h"
@@ -17,6 +18,13 @@ struct FindingText {
   std::string engine, input_origin, reproduce;
   double theta = 0;
   Method method = Method::Centroid;
+  // How the saved input relates to the input as found: "shrunk from" only when it was.
+  bool shrink_tried = true;           // false under --no-shrink
+  std::size_t shrink_steps = 0;       // edits kept
+  std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;
+  std::string original_detail;        // the row's line on the input as found
+  std::string signature;              // what the shrinking kept (signature.h)
+  std::string nondeterminism;         // not empty: two runs on the same input differed (how)
 };
 
 void save_finding(const std::string& dir, Row row, const Pslg& input, const EngineRun& run, const RowResult& result,

@@ -16,6 +16,12 @@ namespace lepp::audit {
 struct ShrinkLimits {
   std::size_t max_runs = 300;   // calls of still_fails
   double max_seconds = 60;
+  // Candidates tried at once (-j): the next `jobs` edits in the one-at-a-time order,
+  // each on the current input; the first of them that still fails is kept, which
+  // is the edit a one-at-a-time search keeps (those before it passed), so the
+  // result does not depend on jobs, only the runs spent. still_fails must then be
+  // safe to call from several threads.
+  std::size_t jobs = 1;
 };
 
 struct ShrinkResult {

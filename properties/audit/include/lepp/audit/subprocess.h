@@ -36,7 +36,10 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
 // result_fd (read by the parent while it runs, into SubprocessResult::output) and
 // returns its exit status. It must not return into the caller's code: run_forked
 // ends the child with _exit (status 125 if the function throws). Fork without
-// exec: call it from a single-threaded program (the audit is one).
+// exec: with `-j` other threads of the audit may be running; the child has only
+// the forking thread, and glibc's fork keeps malloc usable in it; a function
+// that waited on a lock another thread held at the fork would hang until the
+// timeout kills it (a "timed out" run). `-j 1` keeps the audit on one thread.
 using ChildFunction = std::function<int(int result_fd)>;
 
 // Runs `child` in a forked process under the same rules and the same wait loop
