@@ -106,7 +106,11 @@ def sync_scratch(scratch):
         if os.path.exists(dst) and open(src, "rb").read() == open(dst, "rb").read():
             continue
         os.makedirs(os.path.dirname(dst), exist_ok=True)
-        shutil.copy2(src, dst)
+        # A fresh mtime, not the source's: a file changed in the working tree (a rebase)
+        # before the scratch was last built would otherwise look older than its
+        # objects, and ninja would keep them (stale objects, crashes of the unmutated tree).
+        shutil.copy(src, dst)
+        os.utime(dst)
         copied += 1
     log(f"scratch {scratch}: {copied} files updated")
 
