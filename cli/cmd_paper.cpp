@@ -4,10 +4,13 @@
 // and writes docs/PAPER.md, docs/paper/results.json and the figures. The study
 // is lepp::paper::reproduce (paper/); this file parses options and prints.
 #include <cstdio>
+#include <exception>
+#include <vector>
 #include <memory>
 #include <string>
 
 #include "commands.h"
+#include "lepp/paper/orders.h"
 #include "lepp/paper/reproduce.h"
 #include "lepp/paper/summary_table.h"
 
@@ -34,6 +37,45 @@ int run_paper(const paper::Options& options) {
   return 0;
 }
 
+// `lepp paper --orders`: the processing-order study and its section of PAPER.md.
+struct OrdersArgs {
+  bool run = false;
+  paper::OrderStudyOptions study;
+  std::string angles = "28:38";
+  std::string from_json;
+};
+
+int run_orders(const paper::Options& options, OrdersArgs& a, const std::string& command) {
+  a.study.root = options.root;
+  a.study.engine = options.engine == "reference" ? "reference" : "fast";
+  a.study.angles.clear();
+  double lo = 0, hi = 0;
+  if (std::sscanf(a.angles.c_str(), "%lf:%lf", &lo, &hi) == 2 && lo <= hi) {
+    for (double t = lo; t <= hi + 1e-9; t += 1) a.study.angles.push_back(t);
+  } else if (std::sscanf(a.angles.c_str(), "%lf", &lo) == 1) {
+    a.study.angles.push_back(lo);
+  } else {
+    std::fprintf(stderr, "lepp paper: --orders-angles: expected LO:HI or one angle, got '%s'\n", a.angles.c_str());
+    return 2;
+  }
+  try {
+    paper::OrderStudy s = paper::reproduce_orders(
+        a.study, options.out, command, options.no_plots, a.from_json,
+        [](const paper::OrderRun& r) {
+          if (r.order != "random" || r.seed == 1)
+            std::fprintf(stderr, "  %-10s %-8s %4g°  %-14s %7lld points  %s\n", r.problem.c_str(), r.method.c_str(), r.theta,
+                         r.order == "random" ? "random 1.." : r.order.c_str(), static_cast<long long>(r.steiner), r.outcome.c_str());
+        },
+        [](const std::string& line) { std::fprintf(stderr, "lepp paper: %s\n", line.c_str()); });
+    std::fprintf(stderr, "lepp paper: %zu runs in %.0f s (%.0f CPU s); wrote %s/PAPER.md's order section and %s/paper/orders.json\n",
+                 s.runs.size(), s.seconds, s.cpu_seconds, options.out.c_str(), options.out.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lepp paper: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
+
 }  // namespace
 
 void add_paper_command(CLI::App& app, int& status) {
@@ -56,10 +98,40 @@ void add_paper_command(CLI::App& app, int& status) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--quick", args->quick, "Budget 5000 and 10 s per run, no angles above 36, no alternative readings");
   cmd->add_flag("--no-plots", args->no_plots, "Skip the matplotlib figures");
+  auto orders = std::make_shared<OrdersArgs>();
+  cmd->add_flag("--orders", orders->run,
+                "Instead: the processing-order study (issue 21): every paper problem, --orders-angles, centroid and "
+                "midpoint, the named orders and --orders-random random ones; writes OUT/PAPER.md's order section, "
+                "OUT/paper/orders.json and its figures");
+  cmd->add_option("--orders-angles", orders->angles, "The order study's angles, LO:HI in steps of 1 degree, or one angle")
+      ->default_val("28:38");
+  cmd->add_option("--orders-random", orders->study.random_orders, "Random orders (seeds 1..N) per cell of the order study")
+      ->default_val(100)
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--orders-budget-factor", orders->study.budget_factor,
+                  "The order study's Steiner budget: this many times the paper's count (docs/PAPER.md)")
+      ->default_val(20)
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--orders-methods", orders->study.methods, "The order study's methods")
+      ->default_val(std::vector<std::string>{"centroid", "midpoint"})
+      ->check(CLI::IsMember({"centroid", "midpoint"}));
+  cmd->add_option("--orders-problems", orders->study.problems, "The order study's problems (corpus/paper keys; default all four)")
+      ->check(CLI::IsMember({"square400", "circles240", "rect162", "A"}));
+  cmd->add_option("--orders-from", orders->from_json, "Rewrite the order section from this orders.json instead of running");
   cmd->footer("Exit status: 0 page written (runs that did not finish are reported on it); 2 corpus not found.");
-  cmd->callback([args, &status] {
+  cmd->callback([args, orders, &status, cmd] {
     paper::apply_quick_limits(*args);
-    status = run_paper(*args);
+    if (orders->run) {
+      std::string command = "lepp paper --orders";
+      for (const char* o : {"--orders-angles", "--orders-random", "--orders-budget-factor", "--orders-methods", "--orders-problems"})
+        if (cmd->count(o) > 0) {
+          command += std::string(" ") + o;
+          for (const std::string& v : cmd->get_option(o)->results()) command += " " + v;
+        }
+      status = run_orders(*args, *orders, command);
+    } else {
+      status = run_paper(*args);
+    }
   });
 }
 

@@ -31,6 +31,7 @@ struct RefineArgs {
   std::string method = "centroid";
   std::string engine = "fast";
   std::string order = "fifo";
+  std::uint64_t order_seed = 0;
   std::int64_t max_steiner = -1;
   double max_area = 0;
   bool region_areas = false;
@@ -94,7 +95,8 @@ int run_refine(const RefineArgs& args) {
   RefineOptions options;
   options.min_angle_deg = args.min_angle;
   options.method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
-  options.order = args.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+  parse_queue_order(args.order, options.order);  // the option's check admits only known names
+  options.order_seed = args.order_seed;
   options.max_steiner = args.max_steiner;
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
@@ -150,6 +152,7 @@ int run_refine(const RefineArgs& args) {
         {"engine", args.engine},
         {"method", to_string(options.method)},
         {"order", to_string(options.order)},
+        {"order_seed", options.order == QueueOrder::Random ? nlohmann::json(options.order_seed) : nlohmann::json()},
         {"min_angle_target", args.min_angle},
         {"max_area", args.max_area},
         {"region_areas", args.region_areas},
@@ -186,6 +189,10 @@ int run_refine(const RefineArgs& args) {
     if (!result.unimprovable.empty())
       std::printf("unimprovable          %zu triangles (listed in %s.unimprovable)\n", result.unimprovable.size(),
                   args.output.c_str());
+    if (options.order == QueueOrder::Random)
+      std::printf("processing order      random (seed %llu)\n", static_cast<unsigned long long>(options.order_seed));
+    else
+      std::printf("processing order      %s\n", to_string(options.order));
     std::printf("outcome               %s\n", to_string(result.outcome));
     if (!result.stuck.empty()) std::printf("stuck at              %s\n", result.stuck.c_str());
     std::printf("seconds               %.3f\n", result.seconds);
@@ -219,9 +226,12 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->add_option("--engine", args->engine, "fast (optimized) or reference (exact CGAL Epeck, slow)")
       ->default_val("fast")
       ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_option("--order", args->order, "Queue discipline for new bad triangles: fifo or lifo (docs/ALGORITHM.md)")
+  cmd->add_option("--order", args->order,
+                  "Processing order of bad triangles: fifo (default), lifo, flip (in the order the insertion's flips "
+                  "create them), random (--order-seed) or smallest-angle (docs/ALGORITHM.md section 7)")
       ->default_val("fifo")
-      ->check(CLI::IsMember({"fifo", "lifo"}));
+      ->check(CLI::IsMember({"fifo", "lifo", "flip", "random", "smallest-angle"}));
+  cmd->add_option("--order-seed", args->order_seed, "Seed of --order random (SplitMix64, docs/ALGORITHM.md)")->default_val(0);
   cmd->add_option("--max-steiner", args->max_steiner, "Steiner budget; default 100000 + 1000 x (vertices + segments)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-area", args->max_area, "Size bound: a triangle larger than this is bad too (Triangle's -a)")

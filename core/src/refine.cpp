@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace lepp {
@@ -102,7 +103,28 @@ const char* to_string(Rule rule) {
 }
 
 const char* to_string(Method method) { return method == Method::Centroid ? "centroid" : "midpoint"; }
-const char* to_string(QueueOrder order) { return order == QueueOrder::Fifo ? "fifo" : "lifo"; }
+const char* to_string(QueueOrder order) {
+  switch (order) {
+    case QueueOrder::Fifo: return "fifo";
+    case QueueOrder::Lifo: return "lifo";
+    case QueueOrder::Flip: return "flip";
+    case QueueOrder::Random: return "random";
+    case QueueOrder::SmallestAngle: return "smallest-angle";
+  }
+  return "?";
+}
+
+const std::vector<QueueOrder>& all_queue_orders() {
+  static const std::vector<QueueOrder> orders = {QueueOrder::Fifo, QueueOrder::Lifo, QueueOrder::Flip, QueueOrder::Random,
+                                                 QueueOrder::SmallestAngle};
+  return orders;
+}
+
+bool parse_queue_order(const std::string& name, QueueOrder& order) {
+  for (QueueOrder o : all_queue_orders())
+    if (name == to_string(o)) return order = o, true;
+  return false;
+}
 
 int exit_status(Outcome outcome) { return outcome == Outcome::Converged ? 0 : 3; }
 

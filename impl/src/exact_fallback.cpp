@@ -53,3 +53,29 @@ int sqlen_below_exact(const Point& a, const Point& b, double floor) {
 }
 
 }  // namespace lepp::fast::detail
+
+namespace lepp::fast::detail {
+namespace {
+// cross^2 and M (the largest product of two squared edge lengths) of triangle t, exactly.
+void sin2_terms(const Point* t, E& cross2, E& m) {
+  E ax(t[0].x), ay(t[0].y);
+  E ux = E(t[1].x) - ax, uy = E(t[1].y) - ay, vx = E(t[2].x) - ax, vy = E(t[2].y) - ay;
+  E wx = E(t[2].x) - E(t[1].x), wy = E(t[2].y) - E(t[1].y);
+  E cross = ux * vy - uy * vx;
+  cross2 = cross * cross;
+  E la = ux * ux + uy * uy, lb = vx * vx + vy * vy, lc = wx * wx + wy * wy;
+  E p[3] = {la * lb, la * lc, lb * lc};
+  m = p[0];
+  for (int i = 1; i < 3; ++i)
+    if ((p[i] - m).sign() > 0) m = p[i];
+}
+}  // namespace
+
+int compare_sin2_exact(const Point* a, const Point* b) {
+  E ca, ma, cb, mb;
+  sin2_terms(a, ca, ma);
+  sin2_terms(b, cb, mb);
+  return sign_of(ca * mb - cb * ma);
+}
+
+}  // namespace lepp::fast::detail

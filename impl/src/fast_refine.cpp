@@ -6,19 +6,20 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cdt_build.h"
+#include "bad_queue.h"
 #include "insertion.h"
 #include "lepp/angle.h"
 #include "lepp/fast.h"
 #include "lepp_search.h"
 #include "point_selection.h"
 #include "quality.h"
-#include "ring_queue.h"
 #include "tri_mesh.h"
 
 namespace lepp::fast {
@@ -26,34 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A queued triangle: its slot and the slot's stamp when it was queued. Slots
-// are rewritten in place and every rewrite destroys the triangle that was
-// there, so "t remains in tau" iff the stamp is unchanged.
-struct Item {
-  int tri;
-  std::uint32_t stamp;
-};
-
-// A triangle's key: its vertex ids sorted ascending.
-struct Keyed {
-  int k[3];
-  Item item;
-};
-
-inline Keyed keyed(const TriMesh& m, int ti) {
-  const FTri& f = m.t(ti);
-  int a = f.v[0], b = f.v[1], c = f.v[2];
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
-  return Keyed{{a, b, c}, Item{ti, m.stamp[static_cast<std::size_t>(ti)]}};
-}
-inline bool key_less(const Keyed& x, const Keyed& y) {
-  if (x.k[0] != y.k[0]) return x.k[0] < y.k[0];
-  if (x.k[1] != y.k[1]) return x.k[1] < y.k[1];
-  return x.k[2] < y.k[2];
-}
-inline bool still_there(const TriMesh& m, const Item& it) { return m.stamp[static_cast<std::size_t>(it.tri)] == it.stamp; }
 
 // A triangle as the trace names it: counter-clockwise, smallest id first.
 Tri canonical(const FTri& f) {
@@ -131,20 +104,19 @@ class Refiner {
     const bool sized = quality_.sized();
 
     RefineResult result;
-    RingQueue<Item> queue;
+    BadQueue queue(opt_.order, opt_.order_seed, mesh_);
+    const bool by_creation = opt_.order == QueueOrder::Flip;
+    inserter_.record_creation = by_creation;
     std::vector<Keyed> fresh;
     for (int ti = 0; ti < mesh_.size(); ++ti)
       if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
-    std::sort(fresh.begin(), fresh.end(), key_less);
-    for (const Keyed& k : fresh) queue.push_back(k.item);
+    queue.push(fresh, true);
 
     Outcome outcome = Outcome::Converged;
     Lepp lepp;
     std::int64_t steiner = 0;
     while (!queue.empty() && outcome == Outcome::Converged) {
-      const Item item = queue.front();
-      queue.pop_front();
-      prefetch_ahead(queue);
+      const Item item = queue.pop();
       bool first = true;
       while (still_there(mesh_, item)) {
         lepp_search(mesh_, item.tri, lepp);
@@ -187,12 +159,8 @@ class Refiner {
             below_floor = true;
           if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
         });
-        std::sort(fresh.begin(), fresh.end(), key_less);
-        if (opt_.order == QueueOrder::Fifo) {
-          for (const Keyed& k : fresh) queue.push_back(k.item);
-        } else {
-          for (auto it = fresh.rbegin(); it != fresh.rend(); ++it) queue.push_front(it->item);
-        }
+        if (by_creation) set_creation_ranks(fresh);
+        queue.push(fresh, false);
         if (opt_.on_insertion) {
           Mesh now = mesh_.to_mesh(mem_);
           canonicalize(now);
@@ -231,14 +199,15 @@ class Refiner {
   }
 
  private:
-  // The queue runs far behind the insertions (fifo): its triangles and their
-  // points are cold in cache. Fetch the next items' while this one is processed.
-  void prefetch_ahead(const RingQueue<Item>& queue) const {
-    if (queue.size() > 4) __builtin_prefetch(&mesh_.stamp[static_cast<std::size_t>(queue[4].tri)]);
-    if (queue.size() > 2 && still_there(mesh_, queue[2])) __builtin_prefetch(&mesh_.t(queue[2].tri));
-    if (queue.size() > 1 && still_there(mesh_, queue[1])) {
-      const FTri& f = mesh_.t(queue[1].tri);
-      for (int i = 0; i < 3; ++i) __builtin_prefetch(&mesh_.p(f.v[i]));
+  // The flip order: each batch member's place in the insertion's creation order
+  // (a star has a handful of triangles: a linear search is the cheap way).
+  void set_creation_ranks(std::vector<Keyed>& batch) const {
+    const std::vector<Item>& created = inserter_.created();
+    for (Keyed& k : batch) {
+      k.created = -1;
+      for (std::size_t i = 0; i < created.size(); ++i)
+        if (created[i].tri == k.item.tri && created[i].stamp == k.item.stamp) k.created = static_cast<int>(i);
+      if (k.created < 0) throw std::logic_error("fast engine: a triangle of the new point's star was not created by its insertion");
     }
   }
 

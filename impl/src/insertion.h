@@ -4,10 +4,12 @@
 // then restore the constrained Delaunay property by Lawson flips that never
 // cross a constrained edge.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
 
+#include "bad_queue.h"
 #include "point_selection.h"
 #include "predicates.h"
 #include "tri_mesh.h"
@@ -47,15 +49,28 @@ class Inserter {
       }
     }
     mem.steiner.push_back(split_segment);
-    for (int k = 0; k < count; ++k) {
+    // Legalization order (ALGORITHM.md section 7, "creation order"): the initial
+    // triangles (p, u, w) by increasing id of u, each legalized depth first.
+    std::sort(made, made + count, [&](int x, int y) { return m.t(x).v[1] < m.t(y).v[1]; });
+    created_.clear();
+    for (int k = count; k-- > 0;) {
       stack_.push_back(made[k]);
+      if (record_creation) created_.push_back(Item{made[count - 1 - k], 0});
       // The apex across each new link edge is the next thing the flips read.
       const int code = m.t(made[k]).nbr[0];
       if (code >= 0) __builtin_prefetch(&m.p(m.t(nbr_tri(code)).v[nbr_edge(code)]));
     }
+    if (record_creation)
+      for (Item& it : created_) it.stamp = m.stamp[static_cast<std::size_t>(it.tri)];
     restore_delaunay(m);
     return made[0];
   }
+
+  // Record the triangles each insertion creates, in creation order (the flip order's batch).
+  bool record_creation = false;
+  // The last insertion's created triangles (slot and stamp), in creation order;
+  // some no longer exist (a later flip of the same insertion destroyed them).
+  const std::vector<Item>& created() const { return created_; }
 
  private:
   static int segment_of_edge(const TriMesh& m, const SegmentMembership& mem, int ti, int i) {
@@ -85,9 +100,13 @@ class Inserter {
       const FTri& g = m.t(nbr_tri(f.nbr[0]));
       int s = incircle(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), m.p(g.v[nbr_edge(f.nbr[0])]));
       if (s > 0) {
-        int ni = m.flip_edge0(ti);
-        stack_.push_back(ti);
+        int ni = m.flip_edge0(ti);  // ti = (p, u, d), then ni = (p, d, w): ti is legalized first
+        if (record_creation) {
+          created_.push_back(Item{ti, m.stamp[static_cast<std::size_t>(ti)]});
+          created_.push_back(Item{ni, m.stamp[static_cast<std::size_t>(ni)]});
+        }
         stack_.push_back(ni);
+        stack_.push_back(ti);
       } else if (s == 0) {
         ++cocircular_ties;  // left as it is (ALGORITHM.md section 6)
       }
@@ -95,6 +114,7 @@ class Inserter {
   }
 
   std::vector<int> stack_;
+  std::vector<Item> created_;
 };
 
 }  // namespace lepp::fast

@@ -37,6 +37,8 @@ int skinny_sign_exact(const Point& apex, const Point& b, const Point& c, double 
 int area_sign_exact(const Point& a, const Point& b, const Point& c, double twice_area);
 int dot_sign_exact(const Point& v, const Point& a, const Point& b);
 int sqlen_below_exact(const Point& a, const Point& b, double floor);
+// sign(sin^2 of triangle a's smallest angle - sin^2 of triangle b's) (a, b: three points each).
+int compare_sin2_exact(const Point* a, const Point* b);
 }  // namespace detail
 
 // Sign of the signed area of abc: +1 counter-clockwise, 0 collinear.

@@ -4,11 +4,13 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "lepp/paper/figures.h"
+#include "lepp/paper/orders.h"
 #include "lepp/paper/page.h"
 #include "lepp/version.h"
 
@@ -54,7 +56,16 @@ Reproduction reproduce(const Options& options, const StudyEvents& events) {
 
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fs::create_directories(options.out);
-  std::ofstream(fs::path(options.out) / "PAPER.md") << paper_page(options, study, plots_ok || options.no_plots, rep.seconds);
+  // The processing-order section is `lepp paper --orders`'s (it takes longer): kept as it is.
+  std::string kept;
+  if (std::ifstream old(fs::path(options.out) / "PAPER.md"); old) {
+    std::ostringstream s;
+    s << old.rdbuf();
+    kept = order_section_of(s.str());
+  }
+  std::string page = paper_page(options, study, plots_ok || options.no_plots, rep.seconds);
+  if (!kept.empty()) page = splice_order_section(page, kept);
+  std::ofstream(fs::path(options.out) / "PAPER.md") << page;
   return rep;
 }
 

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The refinement loop (ALGORITHM.md Sections 7 to 9): queue of bad triangles
-// in key order, "while t remains", guards, trace, result.
+// (bad_queue.h: the order), "while t remains", guards, trace, result.
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -13,6 +12,7 @@
 
 #include "lepp/angle.h"
 #include "lepp/reference.h"
+#include "bad_queue.h"
 #include "triangulation.h"
 
 namespace lepp::reference {
@@ -58,17 +58,15 @@ class Refiner {
   RefineResult run() {
     auto start = std::chrono::steady_clock::now();
     tr_.cocircular_ties = count_cocircular_edges(tr_);
-    std::vector<Tri> initial;
+    std::vector<Queued> initial;
     for (FH f : tr_.cdt.finite_face_handles())
-      if (f->info().in_domain && processed_bad(f)) initial.push_back(key(f));
-    std::sort(initial.begin(), initial.end());
-    queue_.assign(initial.begin(), initial.end());
+      if (f->info().in_domain && processed_bad(f)) initial.push_back(queued(f));
+    queue_.push(initial, true);
 
     Outcome outcome = Outcome::Converged;
     std::string stuck;
     while (!queue_.empty() && outcome == Outcome::Converged) {
-      Tri t = queue_.front();
-      queue_.pop_front();
+      Tri t = queue_.pop();
       FH f;
       bool first = true;
       // "while t remains in tau": the triangle with t's three vertices.
@@ -91,7 +89,7 @@ class Refiner {
         std::string where = describe(t, lepp);  // before the insertion invalidates the faces
         if (options_.trace) result_.trace.push_back(trace_step(t, lepp, s));
 
-        VH v = insert_point(tr_, s, lepp.t1);
+        VH v = insert_point(tr_, s, lepp.t1, options_.order == QueueOrder::Flip ? &created_ : nullptr);
         ++steiner_;
         enqueue_new_bad(v);
         if (options_.on_insertion) options_.on_insertion(extract_mesh(tr_));
@@ -144,17 +142,25 @@ class Refiner {
     return !unimprovable(tr_, f, sin2_);
   }
 
+  Queued queued(FH f) const {
+    return Queued{key(f), options_.order == QueueOrder::SmallestAngle ? smallest_angle_sin2(f) : FT(0)};
+  }
+
+  // The insertion's batch: the processed-bad triangles around v, for the flip
+  // order in the order the insertion created them (the created ones that still exist).
   void enqueue_new_bad(VH v) {
-    std::vector<Tri> fresh;
-    Cdt::Face_circulator fc = tr_.cdt.incident_faces(v), done = fc;
-    do {
-      if (!tr_.cdt.is_infinite(fc) && fc->info().in_domain && processed_bad(fc)) fresh.push_back(key(fc));
-    } while (++fc != done);
-    std::sort(fresh.begin(), fresh.end());
-    if (options_.order == QueueOrder::Fifo)
-      queue_.insert(queue_.end(), fresh.begin(), fresh.end());
-    else
-      queue_.insert(queue_.begin(), fresh.begin(), fresh.end());  // smallest key first
+    std::vector<Queued> fresh;
+    if (options_.order == QueueOrder::Flip) {
+      FH f;
+      for (const Tri& t : created_)
+        if (exists(t, f) && processed_bad(f)) fresh.push_back(queued(f));
+    } else {
+      Cdt::Face_circulator fc = tr_.cdt.incident_faces(v), done = fc;
+      do {
+        if (!tr_.cdt.is_infinite(fc) && fc->info().in_domain && processed_bad(fc)) fresh.push_back(queued(fc));
+      } while (++fc != done);
+    }
+    queue_.push(fresh, false);
   }
 
   bool below_edge_floor(VH v) const {
@@ -199,7 +205,8 @@ class Refiner {
   std::int64_t budget_;
   std::int64_t steiner_ = 0;
   Triangulation tr_;
-  std::deque<Tri> queue_;
+  BadQueue queue_{options_.order, options_.order_seed};
+  std::vector<Tri> created_;  // the flip order: the last insertion's triangles, in creation order
   RefineResult result_;
 };
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Point selection (ALGORITHM.md Section 5: the paper's Select Point and New
 // Select Point with Remark 10) and insertion (Section 6).
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -104,11 +105,23 @@ void set_domain_flags(Triangulation& tr, VH v, VH a, VH b, FaceInfo left, FaceIn
 // Lawson flips around the new vertex v, never across a constrained edge. An
 // edge is flipped only when the new vertex is strictly inside the circumcircle
 // of the triangle across it; a cocircular quad is left as it is and counted
-// (in the domain only: a boundary split also flips outside).
-void restore_delaunay(Triangulation& tr, VH v) {
-  std::vector<FH> stack;
+// (in the domain only: a boundary split also flips outside). The order is
+// ALGORITHM.md's legalization order: the faces (v, u, w) around v by increasing
+// id of u (outside faces too: their flips stay outside), each legalized depth
+// first, (v, u, d) before (v, d, w) after a flip. created: the domain faces made,
+// in creation order.
+void restore_delaunay(Triangulation& tr, VH v, std::vector<Tri>* created) {
+  auto u_of = [&](FH f) { return id(f->vertex(Cdt::ccw(f->index(v)))); };
+  std::vector<FH> initial;
   Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
-  do stack.push_back(fc); while (++fc != done);
+  do initial.push_back(fc); while (++fc != done);
+  std::stable_sort(initial.begin(), initial.end(), [&](FH x, FH y) { return u_of(x) < u_of(y); });
+  auto record = [&](FH f) {
+    if (created && !tr.cdt.is_infinite(f) && f->info().in_domain) created->push_back(key(f));
+  };
+  if (created) created->clear();
+  for (FH f : initial) record(f);
+  std::vector<FH> stack(initial.rbegin(), initial.rend());
   while (!stack.empty()) {
     FH f = stack.back();
     stack.pop_back();
@@ -118,15 +131,19 @@ void restore_delaunay(Triangulation& tr, VH v) {
     CGAL::Oriented_side side = tr.cdt.side_of_oriented_circle(n, v->point(), false);
     if (side == CGAL::ON_ORIENTED_BOUNDARY && f->info().in_domain) ++tr.cocircular_ties;
     if (side != CGAL::ON_POSITIVE_SIDE) continue;
+    VH u = f->vertex(Cdt::ccw(i));
     tr.cdt.flip(f, i);  // f and n now both have v as a vertex
-    stack.push_back(f);
-    stack.push_back(n);
+    FH first = f->has_vertex(u) ? f : n, second = first == f ? n : f;  // (v, u, d), (v, d, w)
+    record(first);
+    record(second);
+    stack.push_back(second);
+    stack.push_back(first);
   }
 }
 
 }  // namespace
 
-VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
+VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created) {
   Cdt& cdt = tr.cdt;
   CPoint p(s.point.x, s.point.y);
   VH v;
@@ -181,7 +198,7 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1) {
       throw std::logic_error("reference: insertion made a triangle that is not counter-clockwise");
   } while (++fc != done);
   set_domain_flags(tr, v, split ? a : VH(), split ? b : VH(), left, right);
-  restore_delaunay(tr, v);
+  restore_delaunay(tr, v, created);
   return v;
 }
 

@@ -104,7 +104,10 @@ struct Selection {
 };
 Selection select_point(const Lepp& lepp, Method method);
 // Inserts the selected point, restores the constrained Delaunay property by
-// flips (counting cocircular ties), sets ids, segment membership and domain flags.
-VH insert_point(Triangulation& tr, const Selection& s, FH t1);
+// flips in the legalization order of ALGORITHM.md section 7 (counting cocircular
+// ties), sets ids, segment membership and domain flags.
+// created: if not null, set to the domain triangles the insertion made, in creation
+// order (ALGORITHM.md section 7), as keys; some no longer exist at the end.
+VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created = nullptr);
 
 }  // namespace lepp::reference::detail

@@ -15,8 +15,12 @@ namespace lepp {
 
 enum class Method { Centroid, Midpoint };
 
-// How bad triangles created by an insertion join the queue (ALGORITHM.md, "Processing order").
-enum class QueueOrder { Fifo, Lifo };
+// The order in which bad triangles are processed (ALGORITHM.md section 7, "Processing order"):
+// fifo (default) and lifo push each insertion's new bad triangles in key order at the back or
+// the front; flip at the back in the order the insertion and its flips created them; random at
+// the back shuffled by a generator seeded with RefineOptions::order_seed (the initial queue too);
+// smallest-angle is a priority queue, the smallest angle first.
+enum class QueueOrder { Fifo, Lifo, Flip, Random, SmallestAngle };
 
 enum class Outcome {
   Converged,      // every triangle has smallest angle >= theta (and area <= its size bound)
@@ -45,6 +49,7 @@ struct RefineOptions {
   // (with max_area as well, the smaller bound applies). ALGORITHM.md section 4.
   bool region_area_bounds = false;
   QueueOrder order = QueueOrder::Fifo;
+  std::uint64_t order_seed = 0;      // the random order's seed (ALGORITHM.md section 7); other orders ignore it
   std::int64_t max_steiner = -1;     // -1: default_steiner_budget()
   double edge_floor = -1;            // -1: default_edge_floor()
   double time_limit_seconds = 0;     // 0: no limit
@@ -97,6 +102,10 @@ const char* to_string(Outcome outcome);
 const char* to_string(Rule rule);
 const char* to_string(Method method);
 const char* to_string(QueueOrder order);
+// Every order, the default first, and the one named (fifo, lifo, flip, random, smallest-angle);
+// false for an unknown name.
+const std::vector<QueueOrder>& all_queue_orders();
+bool parse_queue_order(const std::string& name, QueueOrder& order);
 // 0 converged, 3 any other outcome (the mesh is still written).
 int exit_status(Outcome outcome);
 
