@@ -37,14 +37,16 @@ RefineOptions options_of(const RefineCall& c) {
   if (!(c.min_angle >= 0 && c.min_angle <= 60)) throw std::invalid_argument("min_angle: must be in [0, 60] degrees");
   if (!(c.max_area >= 0) || std::isinf(c.max_area)) throw std::invalid_argument("max_area: must be a positive number (or None)");
   if (c.method != "centroid" && c.method != "midpoint") throw std::invalid_argument("method: 'centroid' or 'midpoint'");
-  if (c.order != "fifo" && c.order != "lifo") throw std::invalid_argument("order: 'fifo' or 'lifo'");
+  QueueOrder order = QueueOrder::Fifo;
+  if (!parse_queue_order(c.order, order))
+    throw std::invalid_argument("order: 'fifo', 'lifo', 'flip', 'random' or 'smallest-angle'");
   if (c.engine != "fast" && c.engine != "reference") throw std::invalid_argument("engine: 'fast' or 'reference'");
   if (c.max_steiner < -1) throw std::invalid_argument("max_steiner: must be >= 0 (or None)");
   if (!(c.time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");
   RefineOptions o;
   o.min_angle_deg = c.min_angle;
   o.method = c.method == "midpoint" ? Method::Midpoint : Method::Centroid;
-  o.order = c.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+  o.order = order;  // random: seed 0 (lepp refine --order-seed 0)
   o.max_steiner = c.max_steiner;
   o.max_area = c.max_area;
   o.region_area_bounds = c.region_areas;
