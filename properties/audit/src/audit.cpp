@@ -131,6 +131,7 @@ struct CaseOutcome {
   double engine_seconds = 0, comparison_seconds = 0;
   double finished_seconds = -1;      // the engine's time on a run that ended (for the termination shrink's timeout)
   std::size_t comparison_runs = 0, cache_hits = 0;
+  std::optional<OrderTermination> order_termination;  // lepp's orders where its fifo ends differently
 };
 
 // A failure chosen to be shrunk and saved.
@@ -272,6 +273,13 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
         if (value.finished) out.theirs[e] = value.points_added;
       }
     }
+    // A termination difference with lepp's default order: which lepp orders end there.
+    if (opt.compare_orders) {
+      const auto tc = Clock::now();
+      out.order_termination = compare_termination(input.pslg, input.name, opt.method, c.theta,
+                                                  out.statuses.front() == RunStatus::Ok, opt.timeout_seconds);
+      out.comparison_seconds += since(tc);
+    }
     ++done;
     if (any_failed) ++failing;
   });
@@ -293,6 +301,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     rep.comparison_seconds += out.comparison_seconds;
     rep.comparison_runs += out.comparison_runs;
     rep.comparison_cache_hits += out.cache_hits;
+    if (out.order_termination) rep.order_terminations.push_back(*out.order_termination);
     longest_finished = std::max(longest_finished, out.finished_seconds);
     if (out.finished_seconds >= 0)
       finished_on_input[c.input] = std::max(finished_on_input.count(c.input) ? finished_on_input[c.input] : -1.0, out.finished_seconds);

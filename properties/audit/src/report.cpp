@@ -114,6 +114,7 @@ std::string markdown_report(const AuditReport& rep) {
     for (const PointsRatio& p : rep.ratios)
       md += fmt::format("| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} |\n", p.against, p.cases, p.median, p.min, p.max, p.total);
   }
+  md += format_order_terminations(rep.order_terminations, 20);
   bool any = false;
   for (const RowSummary& r : rep.rows)
     for (const Counterexample& c : r.counterexamples) {
@@ -205,6 +206,7 @@ nlohmann::json json_report(const AuditReport& rep) {
           {"rows", rows},
           {"centroid", rep.area_centroid ? "area" : "vertex"},
           {"points_ratio", ratios},
+          {"order_termination", to_json(rep.order_terminations)},
           {"run_status", statuses},
           {"exempt_triangles", rep.exempt_triangles},
           {"runs_with_exempt_triangles", rep.runs_with_exempt},

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lepp/audit/checks.h"
+#include "lepp/audit/order_termination.h"
 #include "lepp/audit/engine.h"
 #include "lepp/audit/inputs.h"
 
@@ -48,6 +49,7 @@ struct AuditOptions {
   std::size_t jobs = 1;                     // cases, comparisons and shrink candidates run at once (0: the machine's cores)
   std::size_t repeat = 1;                   // every case run this many times, each run checked, the outputs compared
   bool shrink = true;
+  bool compare_orders = true;               // a termination difference with lepp's fifo: which lepp orders end there
   std::size_t max_findings_per_row = 3;     // shrunk and saved; further failures are counted
   std::size_t shrink_max_runs = 300;        // engine runs per shrink at most
   double shrink_max_seconds = 60;           // and seconds per shrink
@@ -104,6 +106,7 @@ struct AuditReport {
   std::array<RowSummary, kRows> rows;
   bool area_centroid = false;                  // conformance checked against the declared area-centroid reading
   std::vector<PointsRatio> ratios;
+  std::vector<OrderTermination> order_terminations;  // runs ending where lepp's fifo does not, or the reverse
   std::vector<std::string> skipped_inputs;
   std::size_t jobs = 1, repeat = 1;
   std::size_t nondeterministic_cases = 0;      // cases whose repeated runs (--repeat) gave different outputs
