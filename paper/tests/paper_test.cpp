@@ -166,3 +166,63 @@ TEST(QualityHistogram, EquilateralInTheTopBinNeedleInTheBottom) {
 
 }  // namespace
 }  // namespace lepp::paper
+
+// ---- the processing-order study's page (lepp/paper/orders.h) ----
+#include "lepp/paper/orders.h"
+
+namespace lepp::paper {
+namespace {
+
+OrderRun order_run(const std::string& problem, const std::string& order, std::uint64_t seed, double theta,
+                   std::int64_t steiner, bool converged) {
+  OrderRun r;
+  r.problem = problem, r.method = "centroid", r.order = order, r.seed = seed, r.theta = theta;
+  r.steiner = steiner, r.budget = 100000, r.converged = converged;
+  r.outcome = converged ? "converged" : "steiner-budget";
+  r.min_angle = converged ? theta + 0.1 : theta - 3;
+  return r;
+}
+
+TEST(OrderStudy, BudgetIsTheFactorTimesTheNextTableCount) {
+  EXPECT_EQ(order_budget("square400", 30, 20), 20 * 595);
+  EXPECT_EQ(order_budget("square400", 29, 20), 20 * 595);   // the next Table 1 angle, 30
+  EXPECT_EQ(order_budget("square400", 38, 20), 20 * 1843);  // above 36: 36's count
+  EXPECT_EQ(order_budget("A", 36, 10), 10 * 239);
+}
+
+TEST(OrderStudy, AnswersComeFromTheRuns) {
+  OrderStudy s;
+  s.options.problems = {"square400", "A"};
+  s.options.methods = {"centroid"};
+  s.options.angles = {30, 36};
+  s.options.random_orders = 1;
+  for (const std::string& p : s.options.problems)
+    for (double t : s.options.angles) {
+      const bool square = p == "square400";
+      const int paper = *paper_number(p, "centroid", t);
+      s.runs.push_back(order_run(p, "fifo", 0, t, square && t == 36 ? 100000 : paper * 2, !(square && t == 36)));
+      s.runs.push_back(order_run(p, "lifo", 0, t, paper * 3, true));
+      s.runs.push_back(order_run(p, "flip", 0, t, paper, true));  // the paper's counts exactly
+      s.runs.push_back(order_run(p, "smallest-angle", 0, t, paper * 4, true));
+      s.runs.push_back(order_run(p, "random", 1, t, paper * 5, t == 30));
+    }
+  const std::string md = order_section(s, "lepp paper --orders --test");
+  EXPECT_NE(md.find("Named orders within 5 % everywhere: flip."), std::string::npos) << md;
+  EXPECT_NE(md.find("Lepp-centroid: named orders lifo, flip, smallest-angle; random seeds 0 of 1"), std::string::npos) << md;
+  // At 30 on Square400 the best is flip (595), the worst random 1 (5 x 595).
+  EXPECT_NE(md.find("| Square400 | centroid | flip | 595 | random 1 | 2975 | 5.00 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("**flip** converges in more cells than fifo"), std::string::npos) << md;
+  // The section replaces itself in a page, and is found again.
+  const std::string page = "# Title\n\ntext\n";
+  const std::string once = splice_order_section(page, md);
+  EXPECT_EQ(once.find("# Title"), 0u);
+  EXPECT_EQ(order_section_of(once), md);
+  EXPECT_EQ(splice_order_section(once, md), once);
+  EXPECT_EQ(order_section_of(page), "");
+  // JSON round trip.
+  OrderStudy back = order_study_from_json(to_json(s));
+  EXPECT_EQ(order_section(back, "lepp paper --orders --test"), md);
+}
+
+}  // namespace
+}  // namespace lepp::paper
