@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,12 @@ int run_theorems(const TheoremsArgs& args) {
   doc += ok ? "\nEvery row holds or is a documented finding whose narrowed statement holds.\n"
             : "\nSome rows fail without a documented finding: see above.\n";
   if (!args.out.empty()) {
+    // Hand-written empirical sections (after this marker) are kept as they are.
+    const std::string kept_marker = "<!-- kept by lepp theorems: empirical statements below -->";
+    if (std::ifstream old(args.out); old) {
+      std::string text((std::istreambuf_iterator<char>(old)), std::istreambuf_iterator<char>());
+      if (std::size_t at = text.find(kept_marker); at != std::string::npos) doc += "\n" + text.substr(at);
+    }
     std::ofstream f(args.out);
     if (!f) {
       std::fprintf(stderr, "lepp theorems: cannot write %s\n", args.out.c_str());
