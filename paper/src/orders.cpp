@@ -86,7 +86,8 @@ nlohmann::json to_json(const OrderStudy& study) {
   nlohmann::json j = {{"engine", o.engine},         {"problems", o.problems},   {"methods", o.methods},
                       {"angles", o.angles},         {"random_orders", o.random_orders},
                       {"budget_factor", o.budget_factor}, {"time_limit", o.time_limit},
-                      {"seconds", study.seconds},   {"cpu_seconds", study.cpu_seconds}};
+                      {"seconds", study.seconds},   {"cpu_seconds", study.cpu_seconds},
+                      {"command", study.command}};
   j["runs"] = nlohmann::json::array();
   for (const OrderRun& r : study.runs)
     j["runs"].push_back({{"problem", r.problem}, {"method", r.method}, {"order", r.order}, {"theta", r.theta},
@@ -108,6 +109,7 @@ OrderStudy order_study_from_json(const nlohmann::json& j) {
   o.time_limit = j.at("time_limit");
   s.seconds = j.at("seconds");
   s.cpu_seconds = j.at("cpu_seconds");
+  s.command = j.value("command", std::string());
   for (const auto& x : j.at("runs")) {
     OrderRun r;
     r.problem = x.at("problem"), r.method = x.at("method"), r.order = x.at("order");

@@ -24,8 +24,10 @@ OrderStudy reproduce_orders(const OrderStudyOptions& options, const std::string&
     std::ifstream in(from_json);
     if (!in) throw std::runtime_error("cannot read " + from_json);
     study = order_study_from_json(nlohmann::json::parse(in));
+    if (study.command.empty()) study.command = command;
   } else {
     study = run_order_study(options, progress);
+    study.command = command;
   }
   const fs::path figdir = fs::path(out) / "paper";
   fs::create_directories(figdir);
@@ -48,7 +50,7 @@ OrderStudy reproduce_orders(const OrderStudyOptions& options, const std::string&
     s << in.rdbuf();
     text = s.str();
   }
-  std::ofstream(page) << splice_order_section(text, order_section(study, command));
+  std::ofstream(page) << splice_order_section(text, order_section(study, study.command));
   return study;
 }
 

@@ -40,6 +40,7 @@ struct OrderStudy {
   std::vector<OrderRun> runs;
   double seconds = 0;      // wall clock of all runs
   double cpu_seconds = 0;  // process CPU time of all runs
+  std::string command;     // the command that ran it (kept in orders.json)
 };
 
 // The Steiner budget of a run: budget_factor x the paper's Lepp-centroid count
