@@ -39,9 +39,9 @@ struct Loop {
 // What the 2026-12-01 run found (docs/THEOREMS.md, "Loops by order").
 const std::vector<Loop>& loops() {
   static const std::vector<Loop> v = {
-      {"loop-other-centroid-theta34.1-fifo-square-in-square-b5ed5f73.bin", "fifo", {}, -1},
-      {"loop-self-similar-centroid-lifo-theta32.1-right-angle-corner.bin", "lifo", {}, -1},
-      {"loop-small-angle-cascade-centroid-theta35.2-fifo-octagon-4f136fee.bin", "fifo", {}, -1},
+      {"loop-other-centroid-theta34.1-fifo-square-in-square-b5ed5f73.bin", "fifo", {"smallest-angle"}, 0},
+      {"loop-self-similar-centroid-lifo-theta32.1-right-angle-corner.bin", "lifo", {"fifo", "flip", "smallest-angle"}, 20},
+      {"loop-small-angle-cascade-centroid-theta35.2-fifo-octagon-4f136fee.bin", "fifo", {}, 0},
   };
   return v;
 }
