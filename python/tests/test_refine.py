@@ -120,7 +120,7 @@ def test_write_triangle_is_the_cli_output(workdir):
 
 def test_bad_options_raise_value_error():
     path = corpus("paper", "A.poly")
-    for kwargs in (dict(min_angle=61), dict(method="bisect"), dict(order="random"), dict(engine="triangle"),
+    for kwargs in (dict(min_angle=61), dict(method="bisect"), dict(order="depth-first"), dict(engine="triangle"),
                    dict(max_area=-1), dict(max_steiner=-5), dict(time_limit=-1)):
         with pytest.raises(ValueError):
             lepp.refine(path, **kwargs)
