@@ -65,6 +65,8 @@ if(LEPP_PYTHON_BUILT)
   # The extension is built for one interpreter version (its file name says cpython-3XY).
   set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
     "python3 (>= ${LEPP_PYTHON_VERSION}), python3 (<< ${LEPP_PYTHON_VERSION_BELOW}), python3-numpy")
+  # lepp.audit's built-in sources (corpus/paper, corpus/hostile) are the lepp package's share/lepp.
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_RECOMMENDS "lepp (= ${CPACK_PACKAGE_VERSION})")
   set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-hypothesis")
   set(CPACK_COMPONENT_PYTHON_DESCRIPTION
 "Lepp-centroid quality triangulation and its exact certifier for Python

@@ -77,7 +77,7 @@ def _adapter(engine):
 
 
 def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, sources=("gen", "paper", "corpus"),
-          inputs=(), root=".", out="audit-out", compare=(), timeout=None, angle_tolerance=1e-3,
+          inputs=(), root=None, out="audit-out", compare=(), timeout=None, angle_tolerance=1e-3,
           point_tolerance=8, shrink=True, max_findings=3, shrink_seconds=60, junit=None, name=None):
     """Audits engine, a Python mesher: engine(pslg, theta) gets a validated PSLG dict
     (vertices, segments, holes, ...: NumPy arrays, 0-based) and the smallest angle wanted in
@@ -85,7 +85,9 @@ def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, s
     the conformance row, trace: the Steiner points in insertion order; or a lepp.Mesh).
 
     The rows, the inputs (RapidCheck's PSLG families for seed; corpus/paper and corpus/hostile
-    under root when present), the shrinking of each failure through the engine and the
+    found as `lepp audit` finds them: under root when given, else share/lepp of the installed
+    package, else the source tree lepp was built from; a source asked for and not found raises
+    ValueError, never a silent skip), the shrinking of each failure through the engine and the
     findings saved under out are those of `lepp audit`. An exception in the engine is a
     crashed run (its traceback kept with the finding), not the end of the audit;
     KeyboardInterrupt stops it. In process nothing can stop a run: with timeout (seconds) a
@@ -104,11 +106,13 @@ def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, s
     if name is None:
         name = getattr(engine, "__qualname__", None) or getattr(engine, "__name__", None) or repr(engine)
     sources = list(sources)
+    # None: the C++ side finds the corpus as `lepp audit` does (data_root.h); a built-in
+    # source that is not there is a ValueError naming it, never a silent skip.
+    if root is None:
+        # The Debian layout: usr/lib/python3/dist-packages/lepp beside usr/share/lepp.
+        installed = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "share", "lepp")
+        root = os.path.normpath(installed) if os.path.isdir(os.path.join(installed, "corpus")) else ""
     root = os.fspath(root)
-    for s in ("paper", "corpus"):  # outside a source tree: generated inputs only, as the C++ example does
-        sub = "paper" if s == "paper" else "hostile"
-        if s in sources and not inputs and not os.path.isdir(os.path.join(root, "corpus", sub)):
-            sources.remove(s)
     report, markdown, status = _lepp.audit(
         _adapter(engine), name=name, method=method, thetas=thetas, cases=int(cases), seed=int(seed),
         sources=sources, inputs=[os.fspath(i) for i in inputs], compare=list(compare), root=root,

@@ -16,6 +16,7 @@
 #include "bindings.h"
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
+#include "lepp/audit/data_root.h"
 #include "lepp/audit/report.h"
 
 namespace lepp::python {
@@ -107,7 +108,8 @@ py::tuple run(py::object engine, const AuditCall& c) {
   o.cases = c.cases;
   o.inputs.seed = c.seed;
   o.inputs.dirs = c.inputs;
-  o.inputs.source_root = c.root;
+  // Empty: share/lepp beside the executable, else the source tree, as `lepp audit` (data_root.h).
+  o.inputs.source_root = audit::find_data_root(c.root);
   o.inputs.generated = o.inputs.paper = o.inputs.corpus = false;
   for (const std::string& s : c.sources) {
     if (s == "gen") o.inputs.generated = true;

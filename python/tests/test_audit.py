@@ -82,3 +82,17 @@ def test_bad_usage_raises():
         lepp.audit(correct, sources=["nowhere"], cases=1)
     with pytest.raises(TypeError):
         lepp.audit("not a function", cases=1)
+
+
+def test_built_in_sources_are_found_from_any_directory(tmp_path, monkeypatch):
+    # No root: the corpus is found as `lepp audit` finds it (share/lepp, else the source
+    # tree), not relative to the working directory.
+    monkeypatch.chdir(tmp_path)
+    report = lepp.audit(correct, theta=20, cases=2, sources=["paper"], out=tmp_path / "out", shrink=False)
+    assert report.json["runs"] == 2, report.markdown
+    assert report.holds, report.markdown
+
+
+def test_a_missing_built_in_source_is_an_error_not_a_skip(tmp_path):
+    with pytest.raises(ValueError, match="built-in source paper"):
+        lepp.audit(correct, theta=20, cases=2, sources=["gen", "paper"], root=tmp_path, out=tmp_path / "out")
