@@ -25,6 +25,8 @@ struct CertifyArgs {
   bool no_theorem2 = false;
   bool json = false;
   bool exempt = false;
+  bool exempt_precision = false;
+  std::string method = "centroid";
   double max_area = 0;
   bool region_areas = false;
   std::size_t max_listed = 50;
@@ -53,6 +55,8 @@ int run_certify(const CertifyArgs& args) {
   options.theorem2 = !args.no_theorem2;
   options.max_listed_per_reason = args.max_listed;
   options.exempt_small_input_angles = args.exempt;
+  options.exempt_precision_limited = args.exempt_precision;
+  options.precision_method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
   const certify::Report report = certify::certify(input, mesh, options);
@@ -84,6 +88,12 @@ void add_certify_command(CLI::App& app, int& status) {
   cmd->add_flag("--exempt-small-input-angles", args->exempt,
                 "Triangles below --min-angle whose shortest edge lies near an input angle below 60 degrees are exempt, "
                 "counted apart (docs/CERTIFIER.md: the rule depends only on the input and the mesh)");
+  cmd->add_flag("--exempt-precision-limited", args->exempt_precision,
+                "Triangles below --min-angle for which every point Select Point allows (--method), rounded to doubles in "
+                "every way, cannot be inserted are exempt, counted apart (docs/CERTIFIER.md section 5c; input and mesh only)");
+  cmd->add_option("--method", args->method, "The Select Point of the precision-limit exemption: centroid or midpoint")
+      ->default_val("centroid")
+      ->check(CLI::IsMember({"centroid", "midpoint"}));
   cmd->add_option("--max-area", args->max_area,
                   "Every triangle's area must be <= this (as refine --max-area, Triangle's -a X; exact)")
       ->check(CLI::NonNegativeNumber);

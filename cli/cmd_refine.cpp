@@ -144,6 +144,8 @@ int run_refine(const RefineArgs& args) {
   }
 
   MeshStats s = mesh_stats(result.mesh, input);
+  std::size_t at_precision = 0;
+  for (const UnimprovableTriangle& u : result.unimprovable) at_precision += u.reason == LeftReason::DoublePrecision;
   double avg_lepp = result.lepp_searches ? static_cast<double>(result.lepp_triangles) / static_cast<double>(result.lepp_searches) : 0;
   if (args.json) {
     nlohmann::json j = {
@@ -168,11 +170,24 @@ int run_refine(const RefineArgs& args) {
         {"cocircular_ties", result.cocircular_ties},
         {"area_refined", result.area_refined},
         {"unimprovable", result.unimprovable.size()},
+        {"unimprovable_by_reason",
+         {{to_string(LeftReason::SmallInputAngle), result.unimprovable.size() - at_precision},
+          {to_string(LeftReason::DoublePrecision), at_precision}}},
+        {"precision_stops", result.precision_stops},
         {"outcome", to_string(result.outcome)},
         {"stuck", result.stuck},
         {"seconds", result.seconds},
         {"warnings", warnings},
     };
+    // The triangles left at double precision (1-based ids as in PREFIX.unimprovable), the first 50.
+    nlohmann::json limited = nlohmann::json::array();
+    for (const UnimprovableTriangle& u : result.unimprovable)
+      if (u.reason == LeftReason::DoublePrecision && limited.size() < 50)
+        limited.push_back({{"triangle", {u.triangle[0] + 1, u.triangle[1] + 1, u.triangle[2] + 1}},
+                           {"reason", to_string(u.reason)},
+                           {"rule", to_string(u.rule)},
+                           {"point", {u.point.x, u.point.y}}});
+    j["unimprovable_at_precision"] = limited;
     add_version(j);
     std::printf("%s\n", j.dump(2).c_str());
   } else {
@@ -187,8 +202,8 @@ int run_refine(const RefineArgs& args) {
     if (args.max_area > 0 || args.region_areas)
       std::printf("refined for area      %lld triangles (too big for their bound)\n", static_cast<long long>(result.area_refined));
     if (!result.unimprovable.empty())
-      std::printf("unimprovable          %zu triangles (listed in %s.unimprovable)\n", result.unimprovable.size(),
-                  args.output.c_str());
+      std::printf("unimprovable          %zu triangles (%zu by small input angles, %zu at double precision; listed in %s.unimprovable)\n",
+                  result.unimprovable.size(), result.unimprovable.size() - at_precision, at_precision, args.output.c_str());
     if (options.order == QueueOrder::Random)
       std::printf("processing order      random (seed %llu)\n", static_cast<unsigned long long>(options.order_seed));
     else
@@ -256,7 +271,8 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
   cmd->footer(
       "Exit status: 0 converged; 3 stopped by a guard (budget, edge floor, time limit) or triangles left\n"
-      "unimprovable by small input angles (the mesh is still written, a valid CDT); 2 bad input; 1 internal error.");
+      "unimprovable by small input angles or at double precision (the mesh is still written, a valid CDT);\n"
+      "2 bad input; 1 internal error.");
   cmd->callback([args, &status] { status = run_refine(*args); });
 }
 

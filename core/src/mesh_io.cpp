@@ -148,11 +148,12 @@ void write_unimprovable(const std::string& prefix, const std::vector<Unimprovabl
     return;
   }
   auto out = fmt::output_file(path);
-  out.print("# triangles left bad by the small-input-angle rule (docs/ALGORITHM.md)\n");
-  out.print("# v1 v2 v3 apex segment1 segment2 input_angle_deg (1-based ids)\n{}\n", list.size());
+  out.print("# triangles left bad: by the small-input-angle rule (section 8) or at double precision (section 8b,\n");
+  out.print("# apex and segments 0) of docs/ALGORITHM.md\n");
+  out.print("# v1 v2 v3 apex segment1 segment2 input_angle_deg reason (1-based ids)\n{}\n", list.size());
   for (const UnimprovableTriangle& u : list)
-    out.print("{} {} {} {} {} {} {}\n", u.triangle[0] + 1, u.triangle[1] + 1, u.triangle[2] + 1, u.apex + 1,
-              u.segment1 + 1, u.segment2 + 1, u.input_angle_deg);
+    out.print("{} {} {} {} {} {} {} {}\n", u.triangle[0] + 1, u.triangle[1] + 1, u.triangle[2] + 1, u.apex + 1,
+              u.segment1 + 1, u.segment2 + 1, u.input_angle_deg, to_string(u.reason));
 }
 
 std::vector<UnimprovableTriangle> read_unimprovable(const std::string& prefix) {
@@ -166,11 +167,18 @@ std::vector<UnimprovableTriangle> read_unimprovable(const std::string& prefix) {
   std::size_t n = header_count(in, t[0], "count");
   for (std::size_t i = 0; i < n; ++i) {
     in.expect(t, "unimprovable triangle");
-    in.fields(t, 7, 7, "unimprovable line (v1 v2 v3 apex segment1 segment2 angle)");
+    in.fields(t, 7, 8, "unimprovable line (v1 v2 v3 apex segment1 segment2 angle [reason])");
     UnimprovableTriangle u;
+    if (t.size() == 8) {  // no reason: an older file, the small-input-angle rule
+      if (t[7] == to_string(LeftReason::DoublePrecision)) u.reason = LeftReason::DoublePrecision;
+      else if (t[7] != to_string(LeftReason::SmallInputAngle))
+        in.fail(fmt::format("unknown reason '{}' (small-input-angle or double-precision)", t[7]));
+    }
+    const bool precision = u.reason == LeftReason::DoublePrecision;
     // 1-based ids; checked against the mesh and input by the certifier, here only for range.
     auto id = [&](std::string_view token, const char* what) {
       std::int64_t v = in.integer(token, what);
+      if (precision && v == 0 && std::string_view(what) != "vertex id") return -1;  // none
       if (v < 1 || v > std::numeric_limits<int>::max()) in.fail(fmt::format("{} {} out of range", what, v));
       return static_cast<int>(v - 1);
     };

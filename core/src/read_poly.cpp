@@ -230,7 +230,7 @@ Pslg read_poly(const std::string& path, std::vector<std::string>& warnings) {
         in.fail(fmt::format("segment endpoint {} out of range (vertices are numbered {} to {})", ends[k], first,
                             first + nv - 1));
     }
-    if (ends[0] == ends[1]) in.fail(fmt::format("segment {} has both endpoints at vertex {} (zero length)", number, ends[0]));
+    // Both endpoints one vertex: lepp::validate drops it with a warning (Triangle does).
     s.a = static_cast<int>(ends[0] - first);
     s.b = static_cast<int>(ends[1] - first);
     if (markers && t.size() >= fields) s.marker = static_cast<int>(in.integer(t[3], "boundary marker"));

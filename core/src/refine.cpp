@@ -79,6 +79,15 @@ double default_edge_floor(const Pslg& pslg) {
   return std::ldexp(feature, -20);  // a million times shorter than the input's smallest feature
 }
 
+bool below_precision_floor(const Point& a, const Point& b) {
+  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double ulp = m > 0 ? std::max(std::ldexp(1.0, std::ilogb(m) - 52), tiny) : tiny;
+  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y), four = 4 * ulp;
+  // In doubles, by this one function both engines call, so they stop alike.
+  return dx < four && dy < four && dx * dx + dy * dy < four * four;
+}
+
 const char* to_string(Outcome outcome) {
   switch (outcome) {
     case Outcome::Converged: return "converged";
@@ -124,6 +133,9 @@ bool parse_queue_order(const std::string& name, QueueOrder& order) {
   for (QueueOrder o : all_queue_orders())
     if (name == to_string(o)) return order = o, true;
   return false;
+}
+const char* to_string(LeftReason reason) {
+  return reason == LeftReason::SmallInputAngle ? "small-input-angle" : "double-precision";
 }
 
 int exit_status(Outcome outcome) { return outcome == Outcome::Converged ? 0 : 3; }

@@ -101,16 +101,29 @@ Pslg detail::validate(const Pslg& input, bool split, std::vector<std::string>& w
   }
   if (out.vertex_markers.size() != out.vertices.size()) out.vertex_markers.clear();
 
-  for (std::size_t s = 0; s < input.segments.size(); ++s) {
-    Segment seg = input.segments[s];
-    seg.a = new_id[static_cast<std::size_t>(seg.a)];
-    seg.b = new_id[static_cast<std::size_t>(seg.b)];
-    if (seg.a == seg.b)
-      throw InputError(file, line_at(input.segment_lines, s),
-                       fmt::format("segment {} has zero length (its endpoints are the same point)", s + 1));
-    out.segments.push_back(seg);
-    out.segment_lines.push_back(line_at(input.segment_lines, s));
+  // A zero-length segment (both endpoints one vertex, also after merging) is
+  // dropped with a warning, as Triangle does ("Endpoints of segment N are
+  // coincident"); the others keep their file numbers in segment_origin.
+  {
+    detail::WarningSink zero(warnings, "zero-length segment");
+    for (std::size_t s = 0; s < input.segments.size(); ++s) {
+      Segment seg = input.segments[s];
+      const int a = seg.a, b = seg.b;
+      seg.a = new_id[static_cast<std::size_t>(seg.a)];
+      seg.b = new_id[static_cast<std::size_t>(seg.b)];
+      if (seg.a == seg.b) {
+        zero.add(fmt::format("{}: segment {} has zero length ({}); dropped", detail::where(file, line_at(input.segment_lines, s)),
+                             s + 1,
+                             a == b ? fmt::format("both endpoints are vertex {}", a + 1)
+                                    : fmt::format("vertices {} and {} are the same point", a + 1, b + 1)));
+        continue;
+      }
+      out.segments.push_back(seg);
+      out.segment_lines.push_back(line_at(input.segment_lines, s));
+      out.segment_origin.push_back(static_cast<int>(s));
+    }
   }
+  if (out.segment_origin.size() == input.segments.size()) out.segment_origin.clear();  // nothing dropped: as before
 
   if (split) split_crossings(out, warnings);
   // Splits at vertices, repeats and overlaps, crossings, collinear input, holes.

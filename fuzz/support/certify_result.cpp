@@ -18,7 +18,7 @@ bool have_certifier() {
 }
 
 std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_deg,
-                             const std::vector<UnimprovableTriangle>& unimprovable) {
+                             const std::vector<UnimprovableTriangle>& unimprovable, Method method) {
   // Structural checks that need no exact arithmetic.
   const int n = static_cast<int>(mesh.vertices.size());
   for (const Tri& t : mesh.triangles)
@@ -32,6 +32,7 @@ std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_de
   certify::Options options;
   options.min_angle_deg = theta_deg;
   options.unimprovable = unimprovable;
+  options.precision_method = method;  // triangles listed at double precision are held to this method's choices
   options.max_listed_per_reason = 3;
   const certify::Report report = certify::certify(pslg, mesh, options);
   if (!report.certified()) {
@@ -43,13 +44,15 @@ std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_de
 #else
   (void)theta_deg;
   (void)unimprovable;
+  (void)method;
 #endif
   return {};
 }
 
 std::string certify_result(const Pslg& pslg, const RefineOptions& options, const RefineResult& result) {
   const bool converged = result.outcome == Outcome::Converged || result.outcome == Outcome::Unimprovable;
-  return certify_problems(pslg, result.mesh, converged ? options.min_angle_deg : 0, result.unimprovable);
+  return certify_problems(pslg, result.mesh, converged ? options.min_angle_deg : 0, result.unimprovable,
+                          options.method);
 }
 
 }  // namespace lepp::fuzz

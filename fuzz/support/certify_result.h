@@ -12,7 +12,8 @@ namespace lepp::fuzz {
 
 // theta_deg = 0: no angle check (a guard outcome's mesh is only a CDT).
 std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_deg,
-                             const std::vector<UnimprovableTriangle>& unimprovable);
+                             const std::vector<UnimprovableTriangle>& unimprovable,
+                             Method method = Method::Centroid);
 
 // Checks a refinement result: the certificate, with theta only when converged.
 std::string certify_result(const Pslg& pslg, const RefineOptions& options, const RefineResult& result);

@@ -2,6 +2,7 @@
 #include "fuzz_input.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <set>
 #include <string>
@@ -91,6 +92,18 @@ FuzzInput decode(const std::uint8_t* data, std::size_t size) {
     p.y = fdp.ConsumeIntegralInRange<int>(0, 2 * in.grid);
     in.holes.push_back(p);
   }
+  // Leftover bytes of an older input would be read as the fields below: they
+  // count only after this marker (1 in 256 older inputs with a leftover byte change).
+  if (fdp.ConsumeIntegralInRange<int>(0, 255) != FuzzInput::kPrecisionMarker) return in;
+  in.offset = fdp.ConsumeIntegralInRange<int>(0, FuzzInput::kMaxOffset);
+  const int nj = fdp.ConsumeIntegralInRange<int>(0, FuzzInput::kMaxJitters);
+  for (int i = 0; i < nj; ++i) {
+    UlpJitter j;
+    j.vertex = fdp.ConsumeIntegralInRange<int>(0, nv - 1);
+    j.dx = fdp.ConsumeIntegralInRange<int>(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps);
+    j.dy = fdp.ConsumeIntegralInRange<int>(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps);
+    in.jitters.push_back(j);
+  }
   return in;
 }
 
@@ -117,6 +130,17 @@ std::vector<std::uint8_t> encode(const FuzzInput& input) {
     w.put(in.holes[static_cast<std::size_t>(i)].x, 0, 2 * in.grid);
     w.put(in.holes[static_cast<std::size_t>(i)].y, 0, 2 * in.grid);
   }
+  if (in.offset == 0 && in.jitters.empty()) return w.bytes();  // as before the fields existed
+  w.put(FuzzInput::kPrecisionMarker, 0, 255);
+  w.put(in.offset, 0, FuzzInput::kMaxOffset);
+  const int nj = std::min(static_cast<int>(in.jitters.size()), FuzzInput::kMaxJitters);
+  w.put(nj, 0, FuzzInput::kMaxJitters);
+  for (int i = 0; i < nj; ++i) {
+    const UlpJitter& j = in.jitters[static_cast<std::size_t>(i)];
+    w.put(j.vertex, 0, nv - 1);
+    w.put(j.dx, -FuzzInput::kMaxUlps, FuzzInput::kMaxUlps);
+    w.put(j.dy, -FuzzInput::kMaxUlps, FuzzInput::kMaxUlps);
+  }
   return w.bytes();
 }
 
@@ -137,7 +161,18 @@ Pslg to_pslg(const FuzzInput& in) {
   const double s = scales()[static_cast<std::size_t>(in.scale)];
   Pslg pslg;
   pslg.source = "<fuzz>";
-  for (const GridPoint& p : in.vertices) pslg.vertices.push_back({p.x * s, p.y * s});
+  const double offset = in.offset > 0 ? std::ldexp(1.0, in.offset - 1) : 0.0;
+  for (const GridPoint& p : in.vertices) pslg.vertices.push_back({p.x * s + offset, p.y * s + offset});
+  auto step = [](double x, int k) {
+    for (; k > 0; --k) x = std::nextafter(x, HUGE_VAL);
+    for (; k < 0; ++k) x = std::nextafter(x, -HUGE_VAL);
+    return x;
+  };
+  for (const UlpJitter& j : in.jitters) {
+    if (j.vertex < 0 || j.vertex >= static_cast<int>(pslg.vertices.size())) continue;
+    Point& p = pslg.vertices[static_cast<std::size_t>(j.vertex)];
+    p = {step(p.x, j.dx), step(p.y, j.dy)};
+  }
   std::set<std::pair<int, int>> seen;  // by the first vertex with the same coordinates
   auto first_with = [&](int v) {
     for (int u = 0; u < v; ++u)
@@ -157,7 +192,7 @@ Pslg to_pslg(const FuzzInput& in) {
     kept.push_back(seg);
     pslg.segments.push_back({seg.a, seg.b, 0});
   }
-  for (const GridPoint& h : in.holes) pslg.holes.push_back({h.x * 0.5 * s, h.y * 0.5 * s});
+  for (const GridPoint& h : in.holes) pslg.holes.push_back({h.x * 0.5 * s + offset, h.y * 0.5 * s + offset});
   std::vector<std::string> warnings;
   return validate(pslg, warnings);
 }
@@ -174,7 +209,7 @@ void mutate(FuzzInput& in, std::mt19937& rng) {
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   auto random_point = [&] { return GridPoint{pick(0, in.grid), pick(0, in.grid)}; };
   const int nv = static_cast<int>(in.vertices.size());
-  switch (pick(0, 11)) {
+  switch (pick(0, 13)) {
     case 0:
     case 1:
       if (nv > 0) {  // nudge a vertex
@@ -190,6 +225,10 @@ void mutate(FuzzInput& in, std::mt19937& rng) {
       if (nv > 3) {  // remove a vertex and the segments on it
         const int v = pick(0, nv - 1);
         in.vertices.erase(in.vertices.begin() + v);
+        std::vector<UlpJitter> moved;
+        for (UlpJitter j : in.jitters)
+          if (j.vertex != v) j.vertex -= j.vertex > v, moved.push_back(j);
+        in.jitters = moved;
         std::vector<GridSegment> kept;
         for (GridSegment s : in.segments) {
           if (s.a == v || s.b == v) continue;
@@ -230,6 +269,22 @@ void mutate(FuzzInput& in, std::mt19937& rng) {
       in.grid = grid;
       break;
     }
+    case 12:
+    case 13:
+      if (nv > 0 && pick(0, 3) == 0) {  // a large offset: coordinates far from the origin, few bits left
+        in.offset = pick(0, 1) ? pick(20, FuzzInput::kMaxOffset) : 0;
+      } else if (nv > 0) {  // a cluster: copies of one vertex, each a few ulps from it
+        const int v = pick(0, nv - 1);
+        const int copies = pick(1, 4);
+        for (int k = 0; k < copies && static_cast<int>(in.vertices.size()) < FuzzInput::kMaxVertices &&
+                        static_cast<int>(in.jitters.size()) < FuzzInput::kMaxJitters;
+             ++k) {
+          in.vertices.push_back(in.vertices[static_cast<std::size_t>(v)]);
+          in.jitters.push_back({static_cast<int>(in.vertices.size()) - 1, pick(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps),
+                                pick(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps)});
+        }
+      }
+      break;
     default:
       in.scale = pick(0, static_cast<int>(scales().size()) - 1);
       break;
@@ -245,7 +300,14 @@ std::string describe(const FuzzInput& in) {
   for (const GridSegment& g : in.segments) s += fmt::format("({},{})", g.a, g.b);
   s += "] holes=[";
   for (const GridPoint& h : in.holes) s += fmt::format("({},{})", h.x / 2.0, h.y / 2.0);
-  return s + "]";
+  s += "]";
+  if (in.offset > 0) s += fmt::format(" offset=2^{}", in.offset - 1);
+  if (!in.jitters.empty()) {
+    s += " ulps=[";
+    for (const UlpJitter& j : in.jitters) s += fmt::format("(v{}:{},{})", j.vertex, j.dx, j.dy);
+    s += "]";
+  }
+  return s;
 }
 
 }  // namespace lepp::fuzz

@@ -22,6 +22,11 @@ struct GridPoint {
 struct GridSegment {
   int a = 0, b = 0;
 };
+// Vertex `vertex` moved by dx, dy ulps after scaling and offset (issue 20: points
+// a few ulps apart, the limit of double precision).
+struct UlpJitter {
+  int vertex = 0, dx = 0, dy = 0;
+};
 
 struct FuzzInput {
   int method = 0;        // 0 centroid, 1 midpoint
@@ -33,11 +38,20 @@ struct FuzzInput {
   std::vector<GridPoint> vertices;
   std::vector<GridSegment> segments;  // may be invalid (crossing, repeated): to_pslg() filters
   std::vector<GridPoint> holes;       // on the half grid: x/2, y/2
+  // Read after the holes and a marker byte (kPrecisionMarker), so inputs written
+  // before they existed decode unchanged: 0 no offset, k an offset of 2^(k - 1)
+  // added to both coordinates; then ulp moves of some vertices.
+  int offset = 0;
+  std::vector<UlpJitter> jitters;
 
   static constexpr int kMaxGrid = 40;
   static constexpr int kMaxVertices = 24;
   static constexpr int kMaxSegments = 48;
   static constexpr int kMaxHoles = 3;
+  static constexpr int kPrecisionMarker = 0xA5;
+  static constexpr int kMaxOffset = 41;
+  static constexpr int kMaxJitters = 12;
+  static constexpr int kMaxUlps = 4;
 };
 
 // The grid steps a fuzz input may use: powers of two keep grid geometry exact
@@ -62,7 +76,8 @@ RefineOptions options_of(const FuzzInput& input);
 double theta_deg(const FuzzInput& input);
 
 // One structural edit: move, add or remove a vertex, add or remove a segment,
-// add a hole, change theta, method, order, grid or scale.
+// add a hole, change theta, method, order, grid or scale, or make a cluster:
+// copies of a vertex a few ulps apart, at a large offset now and then.
 void mutate(FuzzInput& input, std::mt19937& rng);
 
 // A one-line description for finding messages.

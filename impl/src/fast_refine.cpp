@@ -19,6 +19,7 @@
 #include "lepp/fast.h"
 #include "lepp_search.h"
 #include "point_selection.h"
+#include "precision_stop.h"
 #include "quality.h"
 #include "tri_mesh.h"
 
@@ -115,7 +116,7 @@ class Refiner {
     Outcome outcome = Outcome::Converged;
     Lepp lepp;
     std::int64_t steiner = 0;
-    while (!queue.empty() && outcome == Outcome::Converged) {
+    while ((!queue.empty() || requeue_stopped(queue, steiner)) && outcome == Outcome::Converged) {
       const Item item = queue.pop();
       bool first = true;
       while (still_there(mesh_, item)) {
@@ -132,12 +133,17 @@ class Refiner {
           break;
         }
 
+        prefetch_around(lepp);
+        Choice choice = select_point(mesh_, lepp, opt_.method);
+        if (!choice_insertable(mesh_, lepp, choice) && !round_otherwise(mesh_, lepp, choice)) {  // the precision stop (section 8b)
+          ++result.precision_stops;
+          stopped_.push_back({item, choice.rule, choice.point});
+          break;
+        }
         ++result.lepp_searches;
         result.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
         if (first && sized && quality_.too_big(mesh_, item.tri)) ++result.area_refined;
         first = false;
-        prefetch_around(lepp);
-        const Choice choice = select_point(mesh_, lepp, opt_.method);
         TraceStep step;
         if (opt_.trace) step = trace_step(item, lepp, choice);
         int split_segment = -1;
@@ -175,16 +181,29 @@ class Refiner {
       }
     }
 
-    // The unimprovable list, recomputed on the final mesh in key order (section 8).
+    // The unimprovable list, recomputed on the final mesh in key order (section 8),
+    // then the precision-stopped triangles still there (section 8b: the last look
+    // at each found no insertable point), once each, unless section 8 lists them.
     std::vector<Keyed> left;
+    std::vector<const Stopped*> stopped_at(static_cast<std::size_t>(mesh_.size()), nullptr);
+    for (const Stopped& s : stopped_)
+      if (still_there(mesh_, s.item)) stopped_at[static_cast<std::size_t>(s.item.tri)] = &s;
     for (int ti = 0; ti < mesh_.size(); ++ti) {
-      if (quality_.judge(mesh_, ti).skinny && quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr))
-        left.push_back(keyed(mesh_, ti));
+      const bool angle_rule =
+          quality_.judge(mesh_, ti).skinny && quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr);
+      if (angle_rule) stopped_at[static_cast<std::size_t>(ti)] = nullptr;
+      if (angle_rule || stopped_at[static_cast<std::size_t>(ti)]) left.push_back(keyed(mesh_, ti));
     }
     std::sort(left.begin(), left.end(), key_less);
     for (const Keyed& k : left) {
       UnimprovableTriangle u;
-      quality_.unimprovable(mesh_, k.item.tri, quality_.shortest_edge(mesh_, k.item.tri), &u);
+      if (const Stopped* s = stopped_at[static_cast<std::size_t>(k.item.tri)]) {
+        u.reason = LeftReason::DoublePrecision;
+        u.rule = s->rule;
+        u.point = s->point;
+      } else {
+        quality_.unimprovable(mesh_, k.item.tri, quality_.shortest_edge(mesh_, k.item.tri), &u);
+      }
       u.triangle = canonical(mesh_.t(k.item.tri));
       result.unimprovable.push_back(u);
     }
@@ -199,6 +218,27 @@ class Refiner {
   }
 
  private:
+  // A bad triangle the precision stop left: retried when the queue runs dry if
+  // points were inserted since (its Lepp may have changed), listed otherwise.
+  struct Stopped {
+    Item item;
+    Rule rule;
+    Point point;
+  };
+  bool requeue_stopped(BadQueue& queue, std::int64_t steiner) {
+    if (steiner == refill_mark_ || stopped_.empty()) return false;
+    refill_mark_ = steiner;
+    std::vector<Keyed> again;
+    for (const Stopped& s : stopped_)
+      if (still_there(mesh_, s.item)) again.push_back(keyed(mesh_, s.item.tri));
+    stopped_.clear();
+    std::sort(again.begin(), again.end(), key_less);
+    again.erase(std::unique(again.begin(), again.end(), [](const Keyed& x, const Keyed& y) { return !key_less(x, y) && !key_less(y, x); }),
+                again.end());
+    queue.push(again, true);  // as the initial queue (section 7's order)
+    return !queue.empty();
+  }
+
   // The flip order: each batch member's place in the insertion's creation order
   // (a star has a handful of triangles: a linear search is the cheap way).
   void set_creation_ranks(std::vector<Keyed>& batch) const {
@@ -242,6 +282,8 @@ class Refiner {
   Quality quality_;
   TriMesh mesh_;
   Inserter inserter_;
+  std::vector<Stopped> stopped_;
+  std::int64_t refill_mark_ = 0;
 };
 
 }  // namespace

@@ -41,6 +41,15 @@ inline std::string difference(const RefineResult& a, const RefineResult& b) {
       return fmt::format("unimprovable {}: {} apex {} s{} s{} vs {} apex {} s{} s{}", i, tri(u.triangle), u.apex,
                          u.segment1, u.segment2, tri(v.triangle), v.apex, v.segment1, v.segment2);
   }
+  for (std::size_t i = 0; i < a.unimprovable.size(); ++i) {
+    const UnimprovableTriangle &u = a.unimprovable[i], &v = b.unimprovable[i];
+    if (u.reason != v.reason || u.rule != v.rule || u.point != v.point)
+      return fmt::format("unimprovable {} {}: {} {} ({:.17g}, {:.17g}) vs {} {} ({:.17g}, {:.17g})", i, tri(u.triangle),
+                         to_string(u.reason), to_string(u.rule), u.point.x, u.point.y, to_string(v.reason), to_string(v.rule),
+                         v.point.x, v.point.y);
+  }
+  if (a.precision_stops != b.precision_stops)
+    return fmt::format("precision stops {} vs {}", a.precision_stops, b.precision_stops);
   return "";
 }
 

@@ -3,6 +3,7 @@
 // (bad_queue.h: the order), "while t remains", guards, trace, result.
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -65,7 +66,7 @@ class Refiner {
 
     Outcome outcome = Outcome::Converged;
     std::string stuck;
-    while (!queue_.empty() && outcome == Outcome::Converged) {
+    while ((!queue_.empty() || requeue_stopped()) && outcome == Outcome::Converged) {
       Tri t = queue_.pop();
       FH f;
       bool first = true;
@@ -82,6 +83,11 @@ class Refiner {
           break;
         }
         Selection s = select_point(lepp, options_.method);
+        if (!insertable(tr_, s, lepp) && !round_otherwise(tr_, lepp, s)) {  // the precision stop (section 8b)
+          ++result_.precision_stops;
+          stopped_.push_back({t, s.rule, s.point});
+          break;
+        }
         if (first && too_big(f)) ++result_.area_refined;
         first = false;
         ++result_.lepp_searches;
@@ -103,6 +109,23 @@ class Refiner {
       if (!f->info().in_domain || !is_skinny(f, sin2_)) continue;
       if (auto u = unimprovable(tr_, f, sin2_)) result_.unimprovable.push_back(*u);
     }
+    // The precision-stopped triangles still there (section 8b), once each, unless
+    // section 8 lists them.
+    std::map<Tri, const Stopped*> stopped_left;
+    for (const Stopped& st : stopped_) {
+      FH f;
+      if (exists(st.t, f) && !(is_skinny(f, sin2_) && unimprovable(tr_, f, sin2_))) stopped_left[sorted(st.t)] = &st;
+    }
+    for (const auto& [k, st] : stopped_left) {
+      FH f;
+      exists(st->t, f);
+      UnimprovableTriangle u;
+      u.triangle = ccw_ids(f);
+      u.reason = LeftReason::DoublePrecision;
+      u.rule = st->rule;
+      u.point = st->point;
+      result_.unimprovable.push_back(u);
+    }
     std::sort(result_.unimprovable.begin(), result_.unimprovable.end(),
               [](const UnimprovableTriangle& a, const UnimprovableTriangle& b) { return sorted(a.triangle) < sorted(b.triangle); });
     if (outcome == Outcome::Converged && !result_.unimprovable.empty()) outcome = Outcome::Unimprovable;
@@ -117,6 +140,35 @@ class Refiner {
   }
 
  private:
+  // A bad triangle the precision stop left: retried when the queue runs dry if
+  // points were inserted since (its Lepp may have changed), listed otherwise.
+  struct Stopped {
+    Tri t;
+    Rule rule;
+    Point point;
+  };
+  bool requeue_stopped() {
+    if (steiner_ == refill_mark_ || stopped_.empty()) return false;
+    refill_mark_ = steiner_;
+    std::vector<Queued> again;
+    std::vector<Tri> seen;
+    FH f;
+    for (const Stopped& st : stopped_)
+      if (exists(st.t, f) && std::find(seen.begin(), seen.end(), sorted(st.t)) == seen.end()) {
+        seen.push_back(sorted(st.t));
+        again.push_back(queued(f));
+      }
+    stopped_.clear();
+    queue_.push(again, true);  // as the initial queue (section 7's order)
+    return !queue_.empty();
+  }
+  bool is_stopped(FH f) const {
+    const Tri k = key(f);
+    for (const Stopped& st : stopped_)
+      if (sorted(st.t) == k) return true;
+    return false;
+  }
+
   static Tri sorted(Tri t) {
     std::sort(t.begin(), t.end());
     return t;
@@ -195,7 +247,7 @@ class Refiner {
   // examined there: a processed bad triangle left at the end is a bug.
   void check_nothing_left() const {
     for (FH f : tr_.cdt.finite_face_handles())
-      if (f->info().in_domain && processed_bad(f))
+      if (f->info().in_domain && processed_bad(f) && !is_stopped(f))
         throw std::logic_error("reference: bad triangle " + tri_string(ccw_ids(f)) + " left after the queue emptied");
   }
 
@@ -204,6 +256,8 @@ class Refiner {
   std::vector<std::optional<FT>> bounds_;  // by FaceInfo::region
   std::int64_t budget_;
   std::int64_t steiner_ = 0;
+  std::vector<Stopped> stopped_;
+  std::int64_t refill_mark_ = 0;
   Triangulation tr_;
   BadQueue queue_{options_.order, options_.order_seed};
   std::vector<Tri> created_;  // the flip order: the last insertion's triangles, in creation order

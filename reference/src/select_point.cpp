@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Point selection (ALGORITHM.md Section 5: the paper's Select Point and New
 // Select Point with Remark 10) and insertion (Section 6).
+#include <gmpxx.h>
+
+#include <cmath>
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -76,6 +79,106 @@ Selection select_point(const Lepp& lepp, Method method) {
     return s;
   }
   return edge_midpoint(Rule::SecondLongestMidpoint, star, star_edge);
+}
+
+namespace {
+
+CGAL::Orientation orient(VH a, const CPoint& p, VH c) { return CGAL::orientation(a->point(), p, c->point()); }
+CGAL::Orientation orient(const CPoint& p, VH b, VH c) { return CGAL::orientation(p, b->point(), c->point()); }
+
+// Where p lies in the closed face f: 1 strictly inside, 2 on the interior of an
+// unconstrained edge between domain faces, 0 outside, -1 on a vertex or on a
+// constrained (or domain boundary) edge.
+int place_in(const Triangulation& tr, FH f, const CPoint& p) {
+  int zeros = 0, on = -1;
+  for (int i = 0; i < 3; ++i) {
+    CGAL::Orientation o = CGAL::orientation(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point(), p);
+    if (o == CGAL::RIGHT_TURN) return 0;
+    if (o == CGAL::COLLINEAR) ++zeros, on = i;
+  }
+  if (zeros == 0) return 1;
+  if (zeros >= 2) return -1;
+  FH n = f->neighbor(on);
+  return f->is_constrained(on) || tr.cdt.is_infinite(n) || !n->info().in_domain ? -1 : 2;
+}
+
+// Within the precision floor (a few ulps, lepp::below_precision_floor) of vertex v.
+bool near(const Triangulation& tr, const Point& p, VH v) {
+  return id(v) >= 0 && lepp::below_precision_floor(p, tr.coords[static_cast<std::size_t>(id(v))]);
+}
+
+}  // namespace
+
+bool insertable(const Triangulation& tr, const Selection& s, const Lepp& lepp) {
+  const CPoint p(s.point.x, s.point.y);
+  if (s.split_face != FH()) {
+    // Every face the split of edge ab makes is counter-clockwise: on both sides
+    // in the domain, and outside it too, where the CDT has faces the fast engine
+    // does not keep (a rounded midpoint may be half an ulp off the line).
+    FH f = s.split_face;
+    int i = s.split_index;
+    VH a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i)), c = f->vertex(i);
+    if (orient(a, p, c) != CGAL::LEFT_TURN || orient(p, b, c) != CGAL::LEFT_TURN) return false;
+    if (near(tr, s.point, a) || near(tr, s.point, b) || near(tr, s.point, c)) return false;
+    FH n = f->neighbor(i);
+    if (tr.cdt.is_infinite(n)) return true;
+    VH d = n->vertex(n->index(f));
+    // The far side's apex is held to the floor only in the domain (the fast engine's view).
+    if (n->info().in_domain && near(tr, s.point, d)) return false;
+    return orient(b, p, d) == CGAL::LEFT_TURN && orient(p, a, d) == CGAL::LEFT_TURN;
+  }
+  for (FH t : {lepp.t1, lepp.t2})
+    if (t != FH())
+      for (int k = 0; k < 3; ++k)
+        if (near(tr, s.point, t->vertex(k))) return false;
+  // A located insertion: in the closed terminal pair, off its vertices and off
+  // constrained edges (a centroid in the other triangle is strictly inside it).
+  int in_t1 = place_in(tr, lepp.t1, p);
+  if (in_t1 != 0 || lepp.t2 == FH()) return in_t1 > 0;
+  return place_in(tr, lepp.t2, p) > 0;
+}
+
+namespace {
+
+// The doubles next to the exact value q, ascending (one when q is a double): GMP
+// truncates toward zero, the other neighbour is one step away from zero.
+std::vector<double> doubles_around(const mpq_class& q) {
+  const double d = q.get_d();
+  if (mpq_class(d) == q) return {d};
+  const double e = std::nextafter(d, q > 0 ? HUGE_VAL : -HUGE_VAL);
+  return d < e ? std::vector<double>{d, e} : std::vector<double>{e, d};
+}
+mpq_class q(VH v, bool y) { return mpq_class(CGAL::to_double(y ? v->point().y() : v->point().x())); }
+
+}  // namespace
+
+bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s) {
+  FH t1 = lepp.t1;
+  int l = lepp.edge;
+  VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l));
+  mpq_class x, y;
+  FH other;  // centroid-in-other: the triangle the point must stay strictly inside
+  if (s.rule == Rule::QuadCentroid || s.rule == Rule::CentroidInOther) {
+    VH c = t1->vertex(l), d = lepp.t2->vertex(lepp.t2->index(t1));
+    x = (q(a, false) + q(b, false) + q(c, false) + q(d, false)) / 4;
+    y = (q(a, true) + q(b, true) + q(c, true) + q(d, true)) / 4;
+    if (s.rule == Rule::CentroidInOther) other = strictly_inside(t1, s.point) ? t1 : lepp.t2;
+  } else {
+    if (s.split_face != FH()) a = s.split_face->vertex(Cdt::ccw(s.split_index)), b = s.split_face->vertex(Cdt::cw(s.split_index));
+    x = (q(a, false) + q(b, false)) / 2;
+    y = (q(a, true) + q(b, true)) / 2;
+  }
+  for (double px : doubles_around(x))
+    for (double py : doubles_around(y)) {
+      Selection alt = s;
+      alt.point = {px, py};
+      if (alt.point == s.point || (other != FH() && !strictly_inside(other, alt.point))) continue;
+      if (insertable(tr, alt, lepp)) {
+        s = alt;
+        return true;
+      }
+    }
+  return false;
 }
 
 namespace {

@@ -103,6 +103,14 @@ struct Selection {
   int split_index = -1;
 };
 Selection select_point(const Lepp& lepp, Method method);
+// The precision stop (ALGORITHM.md section 8b): can the selected point, as rounded,
+// be inserted where its insertion needs it (split: every new face counter-clockwise;
+// otherwise in the closed terminal pair, off its vertices and constrained edges)?
+bool insertable(const Triangulation& tr, const Selection& s, const Lepp& lepp);
+// When it cannot: the doubles around the exact point (each coordinate rounded down
+// and up), ascending x then y; the first insertable one (for centroid-in-other,
+// still strictly inside the other triangle) replaces s.point. False: none is.
+bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s);
 // Inserts the selected point, restores the constrained Delaunay property by
 // flips in the legalization order of ALGORITHM.md section 7 (counting cocircular
 // ties), sets ids, segment membership and domain flags.

@@ -72,12 +72,22 @@ struct TraceStep {
   int split_segment = -1;       // input segment split by the point, or -1
 };
 
-// A bad triangle left as it is by the small-input-angle rule (ALGORITHM.md).
+// Why a bad triangle was left (ALGORITHM.md sections 8 and 8b).
+enum class LeftReason {
+  SmallInputAngle,  // its shortest edge spans the wedge of an input angle below theta
+  DoublePrecision,  // the point chosen for it, rounded to doubles, cannot be inserted
+};
+
+// A bad triangle left as it is: by the small-input-angle rule (apex, segments,
+// input angle) or by the precision stop (rule, point; apex and segments -1).
 struct UnimprovableTriangle {
   Tri triangle{};
   int apex = -1;                // the input vertex where the two segments meet
   int segment1 = -1, segment2 = -1;
   double input_angle_deg = 0;   // the angle between them at apex (for reports only)
+  LeftReason reason = LeftReason::SmallInputAngle;
+  Rule rule = Rule::QuadCentroid;  // DoublePrecision: the branch that chose the point
+  Point point;                     // DoublePrecision: the chosen point as rounded
 };
 
 struct RefineResult {
@@ -90,6 +100,7 @@ struct RefineResult {
   std::int64_t lepp_searches = 0;       // Lepp searches made
   std::int64_t lepp_triangles = 0;      // triangles visited by them (average Lepp size = ratio)
   std::int64_t area_refined = 0;        // bad triangles refined that were too big (skinny or not)
+  std::int64_t precision_stops = 0;     // times a chosen point could not be inserted (section 8b)
   std::string stuck;                    // for a guard outcome: which triangle, its Lepp
   double seconds = 0;
 };
@@ -97,6 +108,9 @@ struct RefineResult {
 // Defaults of the loop guards, a function of the input (ALGORITHM.md, "Termination").
 std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& options);
 double default_edge_floor(const Pslg& pslg);
+// The precision floor of an edge (ALGORITHM.md section 9): true iff |a - b| is below
+// 4 ulps of the largest magnitude of their coordinates, compared exactly.
+bool below_precision_floor(const Point& a, const Point& b);
 
 const char* to_string(Outcome outcome);
 const char* to_string(Rule rule);
@@ -106,6 +120,7 @@ const char* to_string(QueueOrder order);
 // false for an unknown name.
 const std::vector<QueueOrder>& all_queue_orders();
 bool parse_queue_order(const std::string& name, QueueOrder& order);
+const char* to_string(LeftReason reason);
 // 0 converged, 3 any other outcome (the mesh is still written).
 int exit_status(Outcome outcome);
 

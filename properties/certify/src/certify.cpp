@@ -15,6 +15,7 @@
 
 #include "exact.h"
 #include "expected_domain.h"
+#include "precision_limit.h"
 #include "small_input_angles_internal.h"
 #include "lepp/angle.h"
 #include "lepp/stats.h"
@@ -703,10 +704,25 @@ class Certifier {
         report_.exempt_triangles.push_back(static_cast<int>(t));
         report_.exempt_angle.push_back(exempt);
       }
+      // The precision limit (section 5c), likewise from input and mesh alone.
+      const bool limited = exempt < 0 && opt_.exempt_precision_limited && precision_limited(precision_view(), t, opt_.precision_method);
+      if (limited) report_.precision_exempt_triangles.push_back(static_cast<int>(t));
       auto it = listed.find(sorted(x));
       if (it != listed.end()) {
         const std::size_t listed_index = it->second;
         found[listed_index] = 1;
+        if (opt_.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
+          if (limited || precision_limited(precision_view(), t, opt_.precision_method)) {
+            report_.unimprovable_accepted.push_back(opt_.unimprovable[listed_index]);
+            continue;
+          }
+          add({Reason::UnimprovableRuleFails,
+               fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as rounded, "
+                           "can be inserted",
+                           tri_text(t), to_string(opt_.precision_method)),
+               {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
+          continue;
+        }
         if (unimprovable_rule_holds(t, bracket.hi)) {
           report_.unimprovable_accepted.push_back(opt_.unimprovable[listed_index]);
           continue;
@@ -717,7 +733,7 @@ class Certifier {
              {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
         continue;
       }
-      if (exempt >= 0) continue;
+      if (exempt >= 0 || limited) continue;
       const double deg = min_angle_deg(P(x[0]), P(x[1]), P(x[2]));
       add({certainly ? Reason::AngleBelowTheta : Reason::AngleNotCertified,
            fmt::format("{} has an angle at vertex {} {} theta = {} (about {} degrees)", tri_text(t), x[static_cast<std::size_t>(worst)],
@@ -725,6 +741,7 @@ class Certifier {
            {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
     }
     report_.exempt_count = report_.exempt_triangles.size();
+    report_.precision_exempt_count = report_.precision_exempt_triangles.size();
     // Listed but not skinny is harmless for the angle check; listed but absent is not.
     std::set<Tri> triangles;
     if (std::find(found.begin(), found.end(), 0) != found.end())
@@ -736,6 +753,8 @@ class Certifier {
              fmt::format("listed unimprovable triangle {} {} {} is not a triangle of the mesh", x[0], x[1], x[2]), {}, {}, {}, {}, -1});
     }
   }
+
+  PrecisionView precision_view() const { return {mesh_, tri_ok_, twin_, constrained_half_}; }
 
   // --- 6. Theorem 2 and the Lepp statistic -----------------------------------
   int longest_half(std::size_t t) const { return static_cast<int>(3 * t) + longest_[t]; }

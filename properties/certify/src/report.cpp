@@ -123,9 +123,20 @@ std::string format_report(const Report& report) {
   out += fmt::format("checked: {} in-circle tests ({} cocircular), {} constrained edges, {} terminal pairs (Theorem 2){}\n",
                      s.delaunay_edges_checked, s.cocircular_edges, s.constrained_edges, s.terminal_pairs_checked,
                      report.min_angle_deg > 0 ? fmt::format(", min angle >= {}", report.min_angle_deg) : std::string());
-  if (!report.unimprovable_accepted.empty())
-    out += fmt::format("{} triangles below theta accepted as unimprovable (small input angle, rule holds)\n",
-                       report.unimprovable_accepted.size());
+  if (!report.unimprovable_accepted.empty()) {
+    std::size_t precision = 0;
+    for (const UnimprovableTriangle& u : report.unimprovable_accepted) precision += u.reason == LeftReason::DoublePrecision;
+    out += fmt::format("{} triangles below theta accepted as unimprovable ({} small input angle, {} double precision; rule holds)\n",
+                       report.unimprovable_accepted.size(), report.unimprovable_accepted.size() - precision, precision);
+  }
+  if (report.precision_exempt_count > 0) {
+    out += fmt::format("{} triangles below theta exempt (precision limit: no point Select Point allows can be inserted as rounded)\n",
+                       report.precision_exempt_count);
+    const std::size_t listed = std::min(report.precision_exempt_triangles.size(), kListedExempt);
+    for (std::size_t i = 0; i < listed; ++i) out += fmt::format("  exempt: triangle {} (double precision)\n", report.precision_exempt_triangles[i]);
+    if (listed < report.precision_exempt_triangles.size())
+      out += fmt::format("  ... and {} more exempt triangles\n", report.precision_exempt_triangles.size() - listed);
+  }
   if (report.exempt_count > 0) {
     out += fmt::format("{} triangles below theta exempt (small-input-angle rule: shortest edge near an input angle below 60 deg)\n",
                        report.exempt_count);

@@ -24,7 +24,14 @@ nlohmann::json json_report(const Report& r, std::size_t max_listed) {
   }
   nlohmann::json unimprovable = nlohmann::json::array();
   for (const UnimprovableTriangle& u : r.unimprovable_accepted)
-    unimprovable.push_back({{"triangle", u.triangle}, {"apex", u.apex}, {"segment1", u.segment1}, {"segment2", u.segment2}});
+    unimprovable.push_back({{"triangle", u.triangle},
+                            {"apex", u.apex},
+                            {"segment1", u.segment1},
+                            {"segment2", u.segment2},
+                            {"reason", to_string(u.reason)}});
+  nlohmann::json precision = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.precision_exempt_triangles.size() && i < max_listed; ++i)
+    precision.push_back(r.precision_exempt_triangles[i]);
   nlohmann::json angles = nlohmann::json::array();
   for (const certify::SmallInputAngle& a : r.small_angles)
     angles.push_back({{"apex", a.apex},
@@ -62,6 +69,8 @@ nlohmann::json json_report(const Report& r, std::size_t max_listed) {
           {"small_input_angles", angles},
           {"exempt_count", r.exempt_count},
           {"exempt_triangles", exempt},
+          {"precision_exempt_count", r.precision_exempt_count},
+          {"precision_exempt_triangles", precision},
           {"size_bound",
            {{"max_area", r.max_area}, {"region_areas", r.region_area_bounds}, {"triangles_checked", r.area_checked}, {"regions", regions}}}};
 }

@@ -88,6 +88,13 @@ struct Options {
   // below 60 degrees is exempt, counted apart (Report::exempt_triangles), not a violation.
   // Depends only on the input and the mesh, never on lists the mesher wrote.
   bool exempt_small_input_angles = false;
+  // The precision-limit exemption for any mesher (docs/CERTIFIER.md section 5c): a
+  // triangle below theta every point of whose Select Point (precision_method), as
+  // rounded in every way, cannot be inserted is exempt, counted apart
+  // (Report::precision_exempt_triangles). Input and mesh only, like the rule above;
+  // triangles listed in `unimprovable` as DoublePrecision are held to it either way.
+  bool exempt_precision_limited = false;
+  Method precision_method = Method::Centroid;
   // Size bounds (docs/CERTIFIER.md section 7), as lepp refine's --max-area and
   // --region-areas (Triangle's -a X and -a): every triangle's area must be at most
   // max_area (> 0), and with region_area_bounds at most the bound (> 0) of the
@@ -122,6 +129,10 @@ struct Report {
   std::vector<int> exempt_triangles;
   std::vector<int> exempt_angle;
   std::size_t exempt_count = 0;
+  // With Options::exempt_precision_limited: the triangles below theta exempt as
+  // limited by double precision (indices into Mesh::triangles, in order).
+  std::vector<int> precision_exempt_triangles;
+  std::size_t precision_exempt_count = 0;
   Statistics stats;
   double min_angle_deg = 0;  // the theta checked (0: none)
   // The size bounds checked (Options::max_area, Options::region_area_bounds) and, with

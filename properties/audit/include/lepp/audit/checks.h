@@ -60,6 +60,7 @@ struct CaseResult {
   std::array<RowResult, kRows> rows;
   std::int64_t steiner_points = -1;  // points added (Ok runs)
   std::size_t exempt_triangles = 0;  // below theta but exempt by the small-input-angle rule
+  std::size_t precision_exempt_triangles = 0;  // below theta but exempt by the precision limit
   RowResult& operator[](Row r) { return rows[static_cast<std::size_t>(r)]; }
   const RowResult& operator[](Row r) const { return rows[static_cast<std::size_t>(r)]; }
 };

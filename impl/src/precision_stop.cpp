@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The other roundings of a chosen point (ALGORITHM.md section 8b): when the
+// formula's double cannot be inserted, the doubles around the exact point are
+// tried before the triangle is left. Cold: reached only at the precision limit.
+#include <gmpxx.h>
+
+#include <cmath>
+#include <vector>
+
+#include "precision_stop.h"
+
+namespace lepp::fast {
+namespace {
+
+// The doubles next to the exact value q, ascending (one when q is a double).
+// GMP's get_d truncates toward zero; the other neighbour is one step away from zero.
+std::vector<double> around(const mpq_class& q) {
+  const double d = q.get_d();
+  if (mpq_class(d) == q) return {d};
+  const double e = std::nextafter(d, q > 0 ? HUGE_VAL : -HUGE_VAL);
+  return d < e ? std::vector<double>{d, e} : std::vector<double>{e, d};
+}
+
+}  // namespace
+
+bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c) {
+  mpq_class x, y;
+  const FTri& f1 = m.t(lepp.t1);
+  const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
+  if (c.rule == Rule::QuadCentroid || c.rule == Rule::CentroidInOther) {
+    const Point &p = m.p(f1.v[lepp.e1]), &q = m.p(m.t(lepp.t2).v[lepp.e2]);
+    x = (mpq_class(a.x) + mpq_class(b.x) + mpq_class(p.x) + mpq_class(q.x)) / 4;
+    y = (mpq_class(a.y) + mpq_class(b.y) + mpq_class(p.y) + mpq_class(q.y)) / 4;
+  } else if (c.edge < 0) {  // terminal-midpoint: the unconstrained terminal edge
+    x = (mpq_class(a.x) + mpq_class(b.x)) / 2, y = (mpq_class(a.y) + mpq_class(b.y)) / 2;
+  } else {  // the midpoint of the constrained edge it splits
+    const FTri& f = m.t(c.tri);
+    const Point &u = m.p(f.v[next3(c.edge)]), &v = m.p(f.v[prev3(c.edge)]);
+    x = (mpq_class(u.x) + mpq_class(v.x)) / 2, y = (mpq_class(u.y) + mpq_class(v.y)) / 2;
+  }
+  for (double px : around(x))
+    for (double py : around(y)) {
+      Choice alt = c;
+      alt.point = {px, py};
+      if (alt.point == c.point) continue;
+      if (c.rule == Rule::CentroidInOther && !strictly_inside(m, c.tri, alt.point)) continue;  // the branch's condition
+      if (choice_insertable(m, lepp, alt)) {
+        c = alt;
+        return true;
+      }
+    }
+  return false;
+}
+
+}  // namespace lepp::fast

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The precision stop (ALGORITHM.md section 8b): can the chosen point, as
+// rounded to doubles, be inserted where its insertion needs it? If not, the
+// bad triangle is left (listed as unimprovable at double precision).
+#pragma once
+#include "lepp/refine.h"
+#include "lepp_search.h"
+#include "point_selection.h"
+#include "predicates.h"
+#include "tri_mesh.h"
+
+namespace lepp::fast {
+
+// A constrained split of edge i of ti: every triangle the split makes, on
+// each domain side of the edge, is counter-clockwise (the rounded midpoint
+// may be half an ulp off the edge's line, or on an endpoint), and no new edge
+// is below the precision floor (lepp::below_precision_floor: a few ulps).
+inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p) {
+  const FTri& f = m.t(ti);
+  const Point &a = m.p(f.v[next3(i)]), &b = m.p(f.v[prev3(i)]), &c = m.p(f.v[i]);
+  if (orient(a, p, c) <= 0 || orient(p, b, c) <= 0) return false;
+  if (below_precision_floor(p, a) || below_precision_floor(p, b) || below_precision_floor(p, c)) return false;
+  if (f.nbr[i] < 0) return true;
+  const FTri& g = m.t(nbr_tri(f.nbr[i]));
+  const Point& d = m.p(g.v[nbr_edge(f.nbr[i])]);
+  return orient(b, p, d) > 0 && orient(p, a, d) > 0 && !below_precision_floor(p, d);
+}
+
+// p within the precision floor (a few ulps) of a vertex of the terminal pair.
+inline bool near_pair_vertex(const TriMesh& m, const Lepp& lepp, const Point& p) {
+  for (int t : {lepp.t1, lepp.t2}) {
+    if (t < 0) continue;
+    for (int v : m.t(t).v)
+      if (below_precision_floor(p, m.p(v))) return true;
+  }
+  return false;
+}
+
+// Where p lies in the closed triangle ti: 1 strictly inside, 2 on the interior
+// of an unconstrained edge, 0 outside, -1 on a vertex or on a constrained edge.
+inline int place_in(const TriMesh& m, int ti, const Point& p) {
+  const FTri& f = m.t(ti);
+  int o[3];
+  for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]), p);
+  if (o[0] < 0 || o[1] < 0 || o[2] < 0) return 0;
+  const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+  if (zeros == 0) return 1;
+  if (zeros >= 2) return -1;
+  const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
+  return f.seg[e] >= 0 || f.nbr[e] < 0 ? -1 : 2;
+}
+
+// A point for a CDT insertion: in the closed terminal quad (t1, else t2),
+// off its vertices and off constrained edges, and farther than the precision
+// floor from the vertices of the pair.
+inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c) {
+  if (c.edge >= 0) return split_insertable(m, c.tri, c.edge, c.point);
+  if (near_pair_vertex(m, lepp, c.point)) return false;
+  const int in_first = place_in(m, c.tri, c.point);
+  if (in_first != 0 || c.other < 0) return in_first > 0;
+  return place_in(m, c.other, c.point) > 0;
+}
+
+// When choice's point cannot be inserted: the doubles around the exact point
+// (each coordinate rounded down and up), in ascending x then y, the first that
+// can (and, for centroid-in-other, is still strictly inside the other triangle)
+// replaces it. False when none can: the triangle is left.
+bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c);
+
+}  // namespace lepp::fast

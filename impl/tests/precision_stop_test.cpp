@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The precision stop (docs/ALGORITHM.md section 8b, issue 20): on inputs at the
+// limit of double precision both engines end with exit 0 or 3 (never an internal
+// error), give the same mesh, and the mesh certifies: every triangle left below
+// theta is one the certifier itself finds precision-limited.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "lepp/certify.h"
+#include "lepp/fast.h"
+#include "lepp/gen_precision.h"
+#include "lepp/input.h"
+#include "lepp/reference.h"
+#include "result_diff.h"
+
+namespace lepp {
+namespace {
+
+using impl_test::difference;
+
+const int fixed_seed = (setenv("RC_PARAMS", "seed=20261201 max_success=60", 0), 0);
+
+const std::string kPrecision = LEPP_SOURCE_DIR "/corpus/regressions/precision/";
+
+Pslg load(const std::string& file) {
+  std::vector<std::string> warnings;
+  return validate(read_input(kPrecision + file, warnings), DomainOptions{}, warnings);
+}
+
+// The certificate at theta, the engine's list held to the certifier's rules.
+certify::Report certificate(const Pslg& pslg, const RefineResult& r, double theta, Method method, bool angles) {
+  certify::Options o;
+  o.min_angle_deg = angles ? theta : 0;
+  o.unimprovable = r.unimprovable;
+  o.precision_method = method;
+  return certify::certify(pslg, r.mesh, o);
+}
+
+std::size_t at_precision(const RefineResult& r) {
+  std::size_t n = 0;
+  for (const UnimprovableTriangle& u : r.unimprovable) n += u.reason == LeftReason::DoublePrecision;
+  return n;
+}
+
+// Both engines on one input at one theta: no exception, exit 0 or 3, the same run, certified.
+void both_engines(const Pslg& pslg, double theta, Method method, const std::string& what) {
+  RefineOptions o;
+  o.min_angle_deg = theta;
+  o.method = method;
+  RefineResult fast_run, reference_run;
+  ASSERT_NO_THROW(fast_run = fast::refine(pslg, o)) << what;
+  ASSERT_NO_THROW(reference_run = reference::refine(pslg, o)) << what;
+  EXPECT_EQ(difference(fast_run, reference_run), "") << what;
+  const bool ended = fast_run.outcome == Outcome::Converged || fast_run.outcome == Outcome::Unimprovable;
+  const certify::Report rep = certificate(pslg, fast_run, theta, method, ended);
+  EXPECT_TRUE(rep.certified()) << what << ": " << to_string(fast_run.outcome) << "\n" << certify::format_report(rep);
+  std::printf("[ outcome  ] %s: %s, %lld Steiner points, %lld precision stops, %zu left at double precision\n", what.c_str(),
+              to_string(fast_run.outcome), static_cast<long long>(fast_run.steiner_points),
+              static_cast<long long>(fast_run.precision_stops), at_precision(fast_run));
+}
+
+// Issue 20's first input: a cluster a few ulps apart near (0.5, 0.5) and points on
+// the unit square's diagonal. Both engines stopped with exit 1 at 30 and 33 degrees.
+TEST(PrecisionStop, UlpClusterEndsCleanlyFrom10To33Degrees) {
+  const Pslg p = load("cluster34.node");
+  for (int theta = 10; theta <= 33; ++theta) both_engines(p, theta, Method::Centroid, fmt::format("cluster34 at {}", theta));
+  for (int theta : {20, 25}) both_engines(p, theta, Method::Midpoint, fmt::format("cluster34 midpoint at {}", theta));
+}
+
+// Issue 20's second input, shrunk: near-duplicates a few ulps apart far from the
+// origin (as in Triangle's greenland.node). The full 30000-point set is behind
+// LEPP_LONG_TESTS=1 (NearDuplicatesLong).
+TEST(PrecisionStop, NearDuplicatesEndCleanlyFrom10To33Degrees) {
+  for (const char* file : {"neardup-outside-quad.node", "neardup-on-vertex.node"}) {
+    const Pslg p = load(file);
+    for (int theta = 10; theta <= 33; theta += 1) both_engines(p, theta, Method::Centroid, fmt::format("{} at {}", file, theta));
+  }
+}
+
+TEST(PrecisionStop, NearDuplicatesLong) {
+  const char* long_tests = std::getenv("LEPP_LONG_TESTS");
+  if (!long_tests || std::string(long_tests) != "1") GTEST_SKIP() << "LEPP_LONG_TESTS=1 runs the 30000-point set";
+  const Pslg p = load("neardup30k.node");
+  for (int theta : {10, 20, 30, 33}) both_engines(p, theta, Method::Centroid, fmt::format("neardup30k at {}", theta));
+}
+
+// The rule can fire at all: on the cluster, some theta leaves triangles at double precision.
+TEST(PrecisionStop, TheStopIsReached) {
+  const Pslg p = load("cluster34.node");
+  RefineOptions o;
+  o.min_angle_deg = 33;
+  const RefineResult r = fast::refine(p, o);
+  EXPECT_GT(r.precision_stops, 0);
+  EXPECT_GT(at_precision(r), 0u);
+  EXPECT_EQ(r.outcome, Outcome::Unimprovable);
+}
+
+// The generated families at the limit of doubles (properties/gen gen_precision.h):
+// every run of either engine ends (no exception), both agree, the mesh certifies.
+RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
+  const Pslg raw = *gen::atPrecisionLimit();
+  const double theta = *rc::gen::element(20.0, 25.0, 30.0, 33.0);
+  std::vector<std::string> warnings;
+  Pslg p;
+  try {
+    p = validate(raw, warnings);
+  } catch (const InputError&) {
+    RC_DISCARD("not a valid PSLG");
+  }
+  RefineOptions o;
+  o.min_angle_deg = theta;
+  o.max_steiner = 3000;  // a bound on the test's time; a budget stop is still certified (without angles)
+  RefineResult fast_run, reference_run;
+  try {
+    fast_run = fast::refine(p, o);
+    reference_run = reference::refine(p, o);
+  } catch (const std::exception& e) {
+    RC_FAIL(fmt::format("{} at theta {}: internal error: {}", raw.source, theta, e.what()));
+  }
+  RC_ASSERT(difference(fast_run, reference_run) == "");
+  const bool ended = fast_run.outcome == Outcome::Converged || fast_run.outcome == Outcome::Unimprovable;
+  const certify::Report rep = certificate(p, fast_run, theta, Method::Centroid, ended);
+  RC_ASSERT(rep.certified());
+  RC_CLASSIFY(at_precision(fast_run) > 0, "left at double precision");
+  RC_CLASSIFY(ended, "converged or unimprovable");
+}
+
+}  // namespace
+}  // namespace lepp

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The precision-limit exemption for any mesher (docs/CERTIFIER.md section 5c):
+// a triangle below theta is exempt when every point the paper's Select Point
+// allows for it (every Lepp under every resolution of equal lengths, every
+// branch) rounds, in every way a mesher may round it, to a point that cannot be
+// inserted. Reads only the mesh (and which of its edges lie on segment chains).
+// Private to the certifier.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "lepp/mesh.h"
+#include "lepp/refine.h"
+
+namespace lepp::certify {
+
+// The mesh as the certifier has checked it. Half-edge h = 3t + i runs from
+// triangle t's vertex i to vertex i + 1; twin[h] is the opposite half-edge, -1
+// on the mesh boundary, -2 for a bad edge; chain[h] is 1 on a segment chain.
+struct PrecisionView {
+  const Mesh& mesh;
+  const std::vector<char>& tri_ok;
+  const std::vector<int>& twin;
+  const std::vector<char>& chain;
+};
+
+// True iff triangle t is precision-limited for `method`: each choice of point
+// is, at every rounding (the engines' formula of ALGORITHM.md section 5 and both
+// directed roundings of each coordinate of the exact point), not insertable in
+// the sense of ALGORITHM.md section 8b. False when the search is too large
+// (more than a few thousand Lepp states) or meets a bad edge: no exemption.
+bool precision_limited(const PrecisionView& view, std::size_t t, Method method);
+
+}  // namespace lepp::certify

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The precision-limit exemption (docs/CERTIFIER.md section 5c): a triangle below
+// theta is exempt only when the certifier, recomputing every choice the paper
+// allows at every rounding, finds none that can be inserted. It accepts the
+// triangles lepp leaves at double precision, without reading lepp's list, and
+// rejects a mesh that claims the exemption where a point can be inserted, or
+// that writes an inverted triangle there.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "lepp/certify.h"
+#include "lepp/fast.h"
+#include "lepp/input.h"
+#include "lepp/validate.h"
+
+namespace lepp {
+namespace {
+
+Pslg cluster34() {
+  std::vector<std::string> warnings;
+  return validate(read_input(LEPP_SOURCE_DIR "/corpus/regressions/precision/cluster34.node", warnings), DomainOptions{}, warnings);
+}
+
+RefineResult refine_at(const Pslg& p, double theta) {
+  RefineOptions o;
+  o.min_angle_deg = theta;
+  return fast::refine(p, o);
+}
+
+std::vector<UnimprovableTriangle> at_precision(const RefineResult& r) {
+  std::vector<UnimprovableTriangle> out;
+  for (const UnimprovableTriangle& u : r.unimprovable)
+    if (u.reason == LeftReason::DoublePrecision) out.push_back(u);
+  return out;
+}
+
+// The index of mesh triangle `t` (any rotation), or -1.
+int index_of(const Mesh& m, Tri t) {
+  for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+    Tri x = m.triangles[i], y = t;
+    std::sort(x.begin(), x.end());
+    std::sort(y.begin(), y.end());
+    if (x == y) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// lepp's own list is held to the rule, and the rule alone (no list) exempts the same triangles.
+TEST(CertifyPrecision, LeppsTrianglesLeftAtDoublePrecisionAreExemptByTheRuleAlone) {
+  const Pslg p = cluster34();
+  const RefineResult r = refine_at(p, 33);
+  const auto left = at_precision(r);
+  ASSERT_FALSE(left.empty()) << "the cluster at 33 degrees must reach the precision stop";
+
+  certify::Options with_list;
+  with_list.min_angle_deg = 33;
+  with_list.unimprovable = r.unimprovable;
+  const certify::Report listed = certify::certify(p, r.mesh, with_list);
+  EXPECT_TRUE(listed.certified()) << certify::format_report(listed);
+  EXPECT_EQ(listed.unimprovable_accepted.size(), r.unimprovable.size());
+
+  certify::Options rule;
+  rule.min_angle_deg = 33;
+  rule.exempt_precision_limited = true;
+  const certify::Report alone = certify::certify(p, r.mesh, rule);
+  EXPECT_TRUE(alone.certified()) << certify::format_report(alone);
+  EXPECT_EQ(alone.precision_exempt_count, alone.precision_exempt_triangles.size());
+  for (const UnimprovableTriangle& u : left) {
+    const int t = index_of(r.mesh, u.triangle);
+    ASSERT_GE(t, 0);
+    const bool below = std::find(alone.precision_exempt_triangles.begin(), alone.precision_exempt_triangles.end(), t) !=
+                       alone.precision_exempt_triangles.end();
+    // Listed triangles below theta are exempt; a listed one at or above theta needs no exemption.
+    if (!below) {
+      certify::Options strict;
+      strict.min_angle_deg = 33;
+      const certify::Report s = certify::certify(p, r.mesh, strict);
+      for (const certify::Violation& v : s.violations)
+        EXPECT_FALSE(std::find(v.triangles.begin(), v.triangles.end(), t) != v.triangles.end())
+            << "triangle " << t << " is below theta but not exempt";
+    }
+  }
+
+  // Without the rule or the list the same mesh fails at 33 degrees: the exemption is doing the work.
+  certify::Options none;
+  none.min_angle_deg = 33;
+  EXPECT_TRUE(certify::certify(p, r.mesh, none).has(certify::Reason::AngleBelowTheta));
+}
+
+// A mesh stopped early by the budget claims its skinny triangles are precision-limited:
+// a point can be inserted for each, so the claim fails and the angle is a violation.
+TEST(CertifyPrecision, RejectsAWrongClaim) {
+  Pslg p;
+  p.vertices = {{0, 0}, {8, 0}, {8, 1}, {0, 1}};
+  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  std::vector<std::string> warnings;
+  p = validate(p, warnings);
+  RefineOptions o;
+  o.min_angle_deg = 30;
+  o.max_steiner = 2;
+  const RefineResult r = fast::refine(p, o);
+  ASSERT_EQ(r.outcome, Outcome::SteinerBudget);
+  certify::Options strict;
+  strict.min_angle_deg = 30;
+  const certify::Report before = certify::certify(p, r.mesh, strict);
+  ASSERT_TRUE(before.has(certify::Reason::AngleBelowTheta));
+  const int t = before.violations.front().triangles.front();
+
+  UnimprovableTriangle claim;
+  claim.triangle = r.mesh.triangles[static_cast<std::size_t>(t)];
+  claim.reason = LeftReason::DoublePrecision;
+  certify::Options claimed = strict;
+  claimed.unimprovable = {claim};
+  const certify::Report rep = certify::certify(p, r.mesh, claimed);
+  EXPECT_FALSE(rep.certified());
+  EXPECT_TRUE(rep.has(certify::Reason::UnimprovableRuleFails)) << certify::format_report(rep);
+
+  certify::Options rule = strict;
+  rule.exempt_precision_limited = true;
+  const certify::Report alone = certify::certify(p, r.mesh, rule);
+  EXPECT_EQ(alone.precision_exempt_count, 0u);
+  EXPECT_TRUE(alone.has(certify::Reason::AngleBelowTheta));
+}
+
+// A mesher that writes the precision-limited triangle inverted is not excused.
+TEST(CertifyPrecision, RejectsAnInvertedTriangleThere) {
+  const Pslg p = cluster34();
+  RefineResult r = refine_at(p, 33);
+  const auto left = at_precision(r);
+  ASSERT_FALSE(left.empty());
+  const int t = index_of(r.mesh, left.front().triangle);
+  ASSERT_GE(t, 0);
+  Mesh bad = r.mesh;
+  std::swap(bad.triangles[static_cast<std::size_t>(t)][1], bad.triangles[static_cast<std::size_t>(t)][2]);
+  certify::Options rule;
+  rule.min_angle_deg = 33;
+  rule.exempt_precision_limited = true;
+  rule.unimprovable = r.unimprovable;
+  const certify::Report rep = certify::certify(p, bad, rule);
+  EXPECT_FALSE(rep.certified());
+  EXPECT_TRUE(rep.has(certify::Reason::NotCounterClockwise)) << certify::format_report(rep);
+}
+
+}  // namespace
+}  // namespace lepp
