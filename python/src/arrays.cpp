@@ -156,6 +156,7 @@ py::dict unimprovable_to_dict(const UnimprovableTriangle& u) {
   d["segment1"] = u.segment1;
   d["segment2"] = u.segment2;
   d["input_angle"] = u.input_angle_deg;
+  d["reason"] = to_string(u.reason);  // small-input-angle or double-precision (ALGORITHM.md 8, 8b)
   return d;
 }
 
@@ -171,6 +172,12 @@ std::vector<UnimprovableTriangle> unimprovable_from_list(const py::list& list) {
     u.segment1 = d["segment1"].cast<int>();
     u.segment2 = d["segment2"].cast<int>();
     if (d.contains("input_angle")) u.input_angle_deg = d["input_angle"].cast<double>();
+    if (d.contains("reason")) {
+      const auto reason = d["reason"].cast<std::string>();
+      if (reason == to_string(LeftReason::DoublePrecision)) u.reason = LeftReason::DoublePrecision;
+      else if (reason != to_string(LeftReason::SmallInputAngle))
+        throw std::invalid_argument("unimprovable: reason is small-input-angle or double-precision, not " + reason);
+    }
     out.push_back(u);
   }
   return out;
