@@ -324,6 +324,8 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
       rep.status_counts[static_cast<int>(out.statuses[k])]++;
       rep.exempt_triangles += result.exempt_triangles;
       rep.runs_with_exempt += result.exempt_triangles > 0;
+      rep.precision_exempt_triangles += result.precision_exempt_triangles;
+      rep.runs_with_precision_exempt += result.precision_exempt_triangles > 0;
       for (Row row : kAllRows) {
         RowSummary& s = rep[row];
         const RowResult& r = result[row];

@@ -95,6 +95,10 @@ std::string markdown_report(const AuditReport& rep) {
     md += fmt::format("{}{} {} n/a, {} not checked", i ? "; " : "", row_key(r.row), r.not_applicable, r.not_checked);
   }
   md += fmt::format(".\n\nSmall-input-angle exemptions: {} triangles below theta in {} runs exempt by the rule (docs/CERTIFIER.md), not counted as violations.\n", rep.exempt_triangles, rep.runs_with_exempt);
+  if (rep.precision_exempt_triangles > 0)  // said only when it happened: most audits never reach the limit of doubles
+    md += fmt::format("\nPrecision-limit exemptions: {} triangles below theta in {} runs for which no point the method allows can be "
+                      "inserted as rounded to doubles (docs/CERTIFIER.md section 5c), not counted as violations.\n",
+                      rep.precision_exempt_triangles, rep.runs_with_precision_exempt);
   md += "\nHow the runs ended:";
   for (int s = 0; s < 6; ++s)
     if (rep.status_counts[s]) md += fmt::format(" {} {},", to_string(static_cast<RunStatus>(s)), rep.status_counts[s]);
@@ -210,6 +214,8 @@ nlohmann::json json_report(const AuditReport& rep) {
           {"run_status", statuses},
           {"exempt_triangles", rep.exempt_triangles},
           {"runs_with_exempt_triangles", rep.runs_with_exempt},
+          {"precision_exempt_triangles", rep.precision_exempt_triangles},
+          {"runs_with_precision_exempt_triangles", rep.runs_with_precision_exempt},
           {"skipped_inputs", rep.skipped_inputs},
           {"jobs", rep.jobs},
           {"repeat", rep.repeat},

@@ -115,6 +115,7 @@ struct AuditReport {
   std::string points_cache_dir;
   std::size_t status_counts[6] = {};          // by RunStatus
   std::size_t exempt_triangles = 0, runs_with_exempt = 0;  // the small-input-angle rule at work
+  std::size_t precision_exempt_triangles = 0, runs_with_precision_exempt = 0;  // the precision limit (CERTIFIER.md 5c)
   double seconds = 0;                          // whole audit
   double engine_seconds = 0;                   // the engine's own time (first runs, not shrinking)
   double comparison_seconds = 0, shrink_seconds = 0;
