@@ -16,6 +16,8 @@
 #include "lepp/fast.h"
 #include "lepp/gen_precision.h"
 #include "lepp/input.h"
+#include "lepp/io.h"
+#include "lepp/validate.h"
 #include "lepp/reference.h"
 #include "result_diff.h"
 
