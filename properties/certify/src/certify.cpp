@@ -705,14 +705,14 @@ class Certifier {
         report_.exempt_angle.push_back(exempt);
       }
       // The precision limit (section 5c), likewise from input and mesh alone.
-      const bool limited = exempt < 0 && opt_.exempt_precision_limited && precision_limited(precision_view(), t, opt_.precision_method);
+      const bool limited = exempt < 0 && opt_.exempt_precision_limited && precision_limited(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids);
       if (limited) report_.precision_exempt_triangles.push_back(static_cast<int>(t));
       auto it = listed.find(sorted(x));
       if (it != listed.end()) {
         const std::size_t listed_index = it->second;
         found[listed_index] = 1;
         if (opt_.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
-          if (limited || precision_limited(precision_view(), t, opt_.precision_method)) {
+          if (limited || precision_limited(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids)) {
             report_.unimprovable_accepted.push_back(opt_.unimprovable[listed_index]);
             continue;
           }

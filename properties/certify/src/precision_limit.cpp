@@ -6,6 +6,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -28,7 +29,7 @@ std::vector<double> roundings(const mpq_class& q) {
 
 class Search {
  public:
-  Search(const PrecisionView& v, Method method) : v_(v), method_(method) {}
+  Search(const PrecisionView& v, Method method, bool ties_by_ids) : v_(v), method_(method), by_ids_(ties_by_ids) {}
 
   // True iff every choice for triangle t, at every rounding, is not insertable.
   bool limited(std::size_t t) {
@@ -40,6 +41,7 @@ class Search {
  private:
   const PrecisionView& v_;
   Method method_;
+  bool by_ids_;  // equal lengths decided by vertex ids, as lepp's edge order (ALGORITHM.md section 3)
   std::set<int> seen_;  // half-edges taken as a triangle's longest edge
   bool too_big_ = false;
 
@@ -61,6 +63,7 @@ class Search {
       for (int j = 0; j < 3 && max; ++j) max = j == i || len_cmp(h, 3 * t + j) >= 0;
       if (max) out.push_back(h);
     }
+    if (by_ids_ && out.size() > 1) out = {id_longest(out)};
     return out;
   }
   // Every second-longest half-edge of t when l is its longest: the longer of the other two, ties kept.
@@ -69,7 +72,17 @@ class Search {
     const int c = len_cmp(a, b);
     if (c > 0) return {a};
     if (c < 0) return {b};
+    if (by_ids_) return {id_longest({a, b})};
     return {a, b};
+  }
+  // Among half-edges of equal length, the longest in lepp's edge order: the smaller
+  // smaller endpoint id, then the smaller larger one.
+  int id_longest(const std::vector<int>& hs) const {
+    auto key = [&](int h) { return std::make_pair(-std::min(from(h), to(h)), -std::max(from(h), to(h))); };
+    int best = hs[0];
+    for (int h : hs)
+      if (key(h) > key(best)) best = h;
+    return best;
   }
 
   // The Lepp from the triangle of h with h taken as its longest edge: false as
@@ -197,9 +210,9 @@ class Search {
 
 }  // namespace
 
-bool precision_limited(const PrecisionView& view, std::size_t t, Method method) {
+bool precision_limited(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids) {
   if (!view.tri_ok[t]) return false;
-  return Search(view, method).limited(t);
+  return Search(view, method, ties_by_ids).limited(t);
 }
 
 }  // namespace lepp::certify

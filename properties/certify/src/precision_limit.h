@@ -29,6 +29,8 @@ struct PrecisionView {
 // directed roundings of each coordinate of the exact point), not insertable in
 // the sense of ALGORITHM.md section 8b. False when the search is too large
 // (more than a few thousand Lepp states) or meets a bad edge: no exemption.
-bool precision_limited(const PrecisionView& view, std::size_t t, Method method);
+// ties_by_ids: equal lengths decided by vertex ids as lepp's edge order does
+// (Options::precision_ties_by_ids, for checking lepp's own meshes), else every tie.
+bool precision_limited(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
 
 }  // namespace lepp::certify

@@ -95,6 +95,11 @@ struct Options {
   // triangles listed in `unimprovable` as DoublePrecision are held to it either way.
   bool exempt_precision_limited = false;
   Method precision_method = Method::Centroid;
+  // Equal edge lengths decided by mesh vertex ids as lepp's edge order does (ALGORITHM.md
+  // section 3) instead of every resolution: not a certificate for another mesher (it reads
+  // numbering); it tells a triangle lepp leaves because of its tie rule from one no tie
+  // rule could refine (docs/CERTIFIER.md section 5c, "Finding").
+  bool precision_ties_by_ids = false;
   // Size bounds (docs/CERTIFIER.md section 7), as lepp refine's --max-area and
   // --region-areas (Triangle's -a X and -a): every triangle's area must be at most
   // max_area (> 0), and with region_area_bounds at most the bound (> 0) of the
