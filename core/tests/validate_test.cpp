@@ -55,11 +55,19 @@ TEST(Validate, DuplicateVerticesMergeWithWarning) {
   EXPECT_TRUE(mentions(warnings, "vertex 5 duplicates vertex 2")) << warnings.size();
 }
 
-TEST(Validate, ZeroLengthSegmentIsAnError) {
+// Dropped with a warning, as Triangle does (issue 20): both endpoints one vertex, or
+// one point once duplicates merge.
+TEST(Validate, ZeroLengthSegmentDroppedWithWarning) {
   Pslg p = square();
   p.vertices.push_back({1, 1});
   p.segments.push_back({2, 4});  // same point as vertex 3 once merged
-  EXPECT_NE(error_of(p).find("segment 5 has zero length"), std::string::npos) << error_of(p);
+  p.segments.push_back({1, 1});  // one vertex twice
+  std::vector<std::string> warnings;
+  Pslg v = validate(p, warnings);
+  EXPECT_EQ(v.segments.size(), 4u);
+  EXPECT_TRUE(mentions(warnings, "segment 5 has zero length (vertices 3 and 5 are the same point); dropped"));
+  EXPECT_TRUE(mentions(warnings, "segment 6 has zero length (both endpoints are vertex 2); dropped"));
+  EXPECT_EQ(v.segment_origin, (std::vector<int>{0, 1, 2, 3}));
 }
 
 TEST(Validate, RepeatedSegmentDroppedWithWarning) {

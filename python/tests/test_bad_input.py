@@ -47,7 +47,6 @@ def test_bad_file_through_certify(path):
     ([[0, 0], [1, 0], [0, 1]], [[0, 3]], "out of range"),
     ([[0, 0], [1, 0], [0, 1]], [[0, -1]], "out of range"),
     ([[0, 0], [2, 2], [2, 0], [0, 2]], [[0, 1], [2, 3]], "cross"),
-    ([[0, 0], [1, 0], [0, 1]], [[0, 0]], "zero length"),
     ([[0, 0, 0], [1, 0, 0], [0, 1, 0]], None, "shape"),
     ([[0, 0], [1, 0], [0, 1]], [[0.5, 1]], "integers"),
     ([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]], "shape"),
@@ -80,3 +79,9 @@ def test_duplicates_are_warnings_not_errors():
 def test_missing_file_is_input_error():
     with pytest.raises(lepp.InputError, match="no-such-file"):
         lepp.refine("no-such-file.poly")
+
+
+def test_zero_length_segment_is_dropped_not_an_error():
+    # As Triangle does (issue 20): the segment from a vertex to itself is dropped with a warning.
+    mesh = lepp.refine([[0, 0], [1, 0], [0, 1]], [[0, 1], [1, 2], [2, 0], [1, 1]])
+    assert mesh.outcome in ("converged", "unimprovable")
