@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "block_file.h"
+
 namespace lepp::detail {
 namespace {
 
@@ -112,6 +114,15 @@ MshLayout msh_layout(const Mesh& mesh, const MeshLabels& labels) {
     e.name = e.tag == unmarked_tag ? "unmarked" : fmt::format("marker_{}", e.tag);
   }
   return layout;
+}
+
+void write_physical_names(BlockFile& out, const MshLayout& layout) {
+  out.print("$PhysicalNames\n{}\n", layout.physical_groups());
+  for (const MshEntity& e : layout.curves)
+    if (e.physical) out.print("1 {} \"{}\"\n", e.physical, e.name);
+  for (const MshEntity& e : layout.surfaces)
+    if (e.physical) out.print("2 {} \"{}\"\n", e.physical, e.name);
+  out.print("$EndPhysicalNames\n");
 }
 
 }  // namespace lepp::detail

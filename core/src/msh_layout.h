@@ -33,4 +33,8 @@ struct MshLayout {
 // Throws std::invalid_argument when the labels' sizes do not match the mesh.
 MshLayout msh_layout(const Mesh& mesh, const MeshLabels& labels);
 
+class BlockFile;
+// The $PhysicalNames section, the same text in .msh 2.2 and 4.1 (ASCII and binary).
+void write_physical_names(BlockFile& out, const MshLayout& layout);
+
 }  // namespace lepp::detail

@@ -17,15 +17,6 @@ using detail::MshEntity;
 
 constexpr int kLine = 1, kTriangle = 2;  // Gmsh element types
 
-void physical_names(BlockFile& out, const detail::MshLayout& layout) {
-  out.print("$PhysicalNames\n{}\n", layout.physical_groups());
-  for (const MshEntity& e : layout.curves)
-    if (e.physical) out.print("1 {} \"{}\"\n", e.physical, e.name);
-  for (const MshEntity& e : layout.surfaces)
-    if (e.physical) out.print("2 {} \"{}\"\n", e.physical, e.name);
-  out.print("$EndPhysicalNames\n");
-}
-
 }  // namespace
 
 void write_msh2(const std::string& path, const Mesh& mesh, const MeshLabels& labels, bool binary) {
@@ -39,7 +30,7 @@ void write_msh2(const std::string& path, const Mesh& mesh, const MeshLabels& lab
     out.print("\n");
   }
   out.print("$EndMeshFormat\n");
-  physical_names(out, layout);
+  detail::write_physical_names(out, layout);
 
   out.print("$Nodes\n{}\n", n);
   for (std::size_t v = 0; v < n; ++v) {

@@ -67,12 +67,7 @@ void write_msh4(const std::string& path, const Mesh& mesh, const MeshLabels& lab
   }
   out.print("$EndMeshFormat\n");
 
-  out.print("$PhysicalNames\n{}\n", layout.physical_groups());
-  for (const MshEntity& e : layout.curves)
-    if (e.physical) out.print("1 {} \"{}\"\n", e.physical, e.name);
-  for (const MshEntity& e : layout.surfaces)
-    if (e.physical) out.print("2 {} \"{}\"\n", e.physical, e.name);
-  out.print("$EndPhysicalNames\n");
+  detail::write_physical_names(out, layout);
 
   out.print("$Entities\n");
   count(out, binary, 0);
