@@ -1,21 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp refine IN.poly -o PREFIX`: read, validate, refine, write, report.
-#include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "lepp/fast.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
-#include "lepp/mesh_formats.h"
-#include "lepp/mesh_labels.h"
+#include "lepp/mesh_output.h"
 #include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "lepp/trace_io.h"
@@ -40,7 +35,7 @@ struct RefineArgs {
   bool json = false;
   bool quiet = false;
   bool trace = false;
-  std::vector<std::string> formats;  // empty: triangle
+  std::vector<std::string> formats{"triangle"};  // --format replaces it
   bool binary = false;               // .msh in Gmsh's binary variant
   DomainOptions domain;
 };
@@ -50,28 +45,11 @@ std::string detail_where(const Pslg& p, std::size_t region) {
   return line > 0 ? p.source + ":" + std::to_string(line) : p.source;
 }
 
-// The formats asked for, each once, in the order given; empty when two of them
-// would write the same file (msg says why).
-std::vector<MeshFormat> output_formats(const RefineArgs& args, std::string& msg) {
-  std::vector<MeshFormat> formats;
-  for (const std::string& name : args.formats) {
-    const MeshFormat f = *parse_mesh_format(name);  // CLI11 checked the name
-    if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
-  }
-  if (formats.empty()) formats.push_back(MeshFormat::Triangle);
-  if (std::find(formats.begin(), formats.end(), MeshFormat::Msh2) != formats.end() &&
-      std::find(formats.begin(), formats.end(), MeshFormat::Msh4) != formats.end()) {
-    msg = fmt::format("--format msh2 and --format msh4 would both write {}.msh; ask for one per run", args.output);
-    return {};
-  }
-  return formats;
-}
-
 int run_refine(const RefineArgs& args) {
-  std::string format_error;
-  const std::vector<MeshFormat> formats = output_formats(args, format_error);
-  if (formats.empty()) {
-    std::fprintf(stderr, "lepp refine: %s\n", format_error.c_str());
+  const MeshFormatChoice output = choose_mesh_formats(args.formats);  // CLI11 checked the names
+  if (output.same_file) {
+    std::fprintf(stderr, "lepp refine: --format msh2 and --format msh4 would both write %s.msh; ask for one per run\n",
+                 args.output.c_str());
     return 2;
   }
   Pslg input;
@@ -118,26 +96,12 @@ int run_refine(const RefineArgs& args) {
     result = reference::refine(input, options);
   }
   if (options.on_progress) std::fprintf(stderr, "\r\033[K");
-  // Before the renumbering below: the labels read markers by validated segment.
-  const MeshLabels labels = mesh_labels(result.mesh, input);
-  if (args.domain.split_crossings) {
-    // Both pieces of a split segment keep its identity: the marker of each
-    // constrained edge is the file's segment number (docs/FORMATS.md).
-    for (ConstrainedEdge& e : result.mesh.constrained_edges)
-      if (e.segment >= 0 && static_cast<std::size_t>(e.segment) < input.segment_origin.size())
-        e.segment = input.segment_origin[static_cast<std::size_t>(e.segment)];
-  }
+  const MeshLabels labels = label_refined_mesh(result.mesh, input, args.domain);
   try {
     MeshWriteOptions write_options;
     write_options.binary = args.binary;
-    for (MeshFormat f : formats) write_mesh(args.output, result.mesh, f, labels, write_options);
-    write_unimprovable(args.output, result.unimprovable);
-    if (args.trace) {
-      std::vector<Point> points;
-      points.reserve(result.trace.size());
-      for (const TraceStep& step : result.trace) points.push_back(step.point);
-      write_trace(args.output + ".trace", points);
-    }
+    write_refined_mesh(args.output, result.mesh, labels, result.unimprovable, output.formats, write_options);
+    if (args.trace) write_trace(args.output + ".trace", trace_points(result.trace));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lepp refine: %s\n", e.what());
     return 1;

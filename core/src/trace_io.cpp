@@ -29,4 +29,11 @@ void write_trace(const std::string& path, const std::vector<Point>& points) {
   if (std::ferror(f.get())) throw std::runtime_error("cannot write " + path);
 }
 
+std::vector<Point> trace_points(const std::vector<TraceStep>& steps) {
+  std::vector<Point> points;
+  points.reserve(steps.size());
+  for (const TraceStep& step : steps) points.push_back(step.point);
+  return points;
+}
+
 }  // namespace lepp

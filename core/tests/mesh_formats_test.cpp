@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The labels the VTU and Gmsh writers take (markers and regions), and the
 // writers' contracts that need no outside reader: format names, errors, and
-// the .vtu's appended-data offsets. The files themselves are read back by
-// meshio and Gmsh in tests/formats/mesh_formats.py.
+// the .vtu's appended-data offsets; what lepp refine and Mesh.write choose and
+// write (lepp/mesh_output.h). The files themselves are read back by meshio and
+// Gmsh in tests/formats/mesh_formats.py.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -17,6 +19,7 @@
 
 #include "lepp/mesh_formats.h"
 #include "lepp/mesh_labels.h"
+#include "lepp/mesh_output.h"
 #include "lepp/stats.h"
 
 namespace lepp {
@@ -73,6 +76,55 @@ TEST(MeshFormats, NamesRoundTrip) {
     EXPECT_EQ(parse_mesh_format(to_string(f)), f);
   EXPECT_FALSE(parse_mesh_format("msh3").has_value());
   EXPECT_STREQ(file_extension(MeshFormat::Msh4), ".msh");
+}
+
+TEST(MeshOutput, FormatsOnceInTheOrderFirstNamed) {
+  const MeshFormatChoice c = choose_mesh_formats({"vtu", "triangle", "vtu", "msh4"});
+  EXPECT_EQ(c.formats, (std::vector<MeshFormat>{MeshFormat::Vtu, MeshFormat::Triangle, MeshFormat::Msh4}));
+  EXPECT_FALSE(c.unknown);
+  EXPECT_FALSE(c.same_file);
+  EXPECT_TRUE(choose_mesh_formats({}).formats.empty());
+}
+
+TEST(MeshOutput, UnknownNameAndBothMshVersionsAreRefused) {
+  const MeshFormatChoice unknown = choose_mesh_formats({"vtu", "stl", "msh3"});
+  EXPECT_EQ(unknown.unknown, "stl");  // the first unknown name
+  EXPECT_TRUE(unknown.formats.empty());
+  EXPECT_EQ(choose_mesh_formats({""}).unknown, "");  // an empty name is no format either
+  EXPECT_TRUE(choose_mesh_formats({"msh2", "vtu", "msh4"}).same_file);
+  EXPECT_FALSE(choose_mesh_formats({"msh2", "msh2"}).same_file);
+}
+
+// With split crossings both pieces of a split segment are numbered as the
+// file's segment; the markers are read by validated segment, before that.
+TEST(MeshOutput, SplitCrossingsNumberEdgesByTheFilesSegment) {
+  Pslg input = two_squares_input();
+  input.segment_origin = {3, 5};
+  Mesh split = two_squares();
+  const MeshLabels labels = label_refined_mesh(split, input, DomainOptions{false, true});
+  EXPECT_EQ(labels.edge_markers, (std::vector<int>{7, 0}));
+  EXPECT_EQ(split.constrained_edges[0].segment, 3);
+  EXPECT_EQ(split.constrained_edges[1].segment, 5);
+  Mesh kept = two_squares();
+  label_refined_mesh(kept, input, DomainOptions{});
+  EXPECT_EQ(kept.constrained_edges[0].segment, 0);
+  EXPECT_EQ(kept.constrained_edges[1].segment, 1);
+}
+
+TEST(MeshOutput, WritesEachFormatAndTheUnimprovableList) {
+  // Per process: other checkouts may run the same tests at the same time.
+  const std::string prefix =
+      (std::filesystem::temp_directory_path() / ("lepp_mesh_output_test_" + std::to_string(::getpid()))).string();
+  UnimprovableTriangle u;
+  u.triangle = {0, 1, 4};
+  write_refined_mesh(prefix, two_squares(), {}, {u}, {MeshFormat::Vtu, MeshFormat::Msh2});
+  for (const char* ext : {".vtu", ".msh", ".unimprovable"}) {
+    EXPECT_TRUE(std::filesystem::exists(prefix + ext)) << ext;
+  }
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".node"));
+  write_refined_mesh(prefix, two_squares(), {}, {}, {});  // no list: an old one is removed
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".unimprovable"));
+  for (const char* ext : {".vtu", ".msh"}) std::filesystem::remove(prefix + ext);
 }
 
 TEST(MeshFormats, LabelsOfTheWrongSizeAreRejected) {

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading inputs as `lepp refine` does, validating them with the domain
 // options, and writing meshes in every format lepp refine --format writes.
-#include <algorithm>
-#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -14,7 +12,7 @@
 #include "bindings.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
-#include "lepp/mesh_formats.h"
+#include "lepp/mesh_output.h"
 #include "lepp/validate.h"
 
 namespace lepp::python {
@@ -46,14 +44,10 @@ void bind_io(py::module_& m) {
       "write_mesh",
       [](const std::string& prefix, const py::dict& mesh, const std::vector<std::string>& formats, bool binary,
          const py::list& unimprovable) {
-        std::vector<MeshFormat> fs;
-        for (const std::string& name : formats) {
-          const std::optional<MeshFormat> f = parse_mesh_format(name);
-          if (!f) throw std::invalid_argument("format: '" + name + "' is none of triangle, vtu, msh2, msh4");
-          if (std::find(fs.begin(), fs.end(), *f) == fs.end()) fs.push_back(*f);
-        }
-        if (std::find(fs.begin(), fs.end(), MeshFormat::Msh2) != fs.end() &&
-            std::find(fs.begin(), fs.end(), MeshFormat::Msh4) != fs.end())
+        const MeshFormatChoice choice = choose_mesh_formats(formats);
+        if (choice.unknown)
+          throw std::invalid_argument("format: '" + *choice.unknown + "' is none of triangle, vtu, msh2, msh4");
+        if (choice.same_file)
           throw std::invalid_argument("format: msh2 and msh4 would both write " + prefix + ".msh; ask for one per call");
         Mesh m = mesh_from_dict(mesh);
         const MeshLabels labels = labels_from_dict(mesh, m);
@@ -62,11 +56,10 @@ void bind_io(py::module_& m) {
         options.binary = binary;
         py::gil_scoped_release release;
         try {
-          for (MeshFormat f : fs) write_mesh(prefix, m, f, labels, options);
+          write_refined_mesh(prefix, m, labels, bad, choice.formats, options);
         } catch (const std::system_error& e) {
           throw InputError(prefix, 0, std::string("cannot write mesh: ") + e.what());
         }
-        write_unimprovable(prefix, bad);
       },
       py::arg("prefix"), py::arg("mesh"), py::arg("formats"), py::arg("binary") = false,
       py::arg("unimprovable") = py::list(),

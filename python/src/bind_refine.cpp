@@ -14,7 +14,7 @@
 #include "lepp/fast.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
-#include "lepp/mesh_labels.h"
+#include "lepp/mesh_output.h"
 #include "lepp/reference.h"
 #include "lepp/stats.h"
 
@@ -69,9 +69,10 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
   RefineResult result;
   MeshStats stats;
   MeshLabels labels;
+  const DomainOptions domain{call.convex_hull, call.split_crossings};
   {
     py::gil_scoped_release release;
-    input = validate(raw, DomainOptions{call.convex_hull, call.split_crossings}, warnings);
+    input = validate(raw, domain, warnings);
     if (call.engine == "fast") {
       if (!fast::available()) throw std::runtime_error("the fast engine is not implemented yet; use engine='reference'");
       result = fast::refine(input, options);
@@ -79,18 +80,14 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
       result = reference::refine(input, options);
     }
     stats = mesh_stats(result.mesh, input);
-    labels = mesh_labels(result.mesh, input);  // markers and regions, by validated segment
+    // Markers and regions, and the segment ids as lepp refine writes them.
+    labels = label_refined_mesh(result.mesh, input, domain);
   }
   py::dict out;
-  // Segment ids as lepp refine writes them: with split crossings the file's
-  // segment number (both pieces keep their segment's).
   std::vector<int> edges, edge_segments;
   for (const ConstrainedEdge& e : result.mesh.constrained_edges) {
     edges.insert(edges.end(), {e.a, e.b});
-    int segment = e.segment;
-    if (call.split_crossings && segment >= 0 && static_cast<std::size_t>(segment) < input.segment_origin.size())
-      segment = input.segment_origin[static_cast<std::size_t>(segment)];
-    edge_segments.push_back(segment);
+    edge_segments.push_back(e.segment);
   }
   out["edges"] = int_array(edges, 2);
   out["edge_segments"] = int_array(edge_segments);

@@ -2,8 +2,8 @@
 // The mesh file formats lepp writes: Triangle's .node/.ele/.poly, VTK's XML
 // .vtu (for ParaView, with per-triangle quality) and Gmsh's .msh 2.2 and 4.1
 // (for FEM codes, with physical groups). `lepp refine --format` and Python's
-// Mesh.write call these. docs/FORMATS.md, "Other output formats", says what
-// each file holds.
+// Mesh.write call these through lepp/mesh_output.h. docs/FORMATS.md, "Other
+// output formats", says what each file holds.
 #pragma once
 #include <optional>
 #include <string>

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lepp/pslg.h"
+#include "lepp/refine.h"
 
 namespace lepp {
 
@@ -14,5 +15,7 @@ namespace lepp {
 std::vector<Point> read_trace(const std::string& path);
 // Writes one `x y` line per point with %.17g (the doubles round-trip exactly).
 void write_trace(const std::string& path, const std::vector<Point>& points);
+// The inserted points of an engine's trace (RefineResult::trace), in order: what PREFIX.trace lists.
+std::vector<Point> trace_points(const std::vector<TraceStep>& steps);
 
 }  // namespace lepp
