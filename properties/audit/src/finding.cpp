@@ -183,7 +183,7 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
   if (result.diagnosis) {
     md += diagnosis_markdown(*result.diagnosis);
     try {
-      write_text(d / "step.svg", diagnosis_svg(*result.diagnosis, fmt::format("{} step {}", row_key(row), result.diagnosis->step)));
+      write_text(d / "step.svg", diagnosis_svg(*result.diagnosis, fmt::format("{} step {}", row_key(row), result.diagnosis->step())));
     } catch (const std::exception& e) {
       md += fmt::format("\n(step.svg not drawn: {})\n", e.what());
     }

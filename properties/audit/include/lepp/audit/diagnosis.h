@@ -7,11 +7,9 @@
 // Euclidean distances, whether one consistent variant explains every step,
 // whether the final mesh says the intermediate meshes differ).
 #pragma once
-#include <array>
 #include <cstddef>
-#include <optional>
 #include <string>
-#include <vector>
+#include <variant>
 
 #include "lepp/audit/conformance.h"
 #include "lepp/mesh.h"
@@ -19,31 +17,22 @@
 namespace lepp::audit {
 
 struct StepDiagnosis {
-  bool theorem2 = false;           // false: a conformance failure; true: Theorem 2 at a step
-  std::size_t step = 0;            // 1-based
+  // The failing step as the conformance report has it: a conformance failure
+  // (the nearest of the paper's choices, the named deviation and where it
+  // matched, the paper's choices there, the consistent variant), or Theorem 2
+  // failing on the terminal pair of a replayed step (the pair, the apex over
+  // 120 degrees). Each holds the replay's mesh just before the step.
+  std::variant<ConformanceFailure, Theorem2StepFailure> failure;
   std::size_t steps = 0;           // in the trace
-  Point point;                     // the program's point at that step
-  Mesh mesh;                       // the replay's mesh just before the step
   double theta = 30;
   bool area_centroid = false;      // the declared reading
-  std::string reason;              // conformance: why the point is no choice
-  // Conformance: the nearest of the paper's choices (candidates_total in all),
-  // the named deviation and where it matched, the paper's choices there.
-  std::vector<ConformanceCandidate> candidates;
-  std::size_t candidates_total = 0;
-  std::string deviation, deviation_what, deviation_definition;
-  std::optional<ConformanceCandidate> deviation_at;
-  std::vector<ConformanceCandidate> deviation_paper;
-  bool consistent_variant = false;
-  std::size_t variant_steps = 0;
   // The final mesh fails the certifier's Delaunay check: the program's
   // intermediate meshes probably differ from the replay's.
   bool final_not_delaunay = false;
-  // Theorem 2: the terminal pair and the apex over 120 degrees.
-  std::array<int, 2> terminal_edge{{-1, -1}};
-  Tri t1{{-1, -1, -1}}, t2{{-1, -1, -1}};
-  int apex = -1;
-  double angle_deg = 0;
+
+  std::size_t step() const;        // 1-based
+  const Point& point() const;      // the program's point at that step
+  const Mesh& mesh() const;        // the replay's mesh just before the step
 };
 
 StepDiagnosis conformance_diagnosis(const ConformanceReport& report, double theta, bool final_not_delaunay);
