@@ -117,6 +117,8 @@ bool covers(const std::string& cell, const std::string& value) {
   }
 }
 
+Method method_of(const std::string& method) { return method == "centroid" ? Method::Centroid : Method::Midpoint; }
+
 double theta_of(const std::string& method, const std::string& band) {
   const bool centroid = method == "centroid";
   if (band == "below") return centroid ? 25 : 20;
@@ -153,7 +155,7 @@ class Fixture {
     auto it = cache_.find(key);
     if (it != cache_.end()) return it->second;
     EngineRequest req;
-    req.method = method == "centroid" ? Method::Centroid : Method::Midpoint;
+    req.method = method_of(method);
     req.theta = theta;
     req.timeout_seconds = 60;
     EngineRun run = engine_(input_of(input), req);
@@ -210,6 +212,25 @@ std::string out_dir(const std::string& name) {
   return (fs::temp_directory_path() / fmt::format("lepp-verdict-table-{}-{}", name, getpid())).string();
 }
 
+std::string where_of(const Case& c, double theta) {
+  return fmt::format("{}, {} at theta {} ({}), input {}", c.outcome, c.method, theta, c.band, c.input);
+}
+
+// Each combination of the table's columns with the row that covers it; a
+// combination no row covers fails the test and is skipped.
+template <class Visit>
+void for_each_case(Visit&& visit) {
+  for (const auto& o : kOutcomes)
+    for (const auto& m : kMethods)
+      for (const auto& t : kThetas)
+        for (const auto& in : kInputs) {
+          const Case c{o, m, t, in};
+          const TableRow* row = row_for(c);
+          EXPECT_NE(row, nullptr) << "no row covers " << o << ", " << m << ", " << t << ", " << in;
+          if (row) visit(c, *row);
+        }
+}
+
 }  // namespace
 
 TEST(VerdictTable, DocumentSaysTheSame) {
@@ -221,35 +242,28 @@ TEST(VerdictTable, DocumentSaysTheSame) {
 }
 
 TEST(VerdictTable, EveryCombinationIsCoveredOnce) {
-  for (const auto& o : kOutcomes)
-    for (const auto& m : kMethods)
-      for (const auto& t : kThetas)
-        for (const auto& in : kInputs) EXPECT_NE(row_for({o, m, t, in}), nullptr) << o << ", " << m << ", " << t << ", " << in;
+  std::size_t covered = 0;
+  for_each_case([&](const Case&, const TableRow&) { ++covered; });
+  EXPECT_EQ(covered, kOutcomes.size() * kMethods.size() * kThetas.size() * kInputs.size());
 }
 
 // Every combination through check_run: each row's verdict as the table says.
 TEST(VerdictTable, RowLogic) {
   Fixture fx;
-  for (const auto& o : kOutcomes)
-    for (const auto& m : kMethods)
-      for (const auto& t : kThetas)
-        for (const auto& in : kInputs) {
-          const Case c{o, m, t, in};
-          const TableRow* row = row_for(c);
-          ASSERT_NE(row, nullptr);
-          const Pslg pslg = input_of(in);
-          EngineRequest req;
-          req.method = m == "centroid" ? Method::Centroid : Method::Midpoint;
-          req.theta = theta_of(m, t);
-          const EngineRun run = fx.make(c, pslg, req.theta);
-          const CaseResult result = check_run(pslg, req, run, CheckOptions{});
-          const std::string where = fmt::format("{}, {} at theta {} ({}), input {}", o, m, req.theta, t, in);
-          for (std::size_t r = 0; r < kRows; ++r)
-            EXPECT_EQ(to_string(result.rows[r].verdict), row->cells[4 + r])
-                << where << ": row " << row_key(kAllRows[r]) << ": " << result.rows[r].detail;
-          // The small-angle input's converged meshes hold min-angle through the exemption, not by luck.
-          if (o == "converged" && in == "one below 60°") EXPECT_GT(result.exempt_triangles, 0u) << where;
-        }
+  for_each_case([&](const Case& c, const TableRow& row) {
+    const Pslg pslg = input_of(c.input);
+    EngineRequest req;
+    req.method = method_of(c.method);
+    req.theta = theta_of(c.method, c.band);
+    const EngineRun run = fx.make(c, pslg, req.theta);
+    const CaseResult result = check_run(pslg, req, run, CheckOptions{});
+    const std::string where = where_of(c, req.theta);
+    for (std::size_t r = 0; r < kRows; ++r)
+      EXPECT_EQ(to_string(result.rows[r].verdict), row.cells[4 + r])
+          << where << ": row " << row_key(kAllRows[r]) << ": " << result.rows[r].detail;
+    // The small-angle input's converged meshes hold min-angle through the exemption, not by luck.
+    if (c.outcome == "converged" && c.input == "one below 60°") EXPECT_GT(result.exempt_triangles, 0u) << where;
+  });
 }
 
 // Every combination as a one-run audit: the row counts, the saved findings and the exit status.
@@ -264,40 +278,34 @@ TEST(VerdictTable, AuditAndExitStatus) {
     files[in] = f;
   }
   int n = 0;
-  for (const auto& o : kOutcomes)
-    for (const auto& m : kMethods)
-      for (const auto& t : kThetas)
-        for (const auto& in : kInputs) {
-          const Case c{o, m, t, in};
-          const TableRow* row = row_for(c);
-          ASSERT_NE(row, nullptr);
-          const double theta = theta_of(m, t);
-          const EngineRun canned = fx.make(c, input_of(in), theta);
-          AuditOptions opt;
-          opt.method = m == "centroid" ? Method::Centroid : Method::Midpoint;
-          opt.thetas = {theta};
-          opt.cases = 1;
-          opt.inputs.dirs = {files[in]};
-          opt.shrink = false;
-          opt.out_dir = out_dir(std::to_string(n++));
-          const AuditReport rep = run_audit([&](const Pslg&, const EngineRequest&) { return canned; }, opt);
-          const std::string where = fmt::format("{}, {} at theta {} ({}), input {}", o, m, theta, t, in);
-          ASSERT_EQ(rep.cases, 1u) << where;
-          for (std::size_t r = 0; r < kRows; ++r) {
-            const RowSummary& s = rep.rows[r];
-            const std::string& want = row->cells[4 + r];
-            EXPECT_EQ(s.failed, want == "failed" ? 1u : 0u) << where << ": " << row_key(s.row);
-            EXPECT_EQ(s.findings, want == "finding" ? 1u : 0u) << where << ": " << row_key(s.row);
-            EXPECT_EQ(s.held, want == "held" ? 1u : 0u) << where << ": " << row_key(s.row);
-            // Every failure and every finding is saved (shrinking off: the input as found).
-            if (want == "failed" || want == "finding") {
-              EXPECT_EQ(s.counterexamples.size(), 1u) << where << ": " << row_key(s.row);
-              if (!s.counterexamples.empty()) EXPECT_TRUE(fs::exists(s.counterexamples[0].dir + "/input.poly")) << where;
-            }
-          }
-          EXPECT_EQ(std::to_string(exit_status(rep)), row->cells[9]) << where;
-          fs::remove_all(opt.out_dir);
-        }
+  for_each_case([&](const Case& c, const TableRow& row) {
+    const double theta = theta_of(c.method, c.band);
+    const EngineRun canned = fx.make(c, input_of(c.input), theta);
+    AuditOptions opt;
+    opt.method = method_of(c.method);
+    opt.thetas = {theta};
+    opt.cases = 1;
+    opt.inputs.dirs = {files[c.input]};
+    opt.shrink = false;
+    opt.out_dir = out_dir(std::to_string(n++));
+    const AuditReport rep = run_audit([&](const Pslg&, const EngineRequest&) { return canned; }, opt);
+    const std::string where = where_of(c, theta);
+    ASSERT_EQ(rep.cases, 1u) << where;
+    for (std::size_t r = 0; r < kRows; ++r) {
+      const RowSummary& s = rep.rows[r];
+      const std::string& want = row.cells[4 + r];
+      EXPECT_EQ(s.failed, want == "failed" ? 1u : 0u) << where << ": " << row_key(s.row);
+      EXPECT_EQ(s.findings, want == "finding" ? 1u : 0u) << where << ": " << row_key(s.row);
+      EXPECT_EQ(s.held, want == "held" ? 1u : 0u) << where << ": " << row_key(s.row);
+      // Every failure and every finding is saved (shrinking off: the input as found).
+      if (want == "failed" || want == "finding") {
+        EXPECT_EQ(s.counterexamples.size(), 1u) << where << ": " << row_key(s.row);
+        if (!s.counterexamples.empty()) EXPECT_TRUE(fs::exists(s.counterexamples[0].dir + "/input.poly")) << where;
+      }
+    }
+    EXPECT_EQ(std::to_string(exit_status(rep)), row.cells[9]) << where;
+    fs::remove_all(opt.out_dir);
+  });
   fs::remove_all(dir);
 }
 
