@@ -25,31 +25,15 @@
 #include "lepp/audit/report.h"
 #include "lepp/audit/signature.h"
 #include "lepp/gen.h"
+#include "audit_test_support.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;
 using namespace lepp::audit;
+using lepp::audit::test::slurp;
+using lepp::audit::test::small_audit;
 
 namespace {
-
-AuditOptions small(const std::string& out) {
-  AuditOptions o;
-  o.thetas = {25};
-  o.cases = 12;
-  o.inputs.paper = o.inputs.corpus = false;
-  o.inputs.max_size = 20;
-  o.inputs.seed = 7;
-  o.timeout_seconds = 20;
-  o.out_dir = (fs::temp_directory_path() / (out + "-" + std::to_string(getpid()))).string();
-  return o;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The reason name a certificate detail starts with ("not-locally-delaunay: ...").
 std::string reason_of(const std::string& detail) { return detail.substr(0, detail.find(':')); }
@@ -96,7 +80,7 @@ Engine two_bugs() {
 }
 
 TEST(AuditFindings, ShrinkingKeepsTheViolationKind) {
-  AuditOptions o = small("lepp-audit-signature");
+  AuditOptions o = small_audit("lepp-audit-signature");
   o.max_findings_per_row = 12;
   o.shrink_max_runs = 120;
   AuditReport r = run_audit(two_bugs(), o);
@@ -189,7 +173,7 @@ TEST(AuditFindings, TerminationCandidatesGetATimeoutFromTheProgramsOwnTime) {
     }
     return fast(p, r);
   };
-  AuditOptions o = small("lepp-audit-termination");
+  AuditOptions o = small_audit("lepp-audit-termination");
   o.thetas = {20, 30};
   o.timeout_seconds = 10;
   o.max_findings_per_row = 1;
@@ -224,7 +208,7 @@ Engine seeded() {
 }
 
 TEST(AuditFindings, ANonDeterministicProgramIsSaidToBe) {
-  AuditOptions o = small("lepp-audit-flaky");
+  AuditOptions o = small_audit("lepp-audit-flaky");
   o.cases = 3;
   o.shrink = false;
   unsetenv("LEPP_TEST_ENGINE_SEED");
@@ -254,7 +238,7 @@ TEST(AuditFindings, ANonDeterministicProgramIsSaidToBe) {
 
 // The same report, counterexamples and all, with one thread and with four.
 TEST(AuditFindings, ParallelAuditGivesTheSameReport) {
-  AuditOptions o = small("lepp-audit-jobs");
+  AuditOptions o = small_audit("lepp-audit-jobs");
   o.max_findings_per_row = 2;
   o.shrink_max_runs = 60;
   o.comparisons.push_back({"lepp fast", fast_engine(), ""});
@@ -281,7 +265,7 @@ TEST(AuditFindings, ParallelAuditGivesTheSameReport) {
 }
 
 TEST(AuditFindings, ComparisonPointsComeFromTheCacheTheSecondTime) {
-  AuditOptions o = small("lepp-audit-cache");
+  AuditOptions o = small_audit("lepp-audit-cache");
   o.points_cache_dir = o.out_dir + "-cache";
   fs::remove_all(o.points_cache_dir);
   std::atomic<int> runs{0};

@@ -14,28 +14,17 @@
 #include "lepp/audit/builtin_engines.h"
 #include "lepp/audit/finding.h"
 #include "lepp/audit/report.h"
+#include "audit_test_support.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;
 using namespace lepp::audit;
+using lepp::audit::test::small_audit;
 
 namespace {
 
-AuditOptions small(const std::string& out) {
-  AuditOptions o;
-  o.thetas = {25};
-  o.cases = 12;
-  o.inputs.paper = o.inputs.corpus = false;
-  o.inputs.max_size = 20;
-  o.inputs.seed = 7;
-  o.timeout_seconds = 20;
-  // Per process: other checkouts may run the same tests at the same time.
-  o.out_dir = (fs::temp_directory_path() / (out + "-" + std::to_string(getpid()))).string();
-  return o;
-}
-
 TEST(Audit, FastEngineAuditsClean) {
-  AuditOptions o = small("lepp-audit-test-fast");
+  AuditOptions o = small_audit("lepp-audit-test-fast");
   o.comparisons.push_back({"lepp reference", reference_engine()});
   AuditReport r = run_audit(fast_engine(), o);
   EXPECT_EQ(r.cases, 12u);
@@ -47,7 +36,7 @@ TEST(Audit, FastEngineAuditsClean) {
 }
 
 TEST(Audit, ReferenceEngineAuditsCleanMidpoint) {
-  AuditOptions o = small("lepp-audit-test-ref");
+  AuditOptions o = small_audit("lepp-audit-test-ref");
   o.method = Method::Midpoint;
   o.thetas = {20};
   o.cases = 6;
@@ -63,7 +52,7 @@ TEST(Audit, BrokenEngineIsCaughtAndShrunk) {
     if (run.mesh.triangles.size() > 1) run.mesh.triangles.pop_back();
     return run;
   };
-  AuditOptions o = small("lepp-audit-test-broken");
+  AuditOptions o = small_audit("lepp-audit-test-broken");
   o.cases = 4;
   o.max_findings_per_row = 1;
   o.shrink_max_runs = 60;

@@ -15,10 +15,12 @@
 #include "lepp/audit/peer_engines.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
+#include "audit_test_support.h"
 #include "triangle_wasm.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;
+using lepp::audit::test::slurp;
 
 namespace {
 
@@ -26,13 +28,6 @@ const std::string kRoot = LEPP_SOURCE_DIR;
 
 std::string fmt_name(const char* name, double theta, const char* how) {
   return std::string(name) + "-" + std::to_string(static_cast<int>(theta)) + "-" + how;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 TEST(TriangleServer, SameOutputAsOneProcessPerCase) {
