@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "bench_main.h"
 #include "cgal_mesher.h"
 #include "lepp/fast.h"
 #include "lepp/reference.h"
@@ -28,21 +29,12 @@ struct Outcome {
 };
 using Engine = std::function<Outcome(const Problem&)>;
 
-Outcome run_fast(const Problem& p) {
-  RefineOptions o;
-  o.min_angle_deg = p.theta;
-  o.max_area = p.max_area;
-  RefineResult r = fast::refine(p.pslg, o);
+Outcome outcome_of(const RefineResult& r) {
   return {r.steiner_points, r.mesh.triangles.size(), r.mesh.vertices.size(), r.outcome == lepp::Outcome::Converged};
 }
 
-Outcome run_reference(const Problem& p) {
-  RefineOptions o;
-  o.min_angle_deg = p.theta;
-  o.max_area = p.max_area;
-  RefineResult r = reference::refine(p.pslg, o);
-  return {r.steiner_points, r.mesh.triangles.size(), r.mesh.vertices.size(), r.outcome == lepp::Outcome::Converged};
-}
+Outcome run_fast(const Problem& p) { return outcome_of(fast::refine(p.pslg, refine_options(p))); }
+Outcome run_reference(const Problem& p) { return outcome_of(reference::refine(p.pslg, refine_options(p))); }
 
 // CGAL's mesher with B = sin^2(theta) and, for a size-bounded problem, the
 // longest-edge bound that gives about the fast engine's vertex count:
@@ -134,11 +126,4 @@ void register_all() {
 }  // namespace
 }  // namespace lepp::bench
 
-int main(int argc, char** argv) {
-  lepp::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return lepp::bench::bench_main(argc, argv, lepp::bench::register_all); }

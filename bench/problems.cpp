@@ -34,6 +34,13 @@ Pslg validated(const Pslg& p) {
 
 }  // namespace
 
+RefineOptions refine_options(const Problem& p) {
+  RefineOptions o;
+  o.min_angle_deg = p.theta;
+  o.max_area = p.max_area;
+  return o;
+}
+
 std::vector<Problem> paper_problems(const std::string& corpus_dir, double theta) {
   std::vector<Problem> out;
   for (const char* name : {"A", "square400", "circles240", "rect162"}) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lepp/pslg.h"
+#include "lepp/refine.h"
 
 namespace lepp::bench {
 
@@ -14,6 +15,9 @@ struct Problem {
   double theta = 30;
   double max_area = 0;  // 0: none
 };
+
+// The options that refine a problem: its theta and its size bound.
+RefineOptions refine_options(const Problem& p);
 
 // The paper's four problems (corpus/paper) at theta.
 std::vector<Problem> paper_problems(const std::string& corpus_dir, double theta);

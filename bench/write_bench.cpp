@@ -13,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_main.h"
 #include "lepp/fast.h"
 #include "lepp/mesh_formats.h"
 #include "lepp/mesh_labels.h"
@@ -31,11 +32,8 @@ Subject& subject() {
   static Subject s = [] {
     const double triangles = std::getenv("LEPP_BENCH_HUGE") ? 1e7 : 1e6;
     Problem p = square_with_size_bound(triangles);
-    RefineOptions options;
-    options.min_angle_deg = p.theta;
-    options.max_area = p.max_area;
     Subject out;
-    out.mesh = fast::refine(p.pslg, options).mesh;
+    out.mesh = fast::refine(p.pslg, refine_options(p)).mesh;
     out.labels = mesh_labels(out.mesh, p.pslg);
     const char* dir = std::getenv("LEPP_BENCH_DIR");
     out.prefix = (std::filesystem::path(dir ? dir : std::filesystem::temp_directory_path().string()) /
@@ -102,11 +100,6 @@ void register_all() {
 }  // namespace lepp::bench
 
 int main(int argc, char** argv) {
-  lepp::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  lepp::bench::subject();  // the mesh is made before any clock starts
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  // The mesh is made before any clock starts.
+  return lepp::bench::bench_main(argc, argv, lepp::bench::register_all, [] { lepp::bench::subject(); });
 }
