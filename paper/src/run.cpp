@@ -3,6 +3,12 @@
 
 namespace lepp::paper {
 
+Run keyed_run(const std::string& problem, const std::string& reading, const std::string& method, double theta) {
+  Run r;
+  r.problem = problem, r.reading = reading, r.method = method, r.theta = theta;
+  return r;
+}
+
 nlohmann::json to_json(const Run& r) {
   return {{"problem", r.problem},
           {"reading", r.reading},

@@ -107,11 +107,7 @@ Run Runner::triangle_run(const std::string& problem, const std::string& reading,
 bool Runner::triangle_available() const { return others::triangle_available(options_.root); }
 
 Run Runner::start(const std::string& problem, const std::string& reading, const std::string& method, double theta) const {
-  Run r;
-  r.problem = problem;
-  r.reading = reading;
-  r.method = method;
-  r.theta = theta;
+  Run r = keyed_run(problem, reading, method, theta);
   r.mesh_prefix = fmt::format("{}/meshes/{}-{}-{}", options_.work, reading.empty() ? problem : reading, method, theta_tag(theta));
   return r;
 }

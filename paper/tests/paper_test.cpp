@@ -15,11 +15,7 @@ namespace {
 // (Inside a TEST body, Run is testing::Test::Run: runs are paper::Run there.)
 Run finished_run(const std::string& problem, const std::string& method, double theta, std::int64_t steiner,
                  const std::string& reading = "") {
-  Run r;
-  r.problem = problem;
-  r.reading = reading;
-  r.method = method;
-  r.theta = theta;
+  Run r = keyed_run(problem, reading, method, theta);
   r.steiner = steiner;
   r.finished = true;
   r.outcome = "converged";

@@ -32,6 +32,9 @@ struct Run {
   std::string mesh_prefix;
 };
 
+// A run with its keys set (what Results::find looks for, order fifo), nothing measured yet.
+Run keyed_run(const std::string& problem, const std::string& reading, const std::string& method, double theta);
+
 // One entry of results.json's "runs" (paper/plots.py reads these keys).
 nlohmann::json to_json(const Run& r);
 
