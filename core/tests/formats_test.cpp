@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <utility>
 
 #include <unistd.h>
 
@@ -193,74 +195,73 @@ void copy_corpus(const std::string& corpus_name, const std::string& to) {
   std::filesystem::copy_file(kFormats + corpus_name, to, std::filesystem::copy_options::overwrite_existing);
 }
 
+// The error reading `path` as lepp refine reads it stops with; the test fails
+// when it reads.
+InputError read_error(const std::string& path) {
+  std::vector<std::string> warnings;
+  try {
+    read_input(path, warnings);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << path << ": accepted";
+  return InputError(path, 0, "accepted");
+}
+
+// The bare prefix `x` of the scratch directory, read as lepp refine reads it
+// (its warnings dropped), once the corpus files are copied there: {corpus name,
+// name in the directory}.
+Pslg read_x_among(const ScratchDir& scratch, std::initializer_list<std::pair<const char*, const char*>> files) {
+  for (const auto& [corpus_name, name] : files) copy_corpus(corpus_name, scratch.path + name);
+  std::vector<std::string> warnings;
+  return read_input(scratch.path + "x", warnings);
+}
+
 TEST(TriangleFormats, BarePrefixReadsThePoly) {
   const ScratchDir scratch("poly");
-  const std::string& dir = scratch.path;
-  copy_corpus("zero-based.poly", dir + "x.poly");
-  std::vector<std::string> warnings;
-  Pslg p = read_input(dir + "x", warnings);
-  EXPECT_EQ(p.source, dir + "x.poly");
+  const Pslg p = read_x_among(scratch, {{"zero-based.poly", "x.poly"}});
+  EXPECT_EQ(p.source, scratch.path + "x.poly");
   EXPECT_EQ(p.vertices.size(), 5u);
   EXPECT_EQ(p.segments.size(), 5u);
 }
 
 TEST(TriangleFormats, BarePrefixReadsTheNodeWhenThereIsNoPoly) {
   const ScratchDir scratch("node");
-  const std::string& dir = scratch.path;
-  copy_corpus("points.node", dir + "x.node");
-  std::vector<std::string> warnings;
-  Pslg p = read_input(dir + "x", warnings);
-  EXPECT_EQ(p.source, dir + "x.node");
+  const Pslg p = read_x_among(scratch, {{"points.node", "x.node"}});
+  EXPECT_EQ(p.source, scratch.path + "x.node");
   EXPECT_EQ(p.vertices.size(), 12u);
   EXPECT_TRUE(p.segments.empty());
 }
 
 TEST(TriangleFormats, BarePrefixPrefersThePolyToTheNode) {
   const ScratchDir scratch("both");
-  const std::string& dir = scratch.path;
-  copy_corpus("zero-based.poly", dir + "x.poly");
-  copy_corpus("points.node", dir + "x.node");
-  std::vector<std::string> warnings;
-  Pslg p = read_input(dir + "x", warnings);
-  EXPECT_EQ(p.source, dir + "x.poly");
+  const Pslg p = read_x_among(scratch, {{"zero-based.poly", "x.poly"}, {"points.node", "x.node"}});
+  EXPECT_EQ(p.source, scratch.path + "x.poly");
   EXPECT_EQ(p.vertices.size(), 5u);  // the .poly's own vertices, not the .node's 12
   EXPECT_EQ(p.segments.size(), 5u);
 }
 
 TEST(TriangleFormats, AnExistingFileIsReadAsItIsNotAsAPrefix) {
   const ScratchDir scratch("existing");
-  const std::string& dir = scratch.path;
-  copy_corpus("zero-based.poly", dir + "x");
-  copy_corpus("attributes.poly", dir + "x.poly");
-  std::vector<std::string> warnings;
-  Pslg p = read_input(dir + "x", warnings);
-  EXPECT_EQ(p.source, dir + "x");
+  const Pslg p = read_x_among(scratch, {{"zero-based.poly", "x"}, {"attributes.poly", "x.poly"}});
+  EXPECT_EQ(p.source, scratch.path + "x");
   EXPECT_EQ(p.vertices.size(), 5u);
 }
 
 TEST(TriangleFormats, BarePrefixWithNeitherFileNamesThePathAndBothFiles) {
   const ScratchDir scratch("neither");
   const std::string& dir = scratch.path;
-  std::vector<std::string> warnings;
-  try {
-    read_input(dir + "x", warnings);
-    FAIL() << "accepted";
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(e.file(), dir + "x");
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-    EXPECT_NE(what.find(dir + "x.poly"), std::string::npos) << what;
-    EXPECT_NE(what.find(dir + "x.node"), std::string::npos) << what;
-  }
+  const InputError neither = read_error(dir + "x");
+  const std::string what = neither.what();
+  EXPECT_EQ(neither.file(), dir + "x");
+  EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  EXPECT_NE(what.find(dir + "x.poly"), std::string::npos) << what;
+  EXPECT_NE(what.find(dir + "x.node"), std::string::npos) << what;
   // A missing name with an extension is not a prefix: x.poly.poly is not tried.
   copy_corpus("zero-based.poly", dir + "y.poly.poly");
-  try {
-    read_input(dir + "y.poly", warnings);
-    FAIL() << "accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), dir + "y.poly");
-    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos) << e.what();
-  }
+  const InputError missing = read_error(dir + "y.poly");
+  EXPECT_EQ(missing.file(), dir + "y.poly");
+  EXPECT_NE(std::string(missing.what()).find("cannot open"), std::string::npos) << missing.what();
 }
 
 TEST(TriangleFormats, ADirectoryIsAPrefixNotAFile) {
@@ -268,25 +269,15 @@ TEST(TriangleFormats, ADirectoryIsAPrefixNotAFile) {
   const ScratchDir scratch("directory");
   const std::string& dir = scratch.path;
   std::filesystem::create_directory(dir + "x");
-  std::vector<std::string> warnings;
-  try {
-    read_input(dir + "x", warnings);
-    FAIL() << "accepted";
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("is a directory"), std::string::npos) << what;
-    EXPECT_NE(what.find(dir + "x.node"), std::string::npos) << what;
-  }
-  copy_corpus("zero-based.poly", dir + "x.poly");
-  EXPECT_EQ(read_input(dir + "x", warnings).source, dir + "x.poly");
+  const std::string what = read_error(dir + "x").what();
+  EXPECT_NE(what.find("is a directory"), std::string::npos) << what;
+  EXPECT_NE(what.find(dir + "x.node"), std::string::npos) << what;
+  const Pslg p = read_x_among(scratch, {{"zero-based.poly", "x.poly"}});
+  EXPECT_EQ(p.source, dir + "x.poly");
   // Named as a file, a directory is an error that says so.
   std::filesystem::create_directory(dir + "d.poly");
-  try {
-    read_input(dir + "d.poly", warnings);
-    FAIL() << "accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
-  }
+  const std::string file = read_error(dir + "d.poly").what();
+  EXPECT_NE(file.find("is a directory"), std::string::npos) << file;
 }
 
 }  // namespace
