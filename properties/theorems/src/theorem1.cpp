@@ -174,26 +174,26 @@ std::string counts(const BisectionClasses& r) {
 std::string bucket(std::size_t n) {
   return n <= 4 ? "<=4 classes" : n <= 16 ? "5-16 classes" : n <= 64 ? "17-64 classes" : n <= 256 ? "65-256 classes" : ">256 classes";
 }
-}  // namespace
 
-Verdict check_theorem1_min_angle(const GridTriangle& t0, Bisection rule) {
-  auto r = bisection_classes(t0, rule, kMaxClasses, kLevels);
+// Parts (i) and (ii): one conclusion read off the classes, labelled by their number.
+Verdict classes_verdict(Bisection rule, const BisectionClasses& r, bool conclusion) {
   Verdict v;
   v.hypothesis = rule == Bisection::LongestEdge;
-  v.conclusion = r.min_angle_bound;
+  v.conclusion = conclusion;
   v.label = bucket(r.classes);
   v.detail = counts(r) + "; " + r.detail;
   return v;
 }
+}  // namespace
+
+Verdict check_theorem1_min_angle(const GridTriangle& t0, Bisection rule) {
+  const BisectionClasses r = bisection_classes(t0, rule, kMaxClasses, kLevels);
+  return classes_verdict(rule, r, r.min_angle_bound);
+}
 
 Verdict check_theorem1_finite_classes(const GridTriangle& t0, Bisection rule) {
-  auto r = bisection_classes(t0, rule, kMaxClasses, kLevels);
-  Verdict v;
-  v.hypothesis = rule == Bisection::LongestEdge;
-  v.conclusion = r.closed;
-  v.label = bucket(r.classes);
-  v.detail = counts(r) + "; " + r.detail;
-  return v;
+  const BisectionClasses r = bisection_classes(t0, rule, kMaxClasses, kLevels);
+  return classes_verdict(rule, r, r.closed);
 }
 
 Verdict check_theorem1_quasi_equilateral(const GridTriangle& t0, Bisection rule) {
