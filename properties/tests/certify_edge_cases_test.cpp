@@ -17,6 +17,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CGAL/Gmpq.h>
@@ -590,6 +591,27 @@ Pslg cracks_at_twenty_degrees() {
   return test::validated(p);
 }
 
+// The cracks' vertices and R (vertex 7), meshed by `triangles` alone.
+Mesh cracks_meshed(const Pslg& cracks, Point r, std::vector<Tri> triangles) {
+  Mesh m;
+  m.vertices = cracks.vertices;
+  m.vertices.push_back(r);
+  m.input_vertices = cracks.vertices.size();
+  m.triangles = std::move(triangles);
+  return m;
+}
+
+// Both triangles listed unimprovable: the rule fails for the first (triangle 0)
+// alone, and the second, the wedge's own (V,U,W), is accepted.
+void expect_rule_fails_for_the_first_only(const certify::Report& r) {
+  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  const certify::Violation* v = first_of(r, Reason::UnimprovableRuleFails);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->triangles, std::vector<int>{0});
+  ASSERT_EQ(r.unimprovable_accepted.size(), 1u);
+  EXPECT_EQ(r.unimprovable_accepted[0].triangle, (Tri{4, 5, 6}));
+}
+
 TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedge) {
   // Two cracks from V = (0,0) inside the square [-10,10]^2: V-U, U = (4,0), and V-W,
   // W = 4 (cos 20, sin 20): a 20-degree input angle. Triangle (V,U,W) lies in the
@@ -599,21 +621,11 @@ TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedge) {
   // the wedge, the rule does not hold. Only the two listed triangles matter here;
   // the rest of the square is not meshed.
   const Pslg p = cracks_at_twenty_degrees();
-  Mesh m;
-  m.vertices = p.vertices;
-  m.vertices.push_back({5, -1.5});  // R = 7
-  m.input_vertices = p.vertices.size();
-  m.triangles = {{6, 5, 7}, {4, 5, 6}};
+  const Mesh m = cracks_meshed(p, {5, -1.5}, {{6, 5, 7}, {4, 5, 6}});
   certify::Options options;
   options.min_angle_deg = 25;
   options.unimprovable = {{{6, 5, 7}, 4, 4, 5, 20}, {{4, 5, 6}, 4, 4, 5, 20}};
-  const auto r = certify::certify(p, m, options);
-  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
-  const certify::Violation* v = first_of(r, Reason::UnimprovableRuleFails);
-  ASSERT_NE(v, nullptr);
-  EXPECT_EQ(v->triangles, std::vector<int>{0});
-  ASSERT_EQ(r.unimprovable_accepted.size(), 1u);
-  EXPECT_EQ(r.unimprovable_accepted[0].triangle, (Tri{4, 5, 6}));
+  expect_rule_fails_for_the_first_only(certify::certify(p, m, options));
 }
 
 TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedgeOnTheSecondSideToo) {
@@ -622,23 +634,13 @@ TEST(CertifyEdgeCases, UnimprovableRuleNeedsTheTriangleInsideTheWedgeOnTheSecond
   // ccw beyond the arm V-W (at 26 degrees from V, the arm at 20): inside the first
   // side of the wedge, outside the second, and the rule does not hold.
   const Pslg p = cracks_at_twenty_degrees();
-  Mesh m;
-  m.vertices = p.vertices;
-  m.vertices.push_back({6.5, 3.2});  // R = 7
-  m.input_vertices = p.vertices.size();
-  m.triangles = {{5, 7, 6}, {4, 5, 6}};
+  const Mesh m = cracks_meshed(p, {6.5, 3.2}, {{5, 7, 6}, {4, 5, 6}});
   certify::Options options;
   options.min_angle_deg = 25;
   const auto plain = certify::certify(p, m, options);
   ASSERT_EQ(plain.count(Reason::AngleBelowTheta), 2u) << certify::format_report(plain);
   options.unimprovable = {{{5, 7, 6}, 4, 4, 5, 20}, {{4, 5, 6}, 4, 4, 5, 20}};
-  const auto r = certify::certify(p, m, options);
-  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
-  const certify::Violation* v = first_of(r, Reason::UnimprovableRuleFails);
-  ASSERT_NE(v, nullptr);
-  EXPECT_EQ(v->triangles, std::vector<int>{0});
-  ASSERT_EQ(r.unimprovable_accepted.size(), 1u);
-  EXPECT_EQ(r.unimprovable_accepted[0].triangle, (Tri{4, 5, 6}));
+  expect_rule_fails_for_the_first_only(certify::certify(p, m, options));
 }
 
 TEST(CertifyEdgeCases, InputAngleAtTheDoubleNearestSixtyDegreesIsDecidedExactly) {
