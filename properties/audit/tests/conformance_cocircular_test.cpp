@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "conformance_test_support.h"
 #include "lepp/audit/conformance.h"
 #include "lepp/certify.h"
 #include "lepp/fast.h"
@@ -37,12 +38,7 @@ Pslg lattice_rectangle(int w, int h) { return validated(gen::lattice_box(w, h));
 // A mesher run on the transformed input, its points mapped back.
 std::vector<Point> trace_under(const Pslg& p, const gen::LatticeSymmetry& s, bool fast_engine, Method m, QueueOrder q,
                                double theta, std::int64_t max_steiner = 400) {
-  RefineOptions o;
-  o.min_angle_deg = theta;
-  o.method = m;
-  o.order = q;
-  o.trace = true;
-  o.max_steiner = max_steiner;
+  const RefineOptions o = test::traced_options(m, q, theta, max_steiner);
   const Pslg moved = s.apply(p);
   RefineResult r = fast_engine ? fast::refine(moved, o) : reference::refine(moved, o);
   std::vector<Point> out;

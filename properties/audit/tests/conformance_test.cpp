@@ -20,6 +20,7 @@
 
 #include <unistd.h>
 
+#include "conformance_test_support.h"
 #include "lepp/audit/conformance.h"
 #include "lepp/fast.h"
 #include "lepp/gen.h"
@@ -52,12 +53,7 @@ std::vector<Point> points_of(const RefineResult& r) {
 }
 
 RefineResult run(const Pslg& p, bool fast_engine, Method m, QueueOrder q, double theta, std::int64_t max_steiner = 3000) {
-  RefineOptions o;
-  o.min_angle_deg = theta;
-  o.method = m;
-  o.order = q;
-  o.trace = true;
-  o.max_steiner = max_steiner;
+  const RefineOptions o = test::traced_options(m, q, theta, max_steiner);
   return fast_engine ? fast::refine(p, o) : reference::refine(p, o);
 }
 
