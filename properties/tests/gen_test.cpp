@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "gen_test_support.h"
 #include "lepp/certify.h"
 #include "lepp/gen.h"
 #include "lepp/validate.h"
@@ -12,19 +13,7 @@
 namespace lepp {
 namespace {
 
-void expect_validates_untouched(const Pslg& p) {
-  RC_TAG(p.source);
-  std::vector<std::string> warnings;
-  Pslg v;
-  try {
-    v = validate(p, warnings);
-  } catch (const std::exception& e) {
-    RC_FAIL(std::string("validate rejected a generated PSLG: ") + e.what());
-  }
-  RC_ASSERT(warnings.empty());
-  RC_ASSERT(v.vertices.size() == p.vertices.size());
-  RC_ASSERT(v.segments.size() == p.segments.size());
-}
+using test::expect_validates_untouched;
 
 RC_GTEST_PROP(Generators, AnyPslgValidates, ()) { expect_validates_untouched(*gen::anyPslg()); }
 RC_GTEST_PROP(Generators, WellShapedPslgValidatesWithAnglesAtLeast60, ()) {
