@@ -20,6 +20,7 @@
 #include "lepp/io.h"
 #include "lepp/validate.h"
 #include "lepp/small_input_angles.h"
+#include "test_pslgs.h"
 
 namespace lepp {
 namespace {
@@ -89,17 +90,8 @@ TEST(CertifyBoundary, DuplicateThatSortsFirstIsFound) {
 }
 
 // ---- --split-crossings ------------------------------------------------------
-Pslg crossing_pslg() {
-  std::vector<std::string> warnings;
-  DomainOptions split;
-  split.split_crossings = true;
-  return validate(read_poly(LEPP_SOURCE_DIR "/corpus/triangle-formats/crossing.poly"), split, warnings);
-}
-
-Mesh as_read(Mesh m) {
-  m.input_vertices = 0;  // as read_mesh gives it: no vertex promised to be an input vertex
-  return m;
-}
+Pslg crossing_pslg() { return test::crossing_split(LEPP_SOURCE_DIR); }
+using test::as_read;
 
 // Kills cert-crossing-first-not-matched: the FIRST crossing vertex (the
 // boundary of `i + crossing_vertices >= n`), rounded an ulp away by another mesher.

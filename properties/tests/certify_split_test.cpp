@@ -11,22 +11,13 @@
 #include "lepp/certify.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "test_pslgs.h"
 
 namespace lepp {
 namespace {
 
-Pslg crossing_pslg() {
-  std::vector<std::string> warnings;
-  DomainOptions split;
-  split.split_crossings = true;
-  return validate(read_poly(LEPP_SOURCE_DIR "/corpus/triangle-formats/crossing.poly"), split, warnings);
-}
-
-// As read_mesh gives it: no vertex promised to be an input vertex.
-Mesh as_read(Mesh m) {
-  m.input_vertices = 0;
-  return m;
-}
+Pslg crossing_pslg() { return test::crossing_split(LEPP_SOURCE_DIR); }
+using test::as_read;
 
 TEST(CertifySplitCrossings, RoundedCrossingPointsCertify) {
   const Pslg p = crossing_pslg();

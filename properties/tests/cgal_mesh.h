@@ -8,6 +8,12 @@
 
 namespace lepp::test {
 
+// A mesh as read_mesh gives it: no vertex promised to be an input vertex.
+inline Mesh as_read(Mesh m) {
+  m.input_vertices = 0;
+  return m;
+}
+
 // The CDT of a validated PSLG, exterior and holes removed (Triangle's -p).
 // Vertices keep the input ids; constrained edges list the segments (ids -1).
 Mesh cgal_cdt(const Pslg& pslg);

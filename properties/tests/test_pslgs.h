@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "lepp/input.h"
+#include "lepp/io.h"
 #include "lepp/pslg.h"
 #include "lepp/validate.h"
 
@@ -13,6 +15,15 @@ namespace lepp::test {
 inline Pslg validated(const Pslg& p) {
   std::vector<std::string> warnings;
   return validate(p, warnings);
+}
+
+// corpus/triangle-formats/crossing.poly of the source tree at `source_dir`,
+// validated with its crossing segments split (--split-crossings).
+inline Pslg crossing_split(const std::string& source_dir) {
+  std::vector<std::string> warnings;
+  DomainOptions split;
+  split.split_crossings = true;
+  return validate(read_poly(source_dir + "/corpus/triangle-formats/crossing.poly"), split, warnings);
 }
 
 // The square [0,10]^2 with interior points, an interior segment (the crack, the
