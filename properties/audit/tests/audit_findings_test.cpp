@@ -20,12 +20,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "audit_test_support.h"
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
 #include "lepp/audit/report.h"
 #include "lepp/audit/signature.h"
 #include "lepp/gen.h"
-#include "audit_test_support.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;

@@ -10,11 +10,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "audit_test_support.h"
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
 #include "lepp/audit/finding.h"
 #include "lepp/audit/report.h"
-#include "audit_test_support.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;

@@ -12,10 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include "audit_test_support.h"
 #include "lepp/audit/peer_engines.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
-#include "audit_test_support.h"
 #include "triangle_wasm.h"
 
 namespace fs = std::filesystem;
