@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include <mpfr.h>
+#include "lepp/mpfr_thread_cache.h"
 
 namespace lepp {
 
@@ -11,6 +11,7 @@ Sin2Bracket sin2_bracket(double theta_deg) {
   // sin^2(theta) at 256 bits is within 2^-240 of the truth, far inside one
   // double ulp: rounding it down and up and stepping one more double outwards
   // gives a bracket that holds the exact value.
+  free_mpfr_cache_at_thread_exit();
   mpfr_t x, pi;
   mpfr_inits2(256, x, pi, static_cast<mpfr_ptr>(nullptr));
   mpfr_const_pi(pi, MPFR_RNDN);

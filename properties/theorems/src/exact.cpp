@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include <mpfr.h>
+#include "lepp/mpfr_thread_cache.h"
 
 namespace lepp::theorems::exact {
 
@@ -34,6 +34,7 @@ AngleBracket angle_deg(const FT& cos_value) {
   // one double outwards.
   std::pair<double, double> iv = CGAL::to_interval(cos_value);
   double clo = std::max(-1.0, iv.first), chi = std::min(1.0, iv.second);
+  lepp::free_mpfr_cache_at_thread_exit();
   mpfr_t x, pi;
   mpfr_inits2(128, x, pi, static_cast<mpfr_ptr>(nullptr));
   AngleBracket b;
