@@ -44,7 +44,8 @@ LEPP_FUZZ_PSLG_MUTATOR
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (!engine_available(Engine::Fast)) return 0;
-  const FuzzInput input = decode(data, size);
+  FuzzInput input = decode(data, size);
+  apply_environment(input);  // LEPP_FUZZ_PRECISION (method and theta do not matter here)
   lepp::Pslg pslg;
   try {
     pslg = to_pslg(input);

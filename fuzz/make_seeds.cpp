@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/fuzz_input.h"
@@ -61,6 +62,30 @@ std::vector<std::pair<std::string, FuzzInput>> shapes() {
   s.emplace_back("clustered-rect", polygon(40, {{0, 0}, {20, 0}, {30, 0}, {35, 0}, {38, 0}, {40, 0}, {40, 20},
                                                 {39, 20}, {36, 20}, {30, 20}, {0, 20}}));
   s.emplace_back("open-chain", polygon(10, {{0, 0}, {5, 2}, {10, 0}, {10, 10}}, false));
+  // Issue 20's families, the limit of double precision: vertices a few ulps
+  // apart, alone or at a large offset (fuzz_input.h: offset 2^(k - 1)).
+  auto ulps = [](int k) { return std::pair<int, int>{k % 2 ? k / 2 + 1 : -(k / 2 + 1), k % 3 - 1}; };
+  FuzzInput diagonal;  // the unit square's corners, points on its diagonal, a cluster at its centre
+  diagonal.grid = 40;
+  diagonal.vertices = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
+  for (int t = 2; t < 40; t += 5) diagonal.vertices.push_back({t, t});
+  diagonal.vertices.push_back({20, 20});
+  lepp::fuzz::add_cluster(diagonal, static_cast<int>(diagonal.vertices.size()) - 1, 6, ulps);
+  s.emplace_back("precision-diagonal-cluster", diagonal);
+  FuzzInput far = polygon(8, {{0, 0}, {8, 0}, {8, 8}, {0, 8}});
+  far.vertices.push_back({3, 5});
+  far.offset = 41;  // coordinates near 2^40: a grid step of 1 keeps 12 bits of fraction
+  lepp::fuzz::add_cluster(far, 4, 3, ulps);
+  s.emplace_back("precision-offset-square", far);
+  FuzzInput dups;  // a point set with near-duplicates of several points
+  dups.grid = 16;
+  dups.vertices = {{0, 0}, {16, 1}, {5, 15}, {11, 7}, {3, 8}, {14, 14}, {8, 3}};
+  for (int v : {1, 3, 5}) lepp::fuzz::add_cluster(dups, v, 2, ulps);
+  dups.offset = 21;
+  s.emplace_back("precision-near-duplicates", dups);
+  FuzzInput edge = polygon(12, {{0, 0}, {6, 0}, {12, 0}, {12, 6}, {0, 6}});
+  lepp::fuzz::add_cluster(edge, 1, 3, ulps);  // copies of a boundary vertex, a few ulps off the segment's line
+  s.emplace_back("precision-off-segment", edge);
   return s;
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the fuzz targets with clang-14 (libFuzzer, ASan, UBSan) and runs one.
-#   fuzz/run.sh TARGET SECONDS [JOBS]
+#   fuzz/run.sh TARGET SECONDS [JOBS]     (SECONDS "build": build the target, run nothing)
 # The corpus grows in $LEPP_FUZZ_WORK/TARGET/corpus (default out/fuzz), seeded
 # from corpus/fuzz/TARGET; crashes, loops and mismatches land in
 # $LEPP_FUZZ_WORK/TARGET/findings; one example of each known loop class and
@@ -29,6 +29,7 @@ if [[ ! -f $build/CMakeCache.txt ]]; then
 fi
 # LEPP_FUZZ_NO_BUILD=1 runs the binary as built (several runs at once must not race one ninja).
 [[ ${LEPP_FUZZ_NO_BUILD:-0} == 1 ]] || ninja -C "$build" -j"${LEPP_BUILD_JOBS:-2}" "$target" >/dev/null
+[[ $seconds == build ]] && exit 0  # fuzz/run.sh TARGET build: build only (fuzz/campaign.sh --build)
 
 mkdir -p "$work/corpus" "$work/findings"
 export LEPP_FUZZ_KNOWN_DIR=${LEPP_FUZZ_KNOWN_DIR:-$work/findings/known}

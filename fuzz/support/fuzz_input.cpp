@@ -144,7 +144,35 @@ std::vector<std::uint8_t> encode(const FuzzInput& input) {
   return w.bytes();
 }
 
+bool precision_campaign() {
+  const char* env = std::getenv("LEPP_FUZZ_PRECISION");
+  return env != nullptr && std::string(env) == "1";
+}
+
+bool in_precision_family(const FuzzInput& input) { return input.offset > 0 || !input.jitters.empty(); }
+
+void add_cluster(FuzzInput& in, int vertex, int copies, const std::function<std::pair<int, int>(int)>& ulps) {
+  if (vertex < 0 || vertex >= static_cast<int>(in.vertices.size())) return;
+  for (int k = 0; k < copies && static_cast<int>(in.vertices.size()) < FuzzInput::kMaxVertices &&
+                  static_cast<int>(in.jitters.size()) < FuzzInput::kMaxJitters;
+       ++k) {
+    in.vertices.push_back(in.vertices[static_cast<std::size_t>(vertex)]);
+    const auto [dx, dy] = ulps(k);
+    in.jitters.push_back({static_cast<int>(in.vertices.size()) - 1, std::clamp(dx, -FuzzInput::kMaxUlps, FuzzInput::kMaxUlps),
+                          std::clamp(dy, -FuzzInput::kMaxUlps, FuzzInput::kMaxUlps)});
+  }
+}
+
 void apply_environment(FuzzInput& input) {
+  if (precision_campaign() && !in_precision_family(input) && !input.vertices.empty()) {
+    // Two to four copies of one vertex. The x moves (-4..4 ulps) differ from copy to copy, so
+    // no two copies coincide, and a copy with no move at all is moved one ulp in x.
+    const int v = input.theta_tenths % static_cast<int>(input.vertices.size());
+    add_cluster(input, v, 2 + input.grid % 3, [&](int k) {
+      const int dx = (k + input.theta_tenths) % 9 - 4, dy = (3 * k + input.grid) % 9 - 4;
+      return std::pair<int, int>{dx == 0 && dy == 0 ? 1 : dx, dy};
+    });
+  }
   if (const char* m = std::getenv("LEPP_FUZZ_METHOD")) input.method = std::string(m) == "midpoint" ? 1 : 0;
   if (const char* band = std::getenv("LEPP_FUZZ_THETA")) {
     double lo = 10, hi = 36;
@@ -209,7 +237,8 @@ void mutate(FuzzInput& in, std::mt19937& rng) {
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   auto random_point = [&] { return GridPoint{pick(0, in.grid), pick(0, in.grid)}; };
   const int nv = static_cast<int>(in.vertices.size());
-  switch (pick(0, 13)) {
+  // The precision campaign makes every other edit a cluster or an offset (cases 12, 13).
+  switch (precision_campaign() && pick(0, 1) ? 12 : pick(0, 13)) {
     case 0:
     case 1:
       if (nv > 0) {  // nudge a vertex
@@ -274,15 +303,10 @@ void mutate(FuzzInput& in, std::mt19937& rng) {
       if (nv > 0 && pick(0, 3) == 0) {  // a large offset: coordinates far from the origin, few bits left
         in.offset = pick(0, 1) ? pick(20, FuzzInput::kMaxOffset) : 0;
       } else if (nv > 0) {  // a cluster: copies of one vertex, each a few ulps from it
-        const int v = pick(0, nv - 1);
-        const int copies = pick(1, 4);
-        for (int k = 0; k < copies && static_cast<int>(in.vertices.size()) < FuzzInput::kMaxVertices &&
-                        static_cast<int>(in.jitters.size()) < FuzzInput::kMaxJitters;
-             ++k) {
-          in.vertices.push_back(in.vertices[static_cast<std::size_t>(v)]);
-          in.jitters.push_back({static_cast<int>(in.vertices.size()) - 1, pick(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps),
-                                pick(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps)});
-        }
+        const int v = pick(0, nv - 1), copies = pick(1, 4);  // in this order: the draws stay as they were
+        add_cluster(in, v, copies, [&](int) {
+          return std::pair<int, int>{pick(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps), pick(-FuzzInput::kMaxUlps, FuzzInput::kMaxUlps)};
+        });
       }
       break;
     default:

@@ -7,6 +7,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -63,8 +64,20 @@ std::vector<std::uint8_t> encode(const FuzzInput& input);
 
 // Applies the environment's overrides, so a run can be pinned to one method
 // and one theta band: LEPP_FUZZ_METHOD=centroid|midpoint,
-// LEPP_FUZZ_THETA=lo:hi (degrees; the input's theta is mapped into the band).
+// LEPP_FUZZ_THETA=lo:hi (degrees; the input's theta is mapped into the band),
+// and to the limit of double precision: LEPP_FUZZ_PRECISION=1 gives an input
+// with neither an offset nor ulp moves a cluster (add_cluster, its vertex and
+// moves drawn from the input's own fields, so the mapping is deterministic).
 void apply_environment(FuzzInput& input);
+
+// LEPP_FUZZ_PRECISION=1: the campaign on issue 20's families (clusters of
+// vertices a few ulps apart, large offsets); the mutator favours those edits.
+bool precision_campaign();
+bool in_precision_family(const FuzzInput& input);
+
+// Copies of vertex `vertex`, the k-th moved by ulps(k) = (dx, dy) ulps (each
+// clamped to kMaxUlps), while there is room for vertices and moves.
+void add_cluster(FuzzInput& input, int vertex, int copies, const std::function<std::pair<int, int>(int)>& ulps);
 
 // The PSLG the input describes, with only the segments that keep it a valid
 // PSLG (no zero-length, repeated or crossing segments, no vertex inside a
