@@ -74,11 +74,20 @@ def test_arrays_give_the_file_mesh():
     (dict(engine="reference"), ["--engine", "reference"]),
     (dict(max_area=20.0), ["--max-area", "20"]),
     (dict(convex_hull=True), ["--convex-hull"]),
+    (dict(order="random", order_seed=7), ["--order", "random", "--order-seed", "7"]),
 ])
 def test_options_as_the_cli(options, cli, workdir):
     path = corpus("paper", "A.poly")
     mesh = lepp.refine(path, min_angle=25, **options)
     assert_same(mesh, cli_mesh(path, str(workdir / "m"), "--min-angle", "25", *cli))
+
+
+def test_random_order_seed_changes_the_mesh():
+    # The seed is passed through: two seeds give two meshes (A at 25 degrees), one seed gives one.
+    path = corpus("paper", "A.poly")
+    a, b = (lepp.refine(path, min_angle=25, order="random", order_seed=s) for s in (1, 2))
+    assert len(a.vertices) != len(b.vertices) or not np.array_equal(a.triangles, b.triangles)
+    np.testing.assert_array_equal(lepp.refine(path, min_angle=25, order="random", order_seed=1).triangles, a.triangles)
 
 
 def test_region_areas_as_the_cli(workdir):
