@@ -27,6 +27,7 @@ using certify::Reason;
 using test::expect_certified;
 using test::expect_rejected_for;
 using test::expect_rejected_only_for;
+using test::expect_rejected_times;
 using test::run;
 
 // The input segment id of edge a-b of an unsplit segment, or -1.
@@ -138,8 +139,7 @@ TEST(CertifyRejects, FlippedNonDelaunayDiagonal) {
       flip(bad, *pair);
       const auto r = run(p, bad);
       if (r.stats.cocircular_edges > 0 && !r.has(Reason::NotLocallyDelaunay)) continue;  // a cocircular quad: both diagonals Delaunay
-      expect_rejected_for(r, Reason::NotLocallyDelaunay);
-      EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u);
+      expect_rejected_times(r, Reason::NotLocallyDelaunay, 1u);
       done = true;
     }
     if (done) break;
@@ -185,8 +185,7 @@ TEST(CertifyRejects, ZeroAreaTriangle) {
   expect_certified(run(p, m));
   m.triangles.push_back({0, 4, 1});
   const auto r = run(p, m);
-  expect_rejected_for(r, Reason::NotCounterClockwise);
-  EXPECT_EQ(r.count(Reason::NotCounterClockwise), 1u);
+  expect_rejected_times(r, Reason::NotCounterClockwise, 1u);
 }
 
 TEST(CertifyRejects, MissingTriangle) {
@@ -324,17 +323,22 @@ TEST(CertifyAccepts, ChainIgnoresAVertexNearTheSegmentButOffIt) {
   expect_rejected_for(run(p, m), Reason::SteinerOffSegment);
 }
 
+// The triangle (0,0), (1,0), c alone, its sides the input's segments.
+test::MeshedPslg lone_triangle(Point c) {
+  test::MeshedPslg t;
+  t.pslg.vertices = {{0, 0}, {1, 0}, c};
+  t.pslg.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  t.mesh.vertices = t.pslg.vertices;
+  t.mesh.input_vertices = 3;
+  t.mesh.triangles = {{0, 1, 2}};
+  t.mesh.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {0, 2, 2}};
+  return t;
+}
+
 TEST(CertifyRejects, AngleJustUnderTheta) {
   // A lone triangle whose smallest angle is 30 degrees minus 1e-7 degrees.
   const double rad = (30 - 1e-7) * M_PI / 180;
-  Pslg p;
-  p.vertices = {{0, 0}, {1, 0}, {std::cos(rad), std::sin(rad)}};
-  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
-  Mesh m;
-  m.vertices = p.vertices;
-  m.input_vertices = 3;
-  m.triangles = {{0, 1, 2}};
-  m.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {0, 2, 2}};
+  const auto [p, m] = lone_triangle({std::cos(rad), std::sin(rad)});
   expect_rejected_for(run(p, m, 30), Reason::AngleBelowTheta);
   expect_certified(run(p, m, 30 - 2e-7));
 }
@@ -351,8 +355,7 @@ TEST(CertifyRejects, TerminalPairOver120NonDelaunay) {
   m.triangles = {{0, 1, 2}, {1, 0, 3}};
   m.constrained_edges = {{0, 3, 0}, {3, 1, 1}, {1, 2, 2}, {2, 0, 3}};
   const auto r = run(p, m);
-  expect_rejected_for(r, Reason::TerminalAngleOver120);
-  EXPECT_EQ(r.count(Reason::TerminalAngleOver120), 2u);
+  expect_rejected_times(r, Reason::TerminalAngleOver120, 2u);
   EXPECT_TRUE(r.has(Reason::NotLocallyDelaunay));
   // The Delaunay diagonal: no terminal pair is over 120 degrees.
   m.triangles = {{0, 3, 2}, {3, 1, 2}};
@@ -386,8 +389,7 @@ TEST(CertifyRejects, ConformingModeChecksConstrainedEdges) {
   certify::Options options;
   options.conforming = true;
   const auto r = certify::certify(p, m, options);
-  expect_rejected_for(r, Reason::NotLocallyDelaunay);
-  EXPECT_EQ(r.count(Reason::NotLocallyDelaunay), 1u);
+  expect_rejected_times(r, Reason::NotLocallyDelaunay, 1u);
 }
 
 TEST(CertifyRejects, AngleWithinTheBracketIsNotCertified) {
@@ -409,14 +411,7 @@ TEST(CertifyRejects, AngleWithinTheBracketIsNotCertified) {
       if (CGAL::Gmpq(bracket.lo) <= s2 && s2 < CGAL::Gmpq(bracket.hi)) corner = Point{a, b};
     }
   ASSERT_TRUE(corner.has_value()) << "no corner with sin^2 inside the bracket among the nudges";
-  Pslg p;
-  p.vertices = {{0, 0}, {1, 0}, *corner};
-  p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
-  Mesh m;
-  m.vertices = p.vertices;
-  m.input_vertices = 3;
-  m.triangles = {{0, 1, 2}};
-  m.constrained_edges = {{0, 1, 0}, {1, 2, 1}, {0, 2, 2}};
+  const auto [p, m] = lone_triangle(*corner);
   const auto r = run(p, m, theta);
   expect_rejected_for(r, Reason::AngleNotCertified);
   EXPECT_FALSE(r.has(Reason::AngleBelowTheta));
@@ -430,8 +425,7 @@ TEST(CertifyRejects, BadIdsAndNonFiniteCoordinates) {
   bad.vertices.push_back({std::nan(""), 1});
   bad.triangles.push_back({0, 1, static_cast<int>(bad.vertices.size()) - 1});
   const auto r = run(p, bad);
-  expect_rejected_for(r, Reason::BadTriangle);
-  EXPECT_EQ(r.count(Reason::BadTriangle), 3u);
+  expect_rejected_times(r, Reason::BadTriangle, 3u);
 }
 
 TEST(CertifyRejects, UnusedSteinerVertex) {
@@ -469,8 +463,7 @@ TEST(CertifyRejects, DuplicateMeshVertex) {
   ASSERT_NE(it, bad.triangles.end());
   std::replace(it->begin(), it->end(), original, copy);
   const auto r = run(p, bad);
-  expect_rejected_for(r, Reason::DuplicateMeshVertex);
-  EXPECT_EQ(r.count(Reason::DuplicateMeshVertex), 1u);
+  expect_rejected_times(r, Reason::DuplicateMeshVertex, 1u);
   auto v = std::find_if(r.violations.begin(), r.violations.end(), [](const certify::Violation& x) { return x.reason == Reason::DuplicateMeshVertex; });
   ASSERT_NE(v, r.violations.end());
   EXPECT_EQ(v->vertices, (std::vector<int>{original, copy}));
@@ -598,8 +591,7 @@ TEST(CertifyUnimprovable, ShortestEdgeFromTheApexIsNotTheRule) {
   ASSERT_EQ(plain.count(Reason::AngleBelowTheta), 2u) << certify::format_report(plain);
   options.unimprovable = {{{0, 3, 2}, 0, 0, 1, 20}, {{3, 1, 2}, 0, 0, 1, 20}};
   const auto r = certify::certify(p, m, options);
-  expect_rejected_for(r, Reason::UnimprovableRuleFails);
-  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), 1u) << certify::format_report(r);
+  expect_rejected_times(r, Reason::UnimprovableRuleFails, 1u);
   EXPECT_EQ(r.unimprovable_accepted.size(), 1u);
 }
 
@@ -615,8 +607,7 @@ TEST(CertifyUnimprovable, ListedTriangleWithoutSmallInputAngleRejected) {
   for (const certify::Violation& v : plain.violations)
     if (v.reason == Reason::AngleBelowTheta) options.unimprovable.push_back({m.triangles[static_cast<std::size_t>(v.triangles[0])], 0, 0, 1, 5});
   const auto r = certify::certify(p, m, options);
-  expect_rejected_for(r, Reason::UnimprovableRuleFails);
-  EXPECT_EQ(r.count(Reason::UnimprovableRuleFails), plain.count(Reason::AngleBelowTheta));
+  expect_rejected_times(r, Reason::UnimprovableRuleFails, plain.count(Reason::AngleBelowTheta));
   EXPECT_TRUE(r.unimprovable_accepted.empty());
 }
 

@@ -55,6 +55,12 @@ inline void expect_rejected_for(const certify::Report& r, certify::Reason reason
   EXPECT_FALSE(v->message.empty());
 }
 
+// Rejected for this reason exactly n times (other reasons may come too).
+inline void expect_rejected_times(const certify::Report& r, certify::Reason reason, std::size_t n) {
+  expect_rejected_for(r, reason);
+  EXPECT_EQ(r.count(reason), n) << certify::format_report(r);
+}
+
 // Rejected for exactly one violation, of this reason (a mutation that breaks one thing).
 inline void expect_rejected_only_for(const certify::Report& r, certify::Reason reason) {
   expect_rejected_for(r, reason);
