@@ -90,6 +90,21 @@ TEST(PrecisionStop, UlpClusterEndsCleanlyFrom10To33Degrees) {
   for (int theta : {20, 25}) both_engines(p, theta, Method::Midpoint, fmt::format("cluster34 midpoint at {}", theta));
 }
 
+// The cluster turned by half a turn (x -> -x, y -> -y: exact). The exact points
+// the stop re-rounds now have negative coordinates, where GMP's truncation
+// toward zero is the upper neighbour and the other one lies below: both
+// engines still agree, the stop is reached, and the mesh certifies.
+TEST(PrecisionStop, HalfTurnedClusterEndsCleanly) {
+  Pslg p = load("cluster34.node");
+  for (Point& q : p.vertices) q = {-q.x, -q.y};
+  for (int theta : {30, 33}) both_engines(p, theta, Method::Centroid, fmt::format("cluster34 turned at {}", theta));
+  RefineOptions o;
+  o.min_angle_deg = 33;
+  const RefineResult r = fast::refine(p, o);
+  EXPECT_GT(r.precision_stops, 0);
+  EXPECT_GT(at_precision(r), 0u);
+}
+
 // Issue 20's second input, shrunk: near-duplicates a few ulps apart far from the
 // origin (as in Triangle's greenland.node). The full 30000-point set is behind
 // LEPP_LONG_TESTS=1 (NearDuplicatesLong).

@@ -326,5 +326,74 @@ TEST(CocircularCells, SearchBudgetIsReported) {
   EXPECT_EQ(r.failure->mesh.triangles, reference::build_cdt(p).triangles);
 }
 
+// The budget counts every triangle the search looks at, wherever it runs out:
+// in the scan of a cell's triangles, among the triangles across a terminal
+// edge, or in the backward walk along the Lepp tree. The search is
+// deterministic, so there is one smallest budget that follows step 0 of the
+// quarter-turned rectangle's trace: every budget below it gives up, says so
+// and leaves the mesh as it was (the fallback searches cannot follow this
+// step); that budget and larger ones follow it.
+TEST(CocircularCells, EveryBudgetBelowTheNeededOneGivesUpAndLeavesTheMesh) {
+  const Pslg p = lattice_rectangle(4, 3);
+  const std::vector<Point> trace = trace_under(p, {3, false}, true, Method::Centroid, QueueOrder::Fifo, 30);
+  ASSERT_FALSE(trace.empty());
+  const Mesh initial = reference::build_cdt(p);
+  reference::ReplayRules rules;
+  rules.method = Method::Centroid;
+  rules.min_angle_deg = 30;
+  rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
+  auto follows = [&](std::size_t budget, bool& exhausted, Mesh& mesh) {
+    rules.cocircular_search_budget = budget;
+    reference::Replay replay(p, rules);
+    reference::ReplayChoice choice;
+    const bool ok = replay.match(trace[0], choice);
+    exhausted = replay.cocircular_search_exhausted();
+    mesh = replay.mesh();
+    return ok;
+  };
+  bool exhausted = false;
+  Mesh mesh;
+  ASSERT_TRUE(follows(rules.cocircular_search_budget, exhausted, mesh));
+  std::size_t needed = 0;
+  while (!follows(needed, exhausted, mesh)) {
+    ASSERT_TRUE(exhausted) << "budget " << needed << ": no match, yet the search did not run out";
+    ASSERT_EQ(mesh.triangles, initial.triangles) << "budget " << needed << ": the mesh was left changed";
+    ASSERT_LT(++needed, 20000u);
+  }
+  EXPECT_FALSE(exhausted);
+  EXPECT_GT(needed, 5u) << "the step needs more than a handful of triangles looked at";
+  for (std::size_t more : {needed + 1, 2 * needed}) {
+    EXPECT_TRUE(follows(more, exhausted, mesh)) << more;
+    EXPECT_FALSE(exhausted) << more;
+  }
+}
+
+// The search compares edge lengths as the rest of the replay does: in doubles
+// first, exactly where the squares overflow (at 2^600; at 2^510 only the longer
+// edges' do) or fall below the filter's range (at 2^-600, where they underflow
+// to zero). The
+// quarter-turned rectangle and its trace scaled by a power of two (exact):
+// the trace is followed through the cells at both scales, and a point moved
+// by a millionth is not.
+TEST(CocircularCells, SearchComparesLengthsExactlyWhereDoublesOverflowOrUnderflow) {
+  const Pslg p = lattice_rectangle(4, 3);
+  const std::vector<Point> trace = trace_under(p, {3, false}, true, Method::Centroid, QueueOrder::Fifo, 30);
+  ASSERT_FALSE(trace.empty());
+  for (int e : {600, 510, -600}) {
+    Pslg scaled = p;
+    for (Point& q : scaled.vertices) q = {std::ldexp(q.x, e), std::ldexp(q.y, e)};
+    scaled = validated(scaled);
+    std::vector<Point> t;
+    for (const Point& q : trace) t.push_back({std::ldexp(q.x, e), std::ldexp(q.y, e)});
+    ConformanceReport r = check_conformance(scaled, t, options(Method::Centroid, 30));
+    EXPECT_TRUE(r.conforms) << e << ": " << describe(r);
+    EXPECT_GT(r.cocircular_flips, 2) << e << ": followed through the cells";
+    t[0].x += std::ldexp(1e-6, e);
+    ConformanceReport moved = check_conformance(scaled, t, options(Method::Centroid, 30));
+    ASSERT_FALSE(moved.conforms) << e;
+    EXPECT_EQ(moved.failure->step, 0u) << describe(moved);
+  }
+}
+
 }  // namespace
 }  // namespace lepp::audit

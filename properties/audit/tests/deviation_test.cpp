@@ -49,6 +49,9 @@ TEST(DeviationCatalogue, NamesAreTheContract) {
                         "other-second-longest", "good-triangle", "circumcenter", "off-center", "precision", "unknown"})
     EXPECT_TRUE(names.count(n)) << n;
   EXPECT_EQ(names.size(), static_cast<std::size_t>(lepp::reference::kDeviations));
+  // The two readings of the quad centroid, by the names `--centroid` takes.
+  EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Vertex), "vertex");
+  EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Area), "area");
 }
 
 TEST(DeviationCatalogue, CircumcenterOffCenterPrecisionUnknown) {
