@@ -371,10 +371,9 @@ TEST(CocircularCells, EveryBudgetBelowTheNeededOneGivesUpAndLeavesTheMesh) {
 // The search compares edge lengths as the rest of the replay does: in doubles
 // first, exactly where the squares overflow (at 2^600; at 2^510 only the longer
 // edges' do) or fall below the filter's range (at 2^-600, where they underflow
-// to zero). The
-// quarter-turned rectangle and its trace scaled by a power of two (exact):
-// the trace is followed through the cells at both scales, and a point moved
-// by a millionth is not.
+// to zero). The quarter-turned rectangle and its trace scaled by a power of two
+// (exact): the trace is followed through the cells at each scale, and a point
+// moved by a millionth is not.
 TEST(CocircularCells, SearchComparesLengthsExactlyWhereDoublesOverflowOrUnderflow) {
   const Pslg p = lattice_rectangle(4, 3);
   const std::vector<Point> trace = trace_under(p, {3, false}, true, Method::Centroid, QueueOrder::Fifo, 30);
