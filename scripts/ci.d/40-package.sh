@@ -158,7 +158,7 @@ cmp -s LICENSE "$root/usr/share/doc/python3-lepp/copyright" || { echo "40-packag
 for so in "$site"/lepp/_lepp*.so; do
   if ldd "$so" | grep -q "not found"; then ldd "$so" >&2; echo "40-package: $so misses a shared library" >&2; exit 1; fi
 done
-mkdir "$work/empty"
+mkdir -p "$work/empty"  # step 6 made it: still empty (the audits wrote under --out)
 paper_a="$PWD/corpus/paper/A.poly"
 (cd "$work/empty" && PYTHONPATH="$site" /usr/bin/python3 -c "import lepp; print(lepp.__file__, lepp.__version__)") | tee "$work/import.txt"
 case $(cut -d' ' -f1 "$work/import.txt") in
