@@ -305,13 +305,15 @@ class Certifier {
              return CGAL::abs(cross) - NT(std::ldexp(1.0, -20)) * (dx * dx + dy * dy);
            }) <= 0;
   }
-  // The step from p to q turns at most 45 degrees from AB: |cross(B - A, q - p)| <= dot(B - A, q - p).
-  static bool gentle(const Point& a, const Point& b, const Point& p, const Point& q) {
+  // The step from p to q turns less from AB than the step from p to r (both ahead):
+  // |cross(B - A, q - p)| / dot(B - A, q - p) < |cross(B - A, r - p)| / dot(B - A, r - p), exactly.
+  static int compare_turn(const Point& a, const Point& b, const Point& p, const Point& q, const Point& r) {
     return exact::sign([&](auto z) -> decltype(z) {
-             using NT = decltype(z);
-             NT dx = NT(b.x) - NT(a.x), dy = NT(b.y) - NT(a.y), ux = NT(q.x) - NT(p.x), uy = NT(q.y) - NT(p.y);
-             return CGAL::abs(dx * uy - dy * ux) - (dx * ux + dy * uy);
-           }) <= 0;
+      using NT = decltype(z);
+      NT dx = NT(b.x) - NT(a.x), dy = NT(b.y) - NT(a.y);
+      NT qx = NT(q.x) - NT(p.x), qy = NT(q.y) - NT(p.y), rx = NT(r.x) - NT(p.x), ry = NT(r.y) - NT(p.y);
+      return CGAL::abs(dx * qy - dy * qx) * (dx * rx + dy * ry) - CGAL::abs(dx * ry - dy * rx) * (dx * qx + dy * qy);
+    });
   }
   // sign(dot(q - p, B - A)): q ahead of p along AB.
   static int ahead(const Point& a, const Point& b, const Point& p, const Point& q) {
@@ -362,14 +364,22 @@ class Certifier {
       // this line (within 2^-20 |AB|) nearer than this chain's next vertex.
       const auto listed = [&](int w) { return listed_.count(edge_key(v, w)) != 0; };
       int best = -1;
-      // In each tier, a step that turns at most 45 degrees first: far below the
-      // tolerance's scale (features of 1e-300 at a corner of a unit square) a
-      // tier holds the first vertices of every segment that leaves v, and the
-      // nearest ahead may be another segment's (the precision campaign, docs/FUZZING.md).
-      for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t) {
-        best = nearest([&](int w) { return listed(w) && within(A, B, P(w), tiers[t]) && gentle(A, B, P(v), P(w)); });
-        if (best < 0) best = nearest([&](int w) { return listed(w) && within(A, B, P(w), tiers[t]); });
-      }
+      // In each tier, the listed step that turns least from AB (the nearest ahead
+      // among equal turns): far below the tolerance's scale (features of 1e-300 at
+      // a corner of a unit square) a tier holds the first vertices of every segment
+      // that leaves v, and the nearest ahead may be another segment's (the precision
+      // campaign, docs/FUZZING.md).
+      auto straightest = [&](auto&& qualifies) {
+        int pick = -1;
+        for (int w : ahead_of_v) {
+          if (!qualifies(w)) continue;
+          const int turn = pick < 0 ? -1 : compare_turn(A, B, P(v), P(w), P(pick));
+          if (pick < 0 || turn < 0 || (turn == 0 && ahead(A, B, P(w), P(pick)) > 0)) pick = w;
+        }
+        return pick;
+      };
+      for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
+        best = straightest([&](int w) { return listed(w) && within(A, B, P(w), tiers[t]); });
       if (best < 0) best = nearest([&](int w) { return listed(w) && near_line(A, B, P(w)); });
       for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
         best = nearest([&](int w) { return within(A, B, P(w), tiers[t]); });
