@@ -115,6 +115,18 @@ TEST(PrecisionStop, NearDuplicatesEndCleanlyFrom10To33Degrees) {
   }
 }
 
+// Shrunk from neardup30k.node at 30 degrees: a hull edge split again and again, its
+// rounded midpoints a few ulps off the line, so the boundary turns a few ulps concave
+// and the reference's faces outside the domain become slivers along it. A later
+// split would invert one: the reference left the triangle where the fast engine,
+// which keeps no outside faces, went on (ALGORITHM.md section 8b, "One difference").
+// Now the reference triangulates the outside anew around such a point.
+TEST(PrecisionStop, BoundarySliverOutsideDoesNotStopTheReference) {
+  const Pslg p = load("boundary-sliver.node");
+  for (int theta : thetas()) both_engines(p, theta, Method::Centroid, fmt::format("boundary-sliver at {}", theta));
+  for (int theta : {20, 25}) both_engines(p, theta, Method::Midpoint, fmt::format("boundary-sliver midpoint at {}", theta));
+}
+
 TEST(PrecisionStop, NearDuplicatesLong) {
   if (!long_tests()) GTEST_SKIP() << "LEPP_LONG_TESTS=1 runs the 30000-point set";
   const Pslg p = load("neardup30k.node");

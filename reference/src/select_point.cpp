@@ -107,6 +107,99 @@ bool near(const Triangulation& tr, const Point& p, VH v) {
   return id(v) >= 0 && lepp::below_precision_floor(p, tr.coords[static_cast<std::size_t>(id(v))]);
 }
 
+// A split of the constrained edge ab of face f at p can go into the edge itself:
+// both faces it makes across ab, in the domain or outside, are counter-clockwise.
+bool splits_in_edge(const Triangulation& tr, FH f, int i, const CPoint& p) {
+  FH n = f->neighbor(i);
+  if (tr.cdt.is_infinite(n)) return true;
+  VH a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i)), d = n->vertex(n->index(f));
+  return orient(b, p, d) == CGAL::LEFT_TURN && orient(p, a, d) == CGAL::LEFT_TURN;
+}
+
+// A boundary split whose outside faces would not be counter-clockwise: earlier
+// rounded midpoints made the boundary a few ulps concave, so the outside face
+// across ab is a sliver along it and p, half an ulp off ab, lies beyond it. The
+// fast engine keeps no outside faces; its split (a, p, c), (p, b, c) is a valid
+// mesh unless the thin triangle a, p, b (p outside ab) holds another vertex or a
+// constrained edge enters it, and then the reference cannot make it either
+// (ALGORITHM.md section 8b, "The one difference left"). Rare (only when the outside
+// test fails): every vertex and constrained edge is scanned.
+bool outside_clear(const Triangulation& tr, VH a, VH b, const CPoint& p) {
+  const CPoint &pa = a->point(), &pb = b->point();
+  if (CGAL::orientation(pa, pb, p) != CGAL::RIGHT_TURN) return true;  // p in the domain face or on ab
+  for (VH w : tr.vertex) {
+    if (w == a || w == b) continue;
+    const CPoint& q = w->point();
+    if (CGAL::orientation(pa, p, q) != CGAL::RIGHT_TURN && CGAL::orientation(p, pb, q) != CGAL::RIGHT_TURN &&
+        CGAL::orientation(pb, pa, q) != CGAL::RIGHT_TURN)
+      return false;
+  }
+  const K::Segment_2 ap(pa, p), pb_(p, pb);
+  for (const auto& [key, segment] : tr.segment_of_edge) {
+    VH u = tr.vertex[static_cast<std::size_t>(key.first)], w = tr.vertex[static_cast<std::size_t>(key.second)];
+    if ((u == a && w == b) || (u == b && w == a)) continue;
+    if (w == a || w == b) std::swap(u, w);
+    const CPoint& q = w->point();
+    // An edge from a (or b) enters the triangle iff it leaves into the angle at a (or b).
+    if (u == a) {
+      if (CGAL::orientation(pa, pb, q) == CGAL::RIGHT_TURN && CGAL::orientation(pa, p, q) != CGAL::RIGHT_TURN) return false;
+    } else if (u == b) {
+      if (CGAL::orientation(pa, pb, q) == CGAL::RIGHT_TURN && CGAL::orientation(p, pb, q) != CGAL::RIGHT_TURN) return false;
+    } else {
+      const K::Segment_2 e(u->point(), q);
+      if (CGAL::do_intersect(e, ap) || CGAL::do_intersect(e, pb_)) return false;
+    }
+  }
+  return true;
+}
+
+void set_constrained(Cdt& cdt, VH u, VH w, bool on) {
+  FH f;
+  int i;
+  if (!cdt.is_edge(u, w, f, i)) throw std::logic_error("reference: a boundary split lost an edge of its triangles");
+  f->set_constraint(i, on);
+  f->neighbor(i)->set_constraint(f->neighbor(i)->index(f), on);
+}
+
+// The split of boundary edge ab (face f = abc in the domain) at p when the
+// outside faces forbid splitting the edge itself (outside_clear holds): the
+// domain gets the fast engine's faces (a, p, c), (p, b, c), the outside is
+// triangulated around p anew. p strictly inside abc: inserted in the face, ab
+// leaves the domain with (a, b, p). p outside ab: inserted where it lies, av
+// and vb become constraints (ab stays constrained meanwhile, so no flip reaches
+// the domain), then ab, between abc and the empty triangle (a, p, b), is flipped.
+VH split_past_outside(Triangulation& tr, FH f, int i, const CPoint& p) {
+  Cdt& cdt = tr.cdt;
+  VH a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i));
+  VH v;
+  if (CGAL::orientation(a->point(), b->point(), p) == CGAL::LEFT_TURN) {
+    v = cdt.Cdt::Ctr::insert(p, Cdt::FACE, f, -1);
+    set_constrained(cdt, a, v, true);
+    set_constrained(cdt, v, b, true);
+    set_constrained(cdt, a, b, false);
+    return v;
+  }
+  Cdt::Locate_type lt;
+  int li;
+  FH loc = cdt.locate(p, lt, li, f->neighbor(i));
+  if (lt != Cdt::FACE && lt != Cdt::EDGE) throw std::logic_error("reference: a boundary split's point is on a vertex outside");
+  v = cdt.Cdt::Ctr::insert(p, lt, loc, li);
+  cdt.Cdt::Ctr::insert_constraint(a, v);
+  cdt.Cdt::Ctr::insert_constraint(v, b);
+  FH g;
+  int k;
+  if (!cdt.is_edge(a, b, g, k)) throw std::logic_error("reference: a boundary split lost its edge");
+  if (!g->has_vertex(v)) {
+    FH h = g->neighbor(k);
+    k = h->index(g);
+    g = h;
+  }
+  if (!g->has_vertex(v) || g->neighbor(k)->has_vertex(v)) throw std::logic_error("reference: a boundary split left vertices beside its edge");
+  set_constrained(cdt, a, b, false);
+  cdt.flip(g, k);
+  return v;
+}
+
 }  // namespace
 
 bool insertable(const Triangulation& tr, const Selection& s, const Lepp& lepp) {
@@ -125,7 +218,9 @@ bool insertable(const Triangulation& tr, const Selection& s, const Lepp& lepp) {
     VH d = n->vertex(n->index(f));
     // The far side's apex is held to the floor only in the domain (the fast engine's view).
     if (n->info().in_domain && near(tr, s.point, d)) return false;
-    return orient(b, p, d) == CGAL::LEFT_TURN && orient(p, a, d) == CGAL::LEFT_TURN;
+    // Across a domain face: the fast engine's test. Outside: the fast engine's view,
+    // the outside triangulated anew if need be (split_past_outside).
+    return splits_in_edge(tr, f, i, p) || (!n->info().in_domain && outside_clear(tr, a, b, p));
   }
   for (FH t : {lepp.t1, lepp.t2})
     if (t != FH())
@@ -273,7 +368,9 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* 
     // Insert into the edge itself even when the rounded midpoint is half an
     // ulp off the line: CGAL then keeps both halves constrained, where a
     // located insert would drop the point into a face beside the old constraint.
-    v = cdt.Cdt::Ctr::insert(p, Cdt::EDGE, f, i);
+    // Unless the faces that makes outside the domain would not be counter-clockwise.
+    const bool outside_anew = !splits_in_edge(tr, f, i, p) && !right.in_domain;
+    v = outside_anew ? split_past_outside(tr, f, i, p) : cdt.Cdt::Ctr::insert(p, Cdt::EDGE, f, i);
   } else {
     Cdt::Locate_type lt;
     int li;
