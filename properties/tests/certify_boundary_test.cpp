@@ -89,6 +89,44 @@ TEST(CertifyBoundary, DuplicateThatSortsFirstIsFound) {
   EXPECT_TRUE(reports_pair(r, 4, 5)) << certify::format_report(r);
 }
 
+// Issue 20: Triangle keeps an input's exactly repeated vertex in its .node, unused,
+// and its triangles use the other copy. Such a copy (of an input vertex, in no
+// triangle) is merged with a warning, whichever copy comes first; a repeated
+// Steiner point, or two copies both in triangles, stays a violation.
+TEST(CertifyBoundary, UnusedDuplicateOfAnInputVertexIsMerged) {
+  const Pslg sq = polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  Mesh m;  // as read from another mesher's files: no vertex promised to be an input vertex
+  m.vertices = sq.vertices;
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  ASSERT_TRUE(certify::certify(sq, m, {}).certified());
+  for (bool first : {true, false}) {
+    // The copy in no triangle before the used one (Triangle's order), or after it.
+    Mesh d = m;
+    d.vertices.push_back(d.vertices[1]);
+    if (first) d.triangles[0] = {0, 4, 2};
+    const certify::Report r = certify::certify(sq, d, {});
+    EXPECT_TRUE(r.certified()) << (first ? "unused copy first" : "unused copy last") << "\n" << certify::format_report(r);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find(first ? "mesh vertex 1 duplicates mesh vertex 4 (4, 0)" : "mesh vertex 4 duplicates mesh vertex 1 (4, 0)"),
+              std::string::npos)
+        << r.warnings[0];
+  }
+  // Both copies in triangles: two vertices at one point, not a merge.
+  Mesh both = m;
+  both.vertices.push_back(both.vertices[0]);
+  both.triangles[0] = {4, 1, 2};
+  const certify::Report r2 = certify::certify(sq, both, {});
+  EXPECT_TRUE(reports_pair(r2, 0, 4)) << certify::format_report(r2);
+  EXPECT_TRUE(r2.warnings.empty());
+  // A repeated point that is no input vertex, in no triangle: still a violation.
+  Mesh steiner = m;
+  steiner.vertices.push_back({1, 1});
+  steiner.vertices.push_back({1, 1});
+  const certify::Report r3 = certify::certify(sq, steiner, {});
+  EXPECT_TRUE(reports_pair(r3, 4, 5)) << certify::format_report(r3);
+  EXPECT_TRUE(r3.warnings.empty());
+}
+
 // ---- --split-crossings ------------------------------------------------------
 Pslg crossing_pslg() { return test::crossing_split(LEPP_SOURCE_DIR); }
 using test::as_read;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
+#include <unordered_set>
 #include <map>
 #include <set>
 
@@ -85,6 +86,7 @@ class Certifier {
   std::vector<int> twin_;              // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
   std::vector<std::array<int, 2>> edges_;  // unique edges (a < b) of valid triangles
   std::vector<char> used_;
+  std::vector<char> merged_;           // an unused exact duplicate of an input vertex (check_duplicate_vertices)
   std::vector<int> input_to_mesh_;     // input vertex id -> mesh vertex id, -1 missing
   std::vector<int> mesh_to_input_;     // mesh vertex id -> input vertex id, -1 Steiner
   std::vector<int> adj_begin_, adj_;   // vertex adjacency (CSR)
@@ -188,17 +190,42 @@ class Certifier {
 
   static bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+  // Mesh vertices with the same coordinates are a violation, except an exact
+  // duplicate of an input vertex that no triangle uses: Triangle keeps an input's
+  // repeated vertex in its .node, unused, and meshes with one copy (as lepp's
+  // validate merges it). Such a copy is merged into the one in use, with a warning.
   void check_duplicate_vertices() {
     std::vector<int> order;
     for (std::size_t i = 0; i < mesh_.vertices.size(); ++i)
       if (finite(mesh_.vertices[i])) order.push_back(static_cast<int>(i));  // NaN breaks the sort's order
     auto less = [&](int a, int b) { return P(a).x < P(b).x || (P(a).x == P(b).x && P(a).y < P(b).y); };
     std::sort(order.begin(), order.end(), less);
-    for (std::size_t i = 1; i < order.size(); ++i)
-      if (P(order[i - 1]) == P(order[i]))
-        add({Reason::DuplicateMeshVertex,
-             fmt::format("mesh vertices {} and {} have the same coordinates {}", order[i - 1], order[i], pt(P(order[i]))), {}, {},
-             {order[i - 1], order[i]}, {}, -1});
+    std::unordered_set<Point, PointHash> input(pslg_.vertices.begin(), pslg_.vertices.end());
+    merged_.assign(mesh_.vertices.size(), 0);
+    for (std::size_t i = 0; i < order.size();) {
+      std::size_t j = i + 1;
+      while (j < order.size() && P(order[j]) == P(order[i])) ++j;
+      std::size_t in_use = 0;
+      for (std::size_t k = i; k < j; ++k) in_use += used_[static_cast<std::size_t>(order[k])];
+      if (j - i > 1 && in_use <= 1 && input.count(P(order[i]))) {
+        // The copy the triangles use (else the first) stands for the input vertex.
+        int kept = order[i];
+        for (std::size_t k = i; k < j; ++k)
+          if (used_[static_cast<std::size_t>(order[k])]) kept = order[k];
+        for (std::size_t k = i; k < j; ++k)
+          if (order[k] != kept) {
+            merged_[static_cast<std::size_t>(order[k])] = 1;
+            report_.warnings.push_back(fmt::format("mesh vertex {} duplicates mesh vertex {} {}, an input vertex, and is in no triangle; merged",
+                                                   order[k], kept, pt(P(kept))));
+          }
+      } else {
+        for (std::size_t k = i + 1; k < j; ++k)
+          add({Reason::DuplicateMeshVertex,
+               fmt::format("mesh vertices {} and {} have the same coordinates {}", order[k - 1], order[k], pt(P(order[k]))), {}, {},
+               {order[k - 1], order[k]}, {}, -1});
+      }
+      i = j;
+    }
   }
 
   // --- 2. Input preservation ----------------------------------------------
@@ -208,7 +235,8 @@ class Certifier {
     mesh_to_input_.assign(mesh_.vertices.size(), -1);
     std::unordered_map<Point, int, PointHash> where;
     where.reserve(mesh_.vertices.size() * 2);
-    for (std::size_t i = mesh_.vertices.size(); i-- > 0;) where[mesh_.vertices[i]] = static_cast<int>(i);
+    for (std::size_t i = mesh_.vertices.size(); i-- > 0;)
+      if (!merged_[i]) where[mesh_.vertices[i]] = static_cast<int>(i);  // the first copy not merged away
     for (std::size_t i = 0; i < n; ++i) {
       const Point& p = pslg_.vertices[i];
       if (i < mesh_.input_vertices) {
@@ -255,7 +283,7 @@ class Certifier {
 
   void check_unused_vertices() {
     for (std::size_t v = 0; v < mesh_.vertices.size(); ++v) {
-      if (used_[v]) continue;
+      if (used_[v] || merged_[v]) continue;
       const int in = mesh_to_input_[v];
       if (in >= 0 && !domain_.vertex_in_domain[static_cast<std::size_t>(in)]) continue;  // outside the domain: may be unused
       if (in >= 0) continue;  // reported as InputVertexMissing

@@ -123,6 +123,7 @@ std::string format_report(const Report& report) {
   out += fmt::format("checked: {} in-circle tests ({} cocircular), {} constrained edges, {} terminal pairs (Theorem 2){}\n",
                      s.delaunay_edges_checked, s.cocircular_edges, s.constrained_edges, s.terminal_pairs_checked,
                      report.min_angle_deg > 0 ? fmt::format(", min angle >= {}", report.min_angle_deg) : std::string());
+  for (const std::string& w : report.warnings) out += fmt::format("warning: {}\n", w);
   if (!report.unimprovable_accepted.empty()) {
     std::size_t precision = 0;
     for (const UnimprovableTriangle& u : report.unimprovable_accepted) precision += u.reason == LeftReason::DoublePrecision;

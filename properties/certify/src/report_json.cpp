@@ -71,6 +71,7 @@ nlohmann::json json_report(const Report& r, std::size_t max_listed) {
           {"exempt_triangles", exempt},
           {"precision_exempt_count", r.precision_exempt_count},
           {"precision_exempt_triangles", precision},
+          {"warnings", r.warnings},
           {"size_bound",
            {{"max_area", r.max_area}, {"region_areas", r.region_area_bounds}, {"triangles_checked", r.area_checked}, {"regions", regions}}}};
 }

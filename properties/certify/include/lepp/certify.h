@@ -139,6 +139,9 @@ struct Report {
   std::vector<int> precision_exempt_triangles;
   std::size_t precision_exempt_count = 0;
   Statistics stats;
+  // Not violations: each unused exact duplicate of an input vertex merged into the
+  // copy the triangles use (as Triangle's .node keeps an input's repeated vertex).
+  std::vector<std::string> warnings;
   double min_angle_deg = 0;  // the theta checked (0: none)
   // The size bounds checked (Options::max_area, Options::region_area_bounds) and, with
   // region bounds, per region: where its point lies, how many triangles it kept after
