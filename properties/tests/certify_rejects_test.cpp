@@ -467,12 +467,23 @@ TEST(CertifyRejects, DuplicateMeshVertex) {
   auto v = std::find_if(r.violations.begin(), r.violations.end(), [](const certify::Violation& x) { return x.reason == Reason::DuplicateMeshVertex; });
   ASSERT_NE(v, r.violations.end());
   EXPECT_EQ(v->vertices, (std::vector<int>{original, copy}));
-  // An unused copy alone: a duplicate (and an unused Steiner vertex), nothing else.
+  // An unused copy alone of an input vertex: merged with a warning, as Triangle's .node
+  // keeps an input's repeated vertex (docs/CERTIFIER.md section 1; issue 20).
   Mesh unused = good;
   unused.vertices.push_back(unused.vertices[static_cast<std::size_t>(original)]);
   const auto u = run(p, unused);
-  expect_rejected_for(u, Reason::DuplicateMeshVertex);
-  EXPECT_EQ(u.count(Reason::DuplicateMeshVertex) + u.count(Reason::UnusedVertex), 2u) << certify::format_report(u);
+  expect_certified(u);
+  EXPECT_EQ(u.warnings.size(), 1u) << certify::format_report(u);
+  // An unused copy of a point that is no input vertex: a duplicate (and an unused Steiner
+  // vertex), nothing else.
+  Mesh steiner = good;
+  const Point mid{(good.vertices[0].x + good.vertices[1].x) / 2 + 0.25, (good.vertices[0].y + good.vertices[1].y) / 2 + 0.25};
+  steiner.vertices.push_back(mid);
+  steiner.vertices.push_back(mid);
+  const auto w = run(p, steiner);
+  expect_rejected_for(w, Reason::DuplicateMeshVertex);
+  EXPECT_EQ(w.count(Reason::DuplicateMeshVertex), 1u) << certify::format_report(w);
+  EXPECT_EQ(w.count(Reason::UnusedVertex), 2u) << certify::format_report(w);
 }
 
 TEST(CertifyRejects, MoreInputVerticesClaimedThanTheInputHas) {
