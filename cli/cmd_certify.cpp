@@ -26,6 +26,7 @@ struct CertifyArgs {
   bool json = false;
   bool exempt = false;
   bool exempt_precision = false;
+  bool ties_by_ids = false;
   std::string method = "centroid";
   double max_area = 0;
   bool region_areas = false;
@@ -56,6 +57,7 @@ int run_certify(const CertifyArgs& args) {
   options.max_listed_per_reason = args.max_listed;
   options.exempt_small_input_angles = args.exempt;
   options.exempt_precision_limited = args.exempt_precision;
+  options.precision_ties_by_ids = args.ties_by_ids;
   options.precision_method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
@@ -91,6 +93,10 @@ void add_certify_command(CLI::App& app, int& status) {
   cmd->add_flag("--exempt-precision-limited", args->exempt_precision,
                 "Triangles below --min-angle for which every point Select Point allows (--method), rounded to doubles in "
                 "every way, cannot be inserted are exempt, counted apart (docs/CERTIFIER.md section 5c; input and mesh only)");
+  cmd->add_flag("--precision-ties-by-ids", args->ties_by_ids,
+                "With the precision-limit exemption (and for PREFIX.unimprovable's double-precision lines): equal edge "
+                "lengths decided by vertex ids, as lepp's engines decide them; reads numbering, so only for lepp's own "
+                "meshes, no certificate for another mesher (docs/CERTIFIER.md section 5c, Finding)");
   cmd->add_option("--method", args->method, "The Select Point of the precision-limit exemption: centroid or midpoint")
       ->default_val("centroid")
       ->check(CLI::IsMember({"centroid", "midpoint"}));

@@ -66,4 +66,15 @@ assert len(listed) == 2 and listed[0]["check"] == "size-bound" and listed[0]["re
 ' "$dir/out" || { cat "$dir/out"; fail "json size bound"; }
 "$lepp" certify "$ra" "$dir/ra" --max-area 0.2 --region-areas > /dev/null 2>&1; s=$?
 [ $s -eq 1 ] || fail "mesh with the region bounds, checked with a smaller global one too: exit $s"
+# --precision-ties-by-ids (docs/CERTIFIER.md section 5c, Finding): lepp leaves a triangle of
+# tie-finding.poly at 20 degrees that another resolution of an exact length tie could refine;
+# the strict rule rejects lepp's double-precision claim, lepp's own tie rule accepts it.
+tie="$src/corpus/regressions/precision/tie-finding.poly"
+"$lepp" refine "$tie" -o "$dir/tie" --min-angle 20 -q > /dev/null; s=$?
+[ $s -eq 3 ] || fail "refine tie-finding: exit $s"
+"$lepp" certify "$tie" "$dir/tie" --min-angle 20 --exempt-precision-limited > "$dir/out"; s=$?
+[ $s -eq 1 ] || { cat "$dir/out"; fail "tie-finding, strict: exit $s"; }
+grep -q '^unimprovable-rule-fails: .*listed as limited by double precision' "$dir/out" || { cat "$dir/out"; fail "tie-finding: no rule-fails line"; }
+"$lepp" certify "$tie" "$dir/tie" --min-angle 20 --exempt-precision-limited --precision-ties-by-ids > "$dir/out"; s=$?
+[ $s -eq 0 ] || { cat "$dir/out"; fail "tie-finding, ties by ids: exit $s"; }
 echo "OK"
