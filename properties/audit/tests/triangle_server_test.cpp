@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -55,7 +56,22 @@ TEST(TriangleServer, SameOutputAsOneProcessPerCase) {
   EXPECT_EQ(bad.status, 2) << bad.output;
   EXPECT_EQ(server.starts(), 1u);
   // Past its timeout the case is killed with its process; the next case gets a new one.
-  const others::TriangleRun late = server.run(kRoot + "/corpus/paper/circles240.poly", 33, 20000, (dir / "late").string(), 1e-4);
+  // The case must outlast its timeout on any machine: a paper problem takes
+  // about a millisecond in the server, as long as the shortest wait, and a fast
+  // machine answered in time (CI, 2026-12-02). 60,000 points take Triangle a
+  // few hundred milliseconds, a hundred times the timeout.
+  const std::string big = (dir / "big.poly").string();
+  {
+    std::ofstream out(big);
+    std::mt19937_64 rng(20261202);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const int points = 60000;
+    out.precision(17);
+    out << points << " 2 0 0\n";
+    for (int i = 1; i <= points; ++i) out << i << " " << u(rng) << " " << u(rng) << "\n";
+    out << "0 0\n0\n";
+  }
+  const others::TriangleRun late = server.run(big, 30, 0, (dir / "late").string(), 1e-3);
   EXPECT_EQ(late.status, -1);
   EXPECT_NE(late.output.find("killed after"), std::string::npos) << late.output;
   const others::TriangleRun again = server.run(kRoot + "/corpus/paper/A.poly", 30, 20000, (dir / "again").string(), 60);
