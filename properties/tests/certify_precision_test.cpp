@@ -8,10 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "lepp/certify.h"
 #include "lepp/fast.h"
+#include "lepp/reference.h"
 #include "lepp/input.h"
 #include "lepp/validate.h"
 
@@ -123,6 +125,50 @@ TEST(CertifyPrecision, RejectsAWrongClaim) {
   EXPECT_EQ(alone.precision_exempt_count, 0u);
   EXPECT_TRUE(alone.has(certify::Reason::AngleBelowTheta));
 }
+
+
+// Remark 10 at the precision limit (issue 20's subnormal fuzz findings): t1 = (0, 0), (10, 0),
+// (0, 1) and t2 = (0, 1), (10, 0), (1, 4), in units of the smallest subnormal. t1's second-longest
+// edge lies on the boundary, t2's does not, so the choice is the centroid (11/4, 5/4) if it is
+// strictly inside t2, else the midpoint (5, 0) of t1's boundary edge. Every rounding of the
+// centroid, (2 or 3, 1 or 2), is strictly inside t2 and within the precision floor of (0, 1): no
+// mesher may take the midpoint, which could be inserted, so both triangles are precision-limited.
+Pslg subnormal_pair() {
+  const double s = std::numeric_limits<double>::denorm_min();
+  Pslg p;
+  p.vertices = {{0, 0}, {10 * s, 0}, {0, s}, {s, 4 * s}, {9 * s, 10 * s}};
+  p.segments = {{0, 1, 0}, {1, 4, 0}, {4, 3, 0}, {3, 2, 0}, {2, 0, 0}};
+  std::vector<std::string> warnings;
+  return validate(p, warnings);
+}
+
+TEST(CertifyPrecision, CentroidInOtherBelowTheFloorLeavesNoMidpointChoice) {
+  const Pslg p = subnormal_pair();
+  for (const bool fast_engine : {true, false}) {
+    RefineOptions o;
+    o.min_angle_deg = 20;
+    const RefineResult r = fast_engine ? fast::refine(p, o) : reference::refine(p, o);
+    ASSERT_EQ(r.outcome, Outcome::Unimprovable) << (fast_engine ? "fast" : "reference");
+    ASSERT_EQ(r.steiner_points, 0);
+    const auto left = at_precision(r);
+    ASSERT_EQ(left.size(), 2u);
+    for (const UnimprovableTriangle& u : left) EXPECT_EQ(u.rule, Rule::CentroidInOther);
+
+    certify::Options listed;
+    listed.min_angle_deg = 20;
+    listed.unimprovable = r.unimprovable;
+    const certify::Report rep = certify::certify(p, r.mesh, listed);
+    EXPECT_TRUE(rep.certified()) << certify::format_report(rep);
+
+    certify::Options rule;
+    rule.min_angle_deg = 20;
+    rule.exempt_precision_limited = true;
+    const certify::Report alone = certify::certify(p, r.mesh, rule);
+    EXPECT_TRUE(alone.certified()) << certify::format_report(alone);
+    EXPECT_EQ(alone.precision_exempt_count, 2u);
+  }
+}
+
 
 // A mesher that writes the precision-limited triangle inverted is not excused.
 TEST(CertifyPrecision, RejectsAnInvertedTriangleThere) {

@@ -143,10 +143,16 @@ class Search {
           if (split_insertable_any(s1, midpoints(s1)) || split_insertable_any(s2, midpoints(s2))) return false;
         } else {
           // Remark 10: the centroid if strictly inside the other triangle, else the midpoint of l*.
+          // The midpoint is a choice only when some rounding of the centroid is not strictly
+          // inside (the four directed roundings box the exact centroid: all four strictly inside
+          // the convex triangle means the exact one is too, and no mesher may take the midpoint).
           const int other = c1 ? g / 3 : h / 3, star_edge = c1 ? s1 : s2;
-          for (const Point& p : centroids(h, g))
-            if (strictly_inside(other, p) && !near_pair_vertex(h, p)) return false;
-          if (split_insertable_any(star_edge, midpoints(star_edge))) return false;
+          bool outside = false;
+          for (const Point& p : centroids(h, g)) {
+            if (!strictly_inside(other, p)) outside = true;
+            else if (!near_pair_vertex(h, p)) return false;
+          }
+          if (outside && split_insertable_any(star_edge, midpoints(star_edge))) return false;
         }
       }
     return true;
