@@ -505,8 +505,32 @@ struct Replay::Impl {
     return r;
   }
 
+  // p inserted as candidate c of terminal t passes the precision stop's test
+  // (ALGORITHM.md section 8b): the split of c's edge at p makes counter-clockwise
+  // triangles, or p lies in the closed pair, beyond the precision floor.
+  bool insertable_as(const Point& p, const Terminal& t, const Candidate& c) const {
+    Selection s;
+    s.point = p;
+    if (c.split_a != VH()) {
+      FH f;
+      int i;
+      if (!tr.cdt.is_edge(c.split_a, c.split_b, f, i)) return false;
+      if (!in_domain(f)) {
+        FH n = f->neighbor(i);
+        i = n->index(f), f = n;
+      }
+      s.split_face = f, s.split_index = i;
+    }
+    Lepp lepp;
+    lepp.t1 = t.t1, lepp.t2 = t.t2, lepp.edge = t.l;
+    return insertable(tr, s, lepp);
+  }
+
+  // At the precision limit several choices lie within the tolerance of p (a
+  // midpoint a few ulps off its edge is also near the midpoint of the next
+  // one): the first that can be inserted at p is taken, else the first.
   bool match_here(const Point& p, ReplayChoice& out) {
-    bool at_vertex = false;
+    bool at_vertex = false, found = false;
     std::vector<FH> faces = faces_near(p, at_vertex);
     if (at_vertex) return false;
     for (const Terminal& t : terminals(faces)) {
@@ -522,11 +546,14 @@ struct Replay::Impl {
         }
         if (path.empty()) continue;
         if (used.t2 != FH()) path.push_back(used.t2);
-        out = describe(used, c, p, path);
-        return true;
+        if (insertable_as(p, used, c)) {
+          out = describe(used, c, p, path);
+          return true;
+        }
+        if (!found) out = describe(used, c, p, path), found = true;
       }
     }
-    return false;
+    return found;
   }
 
   // An unconstrained edge between two domain triangles whose four points are

@@ -179,6 +179,28 @@ RC_GTEST_PROP(Conformance, OwnTracesOnGeneratedPslgs, ()) {
             std::to_string(theta) + ": " + describe(report));
 }
 
+// At the precision limit two choices can lie within the point tolerance of one traced point
+// (issue 20's fuzz_engine finding): lepp splits the terminal edge (1, 538) at its midpoint,
+// a few ulps above y = 0, and the constrained midpoint of the boundary edge beside it is
+// within the tolerance too; split there, the point makes a clockwise triangle. The replay
+// takes the choice that can be inserted at the point.
+TEST(Conformance, AtThePrecisionLimitTheChoiceThatCanBeInsertedIsTaken) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(
+      read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/regressions/precision/replay-two-choices-in-tolerance.poly"),
+      warnings);
+  RefineOptions o;
+  o.method = Method::Midpoint;
+  o.min_angle_deg = 20;
+  o.trace = true;
+  const RefineResult r = fast::refine(p, o);
+  ASSERT_EQ(r.outcome, Outcome::Unimprovable);
+  ASSERT_GT(r.precision_stops, 0) << "the input must reach the precision stop";
+  const ConformanceReport report = check_conformance(p, points_of(r), options(Method::Midpoint, 20));
+  EXPECT_TRUE(report.conforms) << describe(report);
+  EXPECT_EQ(report.steps_checked, r.trace.size());
+}
+
 // ---- exactly rounded choices conform ----
 
 // A toy implementation on the replay: at every step, one of the paper's
