@@ -135,7 +135,7 @@ class Refiner {
 
         prefetch_around(lepp);
         Choice choice = select_point(mesh_, lepp, opt_.method);
-        if (!choice_insertable(mesh_, lepp, choice) && !round_otherwise(mesh_, lepp, choice)) {  // the precision stop (section 8b)
+        if (!choice_insertable(mesh_, lepp, choice, outside_) && !round_otherwise(mesh_, lepp, choice, outside_)) {  // the precision stop (section 8b)
           ++result.precision_stops;
           stopped_.push_back({item, choice.rule, choice.point});
           break;
@@ -282,6 +282,7 @@ class Refiner {
   Quality quality_;
   TriMesh mesh_;
   Inserter inserter_;
+  OutsideOfDomain outside_{pslg_, mem_};  // the sliver clause's input outside the domain (section 8b)
   std::vector<Stopped> stopped_;
   std::int64_t refill_mark_ = 0;
 };

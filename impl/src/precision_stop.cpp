@@ -23,7 +23,7 @@ std::vector<double> around(const mpq_class& q) {
 
 }  // namespace
 
-bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c) {
+bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDomain& outside) {
   mpq_class x, y;
   const FTri& f1 = m.t(lepp.t1);
   const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
@@ -44,7 +44,7 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c) {
       alt.point = {px, py};
       if (alt.point == c.point) continue;
       if (c.rule == Rule::CentroidInOther && !strictly_inside(m, c.tri, alt.point)) continue;  // the branch's condition
-      if (choice_insertable(m, lepp, alt)) {
+      if (choice_insertable(m, lepp, alt, outside)) {
         c = alt;
         return true;
       }

@@ -3,8 +3,10 @@
 // rounded to doubles, be inserted where its insertion needs it? If not, the
 // bad triangle is left (listed as unimprovable at double precision).
 #pragma once
+#include "lepp/boundary_sliver.h"
 #include "lepp/refine.h"
 #include "lepp_search.h"
+#include "outside_input.h"
 #include "point_selection.h"
 #include "predicates.h"
 #include "tri_mesh.h"
@@ -15,11 +17,17 @@ namespace lepp::fast {
 // each domain side of the edge, is counter-clockwise (the rounded midpoint
 // may be half an ulp off the edge's line, or on an endpoint), and no new edge
 // is below the precision floor (lepp::below_precision_floor: a few ulps).
-inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p) {
+// On the domain boundary with p strictly outside, the split also covers the
+// closed sliver a, p, b: no input vertex or segment outside the domain may be
+// in it (the sliver clause; a linear scan of those, which only this branch
+// reaches and which there is no spatial index of).
+inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p, OutsideOfDomain& outside) {
   const FTri& f = m.t(ti);
   const Point &a = m.p(f.v[next3(i)]), &b = m.p(f.v[prev3(i)]), &c = m.p(f.v[i]);
   if (orient(a, p, c) <= 0 || orient(p, b, c) <= 0) return false;
   if (below_precision_floor(p, a) || below_precision_floor(p, b) || below_precision_floor(p, c)) return false;
+  if (f.nbr[i] < 0 && orient(a, b, p) < 0)
+    return !sliver_blocked(outside.of(m), a, b, p, [](const Point& x, const Point& y, const Point& z) { return orient(x, y, z); });
   if (f.nbr[i] < 0) return true;
   const FTri& g = m.t(nbr_tri(f.nbr[i]));
   const Point& d = m.p(g.v[nbr_edge(f.nbr[i])]);
@@ -53,8 +61,8 @@ inline int place_in(const TriMesh& m, int ti, const Point& p) {
 // A point for a CDT insertion: in the closed terminal quad (t1, else t2),
 // off its vertices and off constrained edges, and farther than the precision
 // floor from the vertices of the pair.
-inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c) {
-  if (c.edge >= 0) return split_insertable(m, c.tri, c.edge, c.point);
+inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c, OutsideOfDomain& outside) {
+  if (c.edge >= 0) return split_insertable(m, c.tri, c.edge, c.point, outside);
   if (near_pair_vertex(m, lepp, c.point)) return false;
   const int in_first = place_in(m, c.tri, c.point);
   if (in_first != 0 || c.other < 0) return in_first > 0;
@@ -65,6 +73,6 @@ inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& 
 // (each coordinate rounded down and up), in ascending x then y, the first that
 // can (and, for centroid-in-other, is still strictly inside the other triangle)
 // replaces it. False when none can: the triangle is left.
-bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c);
+bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDomain& outside);
 
 }  // namespace lepp::fast

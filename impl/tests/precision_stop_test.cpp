@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -19,6 +21,7 @@
 #include "lepp/io.h"
 #include "lepp/validate.h"
 #include "lepp/reference.h"
+#include "precision_stop.h"
 #include "result_diff.h"
 
 namespace lepp {
@@ -119,12 +122,90 @@ TEST(PrecisionStop, NearDuplicatesEndCleanlyFrom10To33Degrees) {
 // rounded midpoints a few ulps off the line, so the boundary turns a few ulps concave
 // and the reference's faces outside the domain become slivers along it. A later
 // split would invert one: the reference left the triangle where the fast engine,
-// which keeps no outside faces, went on (ALGORITHM.md section 8b, "One difference").
+// which keeps no outside faces, went on (ALGORITHM.md section 8b, "The faces outside the domain").
 // Now the reference triangulates the outside anew around such a point.
 TEST(PrecisionStop, BoundarySliverOutsideDoesNotStopTheReference) {
   const Pslg p = load("boundary-sliver.node");
   for (int theta : thetas()) both_engines(p, theta, Method::Centroid, fmt::format("boundary-sliver at {}", theta));
   for (int theta : {20, 25}) both_engines(p, theta, Method::Midpoint, fmt::format("boundary-sliver midpoint at {}", theta));
+}
+
+// The sliver clause (ALGORITHM.md section 8b) at its boundary. At X = 2^40, u = 2^-12
+// its ulp: the domain is the quadrilateral A = (X, X), B = (X + 12u, X + u),
+// (X + 12u, X + 48u), (X, X + 48u) with input vertex C = (X + 6u, X + 4u) inside, so
+// ABC (28.9 degrees, no input angle) is a triangle whose longest edge AB is on the
+// boundary. AB's midpoint rounds (to even) to P = (X + 6u, X), half an ulp outside;
+// the other rounding (X + 6u, X + u) is within the precision floor of C. Input vertex
+// 3, outside the domain, at (X + 2u, X + dy): on the segment AP for dy = 0.
+Pslg sliver_input(double dy) {
+  const double X = std::ldexp(1.0, 40), u = std::ldexp(1.0, -12);
+  Pslg p;
+  p.vertices = {{X, X}, {X + 12 * u, X + u}, {X + 6 * u, X + 4 * u}, {X + 2 * u, X + dy}, {X + 12 * u, X + 48 * u}, {X, X + 48 * u}};
+  p.segments = {{0, 1}, {1, 4}, {4, 5}, {5, 0}};
+  std::vector<std::string> warnings;
+  return validate(p, warnings);
+}
+
+bool same_triangle(Tri x, Tri y) {
+  std::sort(x.begin(), x.end());
+  std::sort(y.begin(), y.end());
+  return x == y;
+}
+bool has_triangle(const Mesh& m, Tri t) {
+  return std::any_of(m.triangles.begin(), m.triangles.end(), [&](const Tri& x) { return same_triangle(x, t); });
+}
+
+// The vertex on AP: the split at P would cover it, so ABC is left at double precision
+// (both engines, the mesh certifies: the certifier exempts the stop). Without the
+// clause the fast engine split AB there and the engines parted.
+TEST(PrecisionStop, SliverClauseVertexOnTheSliverLeavesTheTriangle) {
+  const Pslg p = sliver_input(0);
+  for (Method method : {Method::Centroid, Method::Midpoint}) {
+    both_engines(p, 30, method, "sliver, vertex on AP");
+    RefineOptions o;
+    o.min_angle_deg = 30;
+    o.method = method;
+    const RefineResult r = fast::refine(p, o);
+    EXPECT_TRUE(has_triangle(r.mesh, {0, 1, 2}));
+    bool listed = false;
+    for (const UnimprovableTriangle& t : r.unimprovable)
+      if (t.reason == LeftReason::DoublePrecision && same_triangle(t.triangle, {0, 1, 2})) listed = true;
+    EXPECT_TRUE(listed);
+  }
+}
+
+// One ulp below AP the vertex is off the sliver: the split at P goes in.
+TEST(PrecisionStop, SliverClauseVertexOneUlpOffAllowsTheSplit) {
+  const double X = std::ldexp(1.0, 40), u = std::ldexp(1.0, -12);
+  const Pslg p = sliver_input(-u);
+  both_engines(p, 30, Method::Centroid, "sliver, vertex one ulp off");
+  RefineOptions o;
+  o.min_angle_deg = 30;
+  const RefineResult r = fast::refine(p, o);
+  EXPECT_FALSE(has_triangle(r.mesh, {0, 1, 2}));
+  EXPECT_NE(std::find(r.mesh.vertices.begin(), r.mesh.vertices.end(), Point{X + 6 * u, X}), r.mesh.vertices.end());
+}
+
+// The clause's geometry (lepp/boundary_sliver.h) on a wide sliver a = (0, 0), p = (6, 0),
+// b = (12, 1), with the fast engine's predicate: closed, vertices and segments both.
+TEST(PrecisionStop, SliverClauseGeometryIsClosed) {
+  const Point a{0, 0}, p{6, 0}, b{12, 1};
+  auto blocked = [&](OutsideInput o) {
+    return sliver_blocked(o, a, b, p, [](const Point& x, const Point& y, const Point& z) { return fast::orient(x, y, z); });
+  };
+  EXPECT_TRUE(blocked({{{2, 0}}, {}}));    // a vertex on ap
+  EXPECT_TRUE(blocked({{{9, 0.5}}, {}}));  // on pb
+  EXPECT_TRUE(blocked({{{6, 0.25}}, {}}));  // inside
+  EXPECT_FALSE(blocked({{{2, -0x1p-50}}, {}}));  // just below ap
+  EXPECT_FALSE(blocked({{a, b}, {}}));     // a and b themselves
+  EXPECT_TRUE(blocked({{}, {{Point{3, -1}, Point{3, 1}}}}));     // crosses ap and ab
+  EXPECT_TRUE(blocked({{}, {{Point{3, -1}, Point{3, 0}}}}));     // ends on ap
+  EXPECT_FALSE(blocked({{}, {{Point{7, -1}, Point{7, 0.125}}}}));  // stops below pb (at x = 7 it is at 1/6)
+  EXPECT_TRUE(blocked({{}, {{a, Point{3, 0.1}}}}));   // from a into the sliver
+  EXPECT_TRUE(blocked({{}, {{Point{12, 0}, a}}}));    // from a along ap (closed)
+  EXPECT_FALSE(blocked({{}, {{a, Point{3, -0.1}}}}));  // from a, below ap
+  EXPECT_FALSE(blocked({{}, {{b, Point{20, 1}}}}));    // from b, away
+  EXPECT_TRUE(blocked({{}, {{Point{6, 0.25}, b}}}));   // from b into the sliver
 }
 
 TEST(PrecisionStop, NearDuplicatesLong) {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -187,6 +188,67 @@ TEST(CertifyPrecision, RejectsAnInvertedTriangleThere) {
   const certify::Report rep = certify::certify(p, bad, rule);
   EXPECT_FALSE(rep.certified());
   EXPECT_TRUE(rep.has(certify::Reason::NotCounterClockwise)) << certify::format_report(rep);
+}
+
+// At X = 2^40, u = 2^-12: the domain quadrilateral A = (X, X), B = (X + 12u, X + u),
+// (X + 12u, X + 48u), (X, X + 48u) with input vertex C = (X + 6u, X + 4u) inside, so
+// ABC (28.9 degrees) has its longest edge AB on the boundary; AB's midpoint rounds to
+// P = (X + 6u, X), half an ulp outside, its other rounding is within the floor of C.
+// Input vertex 3, outside the domain, at (X + 2u, X + dy): on the segment AP for dy = 0.
+Pslg sliver_input(double dy) {
+  const double X = std::ldexp(1.0, 40), u = std::ldexp(1.0, -12);
+  Pslg p;
+  p.vertices = {{X, X}, {X + 12 * u, X + u}, {X + 6 * u, X + 4 * u}, {X + 2 * u, X + dy}, {X + 12 * u, X + 48 * u}, {X, X + 48 * u}};
+  p.segments = {{0, 1}, {1, 4}, {4, 5}, {5, 0}};
+  std::vector<std::string> warnings;
+  return validate(p, warnings);
+}
+
+bool exempt(const certify::Report& rep, int t) {
+  return std::find(rep.precision_exempt_triangles.begin(), rep.precision_exempt_triangles.end(), t) != rep.precision_exempt_triangles.end();
+}
+
+// The sliver clause (CERTIFIER.md section 5c): with vertex 3 on AP the split at P is
+// not insertable, so ABC, which the engines leave there, is exempt by the rule alone
+// (before the clause the certifier found P insertable and rejected the stop). With
+// the vertex one ulp lower, off the sliver, the same triangle is not exempt.
+TEST(CertifyPrecision, SliverClauseExemptsTheStopAtAVertexOutside) {
+  const Pslg p = sliver_input(0);
+  const RefineResult r = refine_at(p, 30);
+  const int abc = index_of(r.mesh, {0, 1, 2});
+  ASSERT_GE(abc, 0);
+  certify::Options rule;
+  rule.min_angle_deg = 30;
+  rule.exempt_precision_limited = true;
+  const certify::Report rep = certify::certify(p, r.mesh, rule);
+  EXPECT_TRUE(rep.certified()) << certify::format_report(rep);
+  EXPECT_TRUE(exempt(rep, abc));
+
+  const Pslg off = sliver_input(-std::ldexp(1.0, -12));
+  Mesh moved = r.mesh;
+  moved.vertices[3] = off.vertices[3];
+  const certify::Report claim = certify::certify(off, moved, rule);
+  EXPECT_FALSE(exempt(claim, abc)) << certify::format_report(claim);
+  EXPECT_FALSE(claim.certified());
+}
+
+// A mesh whose triangles cover an input vertex outside the domain (here on the edge
+// from A to P) is no triangulation of its vertices there: rejected, though that vertex
+// is in no triangle and the coverage checks (sides of segments, Euler) do not see it.
+// The same mesh with the vertex one ulp off the sliver certifies.
+TEST(CertifyPrecision, RejectsAMeshCoveringAVertexOutsideTheDomain) {
+  const Pslg off = sliver_input(-std::ldexp(1.0, -12));
+  const RefineResult r = refine_at(off, 30);
+  certify::Options plain;
+  const certify::Report fine = certify::certify(off, r.mesh, plain);
+  EXPECT_TRUE(fine.certified()) << certify::format_report(fine);
+
+  const Pslg on = sliver_input(0);
+  Mesh covering = r.mesh;
+  covering.vertices[3] = on.vertices[3];
+  const certify::Report rep = certify::certify(on, covering, plain);
+  EXPECT_EQ(rep.count(certify::Reason::InputVertexMissing), 1u) << certify::format_report(rep);
+  EXPECT_FALSE(rep.certified());
 }
 
 }  // namespace

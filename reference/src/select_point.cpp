@@ -119,11 +119,12 @@ bool splits_in_edge(const Triangulation& tr, FH f, int i, const CPoint& p) {
 // A boundary split whose outside faces would not be counter-clockwise: earlier
 // rounded midpoints made the boundary a few ulps concave, so the outside face
 // across ab is a sliver along it and p, half an ulp off ab, lies beyond it. The
-// fast engine keeps no outside faces; its split (a, p, c), (p, b, c) is a valid
-// mesh unless the thin triangle a, p, b (p outside ab) holds another vertex or a
-// constrained edge enters it, and then the reference cannot make it either
-// (ALGORITHM.md section 8b, "The one difference left"). Rare (only when the outside
-// test fails): every vertex and constrained edge is scanned.
+// split (a, p, c), (p, b, c) is a valid mesh unless the thin triangle a, p, b (p
+// outside ab) holds another vertex or a constrained edge enters it: the sliver
+// clause (ALGORITHM.md section 8b), which the fast engine tests on the input
+// outside the domain; here the same tests on every vertex and constrained edge, a
+// superset (when the outside face holds p, it holds the sliver and the clause
+// holds). Rare (only when the outside test fails), so a scan.
 bool outside_clear(const Triangulation& tr, VH a, VH b, const CPoint& p) {
   const CPoint &pa = a->point(), &pb = b->point();
   if (CGAL::orientation(pa, pb, p) != CGAL::RIGHT_TURN) return true;  // p in the domain face or on ab

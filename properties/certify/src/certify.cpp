@@ -57,8 +57,10 @@ class Certifier {
     build_edges();
     check_duplicate_vertices();
     domain_ = expected_domain(pslg_);
+    collect_outside_input();
     map_input_vertices();
     check_unused_vertices();
+    check_outside_vertices_uncovered();
     build_adjacency();
     find_chains();
     check_split_points();
@@ -81,6 +83,7 @@ class Certifier {
   const Options& opt_;
   Report& report_;
   ExpectedDomain domain_;
+  OutsideInput outside_;               // the input outside the domain (collect_outside_input)
 
   std::vector<char> tri_ok_;           // ids valid (orientation may still be wrong)
   std::vector<int> twin_;              // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
@@ -289,6 +292,40 @@ class Certifier {
       if (in >= 0) continue;  // reported as InputVertexMissing
       add({Reason::UnusedVertex, fmt::format("Steiner vertex {} {} is in no triangle", v, pt(P(static_cast<int>(v)))), {}, {},
            {static_cast<int>(v)}, {}, -1});
+    }
+  }
+
+  // An input vertex outside the domain may be in no triangle, but then must lie in
+  // none: a triangle covering it (on its closed area, not at a corner) makes the
+  // mesh no triangulation of its vertices there. The coverage checks count sides
+  // of segments and the Euler characteristic, which a vertex in no triangle does
+  // not enter, so they do not see it (a boundary split whose rounded midpoint,
+  // half an ulp outside, takes such a vertex into its sliver: ALGORITHM.md
+  // section 8b). Sweep by x: such vertices are few, usually none.
+  void check_outside_vertices_uncovered() {
+    std::vector<int> loose;  // input ids: outside the domain, a vertex of no triangle
+    for (std::size_t i = 0; i < pslg_.vertices.size(); ++i) {
+      const int m = input_to_mesh_[i];
+      if (!domain_.vertex_in_domain[i] && (m < 0 || !used_[static_cast<std::size_t>(m)])) loose.push_back(static_cast<int>(i));
+    }
+    if (loose.empty()) return;
+    auto X = [&](int i) { return pslg_.vertices[static_cast<std::size_t>(i)].x; };
+    std::sort(loose.begin(), loose.end(), [&](int i, int j) { return X(i) < X(j); });
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!tri_ok_[t]) continue;
+      const Point &a = P(T(t)[0]), &b = P(T(t)[1]), &c = P(T(t)[2]);
+      if (!finite(a) || !finite(b) || !finite(c) || exact::orient(a, b, c) <= 0) continue;  // reported in section 1
+      const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
+      const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
+      auto it = std::lower_bound(loose.begin(), loose.end(), x0, [&](int i, double x) { return X(i) < x; });
+      for (; it != loose.end() && X(*it) <= x1; ++it) {
+        const Point& q = pslg_.vertices[static_cast<std::size_t>(*it)];
+        if (q.y < y0 || q.y > y1 || q == a || q == b || q == c) continue;
+        if (exact::orient(a, b, q) < 0 || exact::orient(b, c, q) < 0 || exact::orient(c, a, q) < 0) continue;
+        add({Reason::InputVertexMissing,
+             fmt::format("input vertex {} {} (outside the domain) lies on {} but is not one of its vertices", *it, pt(q), tri_text(t)),
+             {static_cast<int>(t)}, {}, {*it}, {q}, -1});
+      }
     }
   }
 
@@ -806,7 +843,17 @@ class Certifier {
     }
   }
 
-  PrecisionView precision_view() const { return {mesh_, tri_ok_, twin_, constrained_half_}; }
+  PrecisionView precision_view() const { return {mesh_, tri_ok_, twin_, constrained_half_, outside_}; }
+  // The input outside the expected domain: vertices on no domain triangle, segments
+  // with the domain on neither side (the precision exemption's sliver clause).
+  void collect_outside_input() {
+    for (std::size_t i = 0; i < pslg_.vertices.size(); ++i)
+      if (!domain_.vertex_in_domain[i]) outside_.vertices.push_back(pslg_.vertices[i]);
+    for (std::size_t s = 0; s < pslg_.segments.size(); ++s)
+      if (domain_.segment_sides[s] == 0)
+        outside_.segments.push_back({pslg_.vertices[static_cast<std::size_t>(pslg_.segments[s].a)],
+                                     pslg_.vertices[static_cast<std::size_t>(pslg_.segments[s].b)]});
+  }
 
   // --- 6. Theorem 2 and the Lepp statistic -----------------------------------
   int longest_half(std::size_t t) const { return static_cast<int>(3 * t) + longest_[t]; }

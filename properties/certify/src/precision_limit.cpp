@@ -197,7 +197,9 @@ class Search {
     }
     return false;
   }
-  // The split of edge h at p: every triangle it makes, on each side, counter-clockwise.
+  // The split of edge h at p: every triangle it makes, on each side, counter-clockwise;
+  // on the mesh boundary with p strictly outside, the closed sliver a, p, b free of
+  // the input outside the domain (the sliver clause).
   bool split_insertable_any(int h, const std::vector<Point>& ps) const {
     const int g = v_.twin[static_cast<std::size_t>(h)];
     const Point &a = P(from(h)), &b = P(to(h)), &c = P(apex(h));
@@ -207,6 +209,8 @@ class Search {
       if (g >= 0) {
         const Point& d = P(apex(g));
         if (exact::orient(b, p, d) <= 0 || exact::orient(p, a, d) <= 0 || below_precision_floor(p, d)) continue;
+      } else if (exact::orient(a, b, p) < 0 && sliver_blocked(v_.outside, a, b, p, exact::orient)) {
+        continue;
       }
       return true;
     }
