@@ -391,9 +391,10 @@ struct Replay::Impl {
     for (int i = 0; i < 3; ++i) {
       const CPoint &u = vtx(f, Cdt::ccw(i))->point(), &v = vtx(f, Cdt::cw(i))->point();
       if (CGAL::orientation(u, v, p) != CGAL::LEFT_TURN) strictly = false;
+      // Distance |det| / |uv| <= tol, squared and exact: in doubles the cross product
+      // and the squared length of subnormal coordinates underflow to 0 (0/0 is never near).
       FT det = (v.x() - u.x()) * (p.y() - u.y()) - (v.y() - u.y()) * (p.x() - u.x());
-      double dist = std::abs(CGAL::to_double(det)) / std::sqrt(CGAL::to_double(CGAL::squared_distance(u, v)));
-      if (dist <= tol) near = true;
+      if (det * det <= FT(tol) * FT(tol) * CGAL::squared_distance(u, v)) near = true;
     }
     if (near) return 0;
     return strictly ? 1 : -1;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <fstream>
 #include <map>
 #include <set>
@@ -567,6 +568,31 @@ TEST(Conformance, AcceptsBothRemark10BranchesWhenTheCentroidIsOnTheBoundary) {
   for (Point q : {Point{1.5, -1}, Point{2, -0.01}}) {
     ConformanceReport r = check_conformance(p, {q}, o);
     EXPECT_FALSE(r.conforms) << "accepted (" << q.x << ", " << q.y << ")";
+  }
+}
+
+// The same parallelogram at subnormal coordinates (unit s = 2^14 subnormal
+// ulps u), D moved by du in y: the exact centroid (2s, du/4) is a quarter ulp
+// inside ABD (du = -1), on AB (0) or outside it (+1), within the point tolerance
+// (8 ulps) of AB each time, and lepp's formula rounds it to (2s, 0) on AB, so the
+// engines take BC's midpoint. Both branches are accepted. The distance to the
+// boundary is decided exactly: in doubles its cross product and squared length
+// (products of subnormals) underflowed to 0, 0/0 was never within the tolerance,
+// and the replay rejected lepp's own steps as remark10-reversed (campaign of
+// 2026-12-02, corpus/regressions/fuzz_engine/lepp/*-subnormal-remark10-*).
+TEST(Conformance, AcceptsBothRemark10BranchesNearTheBoundaryAtSubnormalCoordinates) {
+  const double s = std::ldexp(1.0, -1060), u = std::numeric_limits<double>::denorm_min();
+  ConformanceOptions o = options(Method::Centroid, 34);
+  for (int du : {-1, 0, 1}) {
+    Pslg p = polygon({{0, 0}, {0, -3 * s}, {3 * s, -2 * s + du * u}, {4 * s, 0}, {s, 2 * s}});
+    for (Point q : {Point{2 * s, 0}, Point{2.5 * s, s}}) {
+      ConformanceReport r = check_conformance(p, {q}, o);
+      EXPECT_TRUE(r.conforms) << "du = " << du << ", (" << q.x / s << ", " << q.y / s << ") s: " << describe(r);
+    }
+    for (Point q : {Point{1.5 * s, -s}, Point{2 * s, -0.25 * s}}) {
+      ConformanceReport r = check_conformance(p, {q}, o);
+      EXPECT_FALSE(r.conforms) << "du = " << du << ": accepted (" << q.x / s << ", " << q.y / s << ") s";
+    }
   }
 }
 
