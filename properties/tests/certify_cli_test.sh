@@ -77,4 +77,15 @@ tie="$src/corpus/regressions/precision/tie-finding.poly"
 grep -q '^unimprovable-rule-fails: .*listed as limited by double precision' "$dir/out" || { cat "$dir/out"; fail "tie-finding: no rule-fails line"; }
 "$lepp" certify "$tie" "$dir/tie" --min-angle 20 --exempt-precision-limited --precision-ties-by-ids > "$dir/out"; s=$?
 [ $s -eq 0 ] || { cat "$dir/out"; fail "tie-finding, ties by ids: exit $s"; }
+# The same at subnormal coordinates with the midpoint method (campaign of 2026-12-02, e792c892):
+# a length tie of 25 u^2 in the Lepp, lepp's resolution ends within the precision floor.
+tie="$src/corpus/regressions/precision/tie-finding-subnormal-midpoint.poly"
+"$lepp" refine "$tie" -o "$dir/tie2" --min-angle 20 --method midpoint -q > /dev/null; s=$?
+[ $s -eq 3 ] || fail "refine tie-finding-subnormal-midpoint: exit $s"
+"$lepp" certify "$tie" "$dir/tie2" --min-angle 20 --method midpoint --exempt-precision-limited > "$dir/out"; s=$?
+[ $s -eq 1 ] || { cat "$dir/out"; fail "tie-finding-subnormal-midpoint, strict: exit $s"; }
+grep -q '^unimprovable-rule-fails: .*(0, 0) (2e-323, 0) (0, 5e-324)) is listed as limited by double precision' "$dir/out" ||
+  { cat "$dir/out"; fail "tie-finding-subnormal-midpoint: no rule-fails line for (0,0) (4u,0) (0,u)"; }
+"$lepp" certify "$tie" "$dir/tie2" --min-angle 20 --method midpoint --exempt-precision-limited --precision-ties-by-ids > "$dir/out"; s=$?
+[ $s -eq 0 ] || { cat "$dir/out"; fail "tie-finding-subnormal-midpoint, ties by ids: exit $s"; }
 echo "OK"
