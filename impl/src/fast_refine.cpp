@@ -135,7 +135,8 @@ class Refiner {
 
         prefetch_around(lepp);
         Choice choice = select_point(mesh_, lepp, opt_.method);
-        if (!choice_insertable(mesh_, lepp, choice, outside_) && !round_otherwise(mesh_, lepp, choice, outside_)) {  // the precision stop (section 8b)
+        if (!choice_insertable(mesh_, lepp, choice, outside_) && !round_otherwise(mesh_, lepp, choice, outside_) &&
+            !other_branch(mesh_, lepp, opt_.method, choice, outside_)) {  // the precision stop (section 8b)
           ++result.precision_stops;
           stopped_.push_back({item, choice.rule, choice.point});
           break;

@@ -21,6 +21,15 @@ std::vector<double> around(const mpq_class& q) {
   return d < e ? std::vector<double>{d, e} : std::vector<double>{e, d};
 }
 
+// The exact centroid of the terminal quad (t1's terminal edge, both apexes).
+void exact_centroid(const TriMesh& m, const Lepp& lepp, mpq_class& x, mpq_class& y) {
+  const FTri& f1 = m.t(lepp.t1);
+  const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
+  const Point &p = m.p(f1.v[lepp.e1]), &q = m.p(m.t(lepp.t2).v[lepp.e2]);
+  x = (mpq_class(a.x) + mpq_class(b.x) + mpq_class(p.x) + mpq_class(q.x)) / 4;
+  y = (mpq_class(a.y) + mpq_class(b.y) + mpq_class(p.y) + mpq_class(q.y)) / 4;
+}
+
 }  // namespace
 
 bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDomain& outside) {
@@ -28,9 +37,7 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDom
   const FTri& f1 = m.t(lepp.t1);
   const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
   if (c.rule == Rule::QuadCentroid || c.rule == Rule::CentroidInOther) {
-    const Point &p = m.p(f1.v[lepp.e1]), &q = m.p(m.t(lepp.t2).v[lepp.e2]);
-    x = (mpq_class(a.x) + mpq_class(b.x) + mpq_class(p.x) + mpq_class(q.x)) / 4;
-    y = (mpq_class(a.y) + mpq_class(b.y) + mpq_class(p.y) + mpq_class(q.y)) / 4;
+    exact_centroid(m, lepp, x, y);
   } else if (c.edge < 0) {  // terminal-midpoint: the unconstrained terminal edge
     x = (mpq_class(a.x) + mpq_class(b.x)) / 2, y = (mpq_class(a.y) + mpq_class(b.y)) / 2;
   } else {  // the midpoint of the constrained edge it splits
@@ -49,6 +56,40 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDom
         return true;
       }
     }
+  return false;
+}
+
+bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, OutsideOfDomain& outside) {
+  if (method != Method::Centroid || lepp.t2 < 0) return false;
+  if (c.rule != Rule::CentroidInOther && c.rule != Rule::SecondLongestMidpoint) return false;
+  const int l1 = middle_edge(m, lepp.t1), l2 = middle_edge(m, lepp.t2);
+  const bool c1 = m.t(lepp.t1).seg[l1] >= 0, c2 = m.t(lepp.t2).seg[l2] >= 0;
+  if (c1 == c2) return false;  // not Remark 10's branch
+  const int star = c1 ? lepp.t1 : lepp.t2, other = c1 ? lepp.t2 : lepp.t1;
+  mpq_class x, y;
+  exact_centroid(m, lepp, x, y);
+  std::vector<Point> centroids;
+  for (double px : around(x))
+    for (double py : around(y)) centroids.push_back({px, py});
+  if (c.rule == Rule::CentroidInOther) {
+    bool turns = false;
+    for (const Point& g : centroids) turns = turns || !strictly_inside(m, other, g);
+    if (!turns) return false;
+    Choice mid = split_choice(m, star, c1 ? l1 : l2, Rule::SecondLongestMidpoint);
+    if (!choice_insertable(m, lepp, mid, outside) && !round_otherwise(m, lepp, mid, outside)) return false;
+    c = mid;
+    return true;
+  }
+  Choice in_other;
+  in_other.rule = Rule::CentroidInOther;
+  in_other.tri = other;
+  for (const Point& g : centroids) {
+    in_other.point = g;
+    if (strictly_inside(m, other, g) && choice_insertable(m, lepp, in_other, outside)) {
+      c = in_other;
+      return true;
+    }
+  }
   return false;
 }
 

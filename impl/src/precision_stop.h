@@ -75,4 +75,11 @@ inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& 
 // replaces it. False when none can: the triangle is left.
 bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDomain& outside);
 
+// Remark 10 at the limit: when the branch's point cannot be inserted at any
+// rounding, the other branch, if a double around the exact centroid turns the
+// branch (a rounding outside the other triangle: the midpoint of l*, as
+// rounded; else the roundings strictly inside it: the centroid there). The
+// certifier counts both (CERTIFIER.md section 5c). False: neither can.
+bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, OutsideOfDomain& outside);
+
 }  // namespace lepp::fast

@@ -208,6 +208,25 @@ TEST(PrecisionStop, SliverClauseGeometryIsClosed) {
   EXPECT_TRUE(blocked({{}, {{Point{6, 0.25}, b}}}));   // from b into the sliver
 }
 
+// Found by the precision campaign's second sitting (offset 2^39, centroid, 20 degrees;
+// corpus/regressions/fuzz_refine/*-remark10-other-branch-*.bin): at Remark 10 the
+// formula's centroid is strictly inside the other triangle, within the precision floor,
+// as is every rounding inside it, but a double around the exact centroid lies outside
+// that triangle: a mesher rounding so takes the midpoint of l*, which can be inserted
+// (CERTIFIER.md section 5c). The engines left the triangle and the strict certifier
+// rejected their claim; now they try that branch too (ALGORITHM.md section 8b).
+TEST(PrecisionStop, Remark10OtherBranchIsTriedAtTheLimit) {
+  for (const char* file : {"remark10-other-branch-corner.poly", "remark10-other-branch-hole.poly"}) {
+    const Pslg p = load(file);
+    both_engines(p, 20, Method::Centroid, fmt::format("{} at 20", file));
+    RefineOptions o;
+    o.min_angle_deg = 20;
+    const RefineResult r = fast::refine(p, o);
+    EXPECT_EQ(r.outcome, Outcome::Unimprovable) << file;  // still at the limit: the rule fires
+    EXPECT_GT(at_precision(r), 0u) << file;
+  }
+}
+
 TEST(PrecisionStop, NearDuplicatesLong) {
   if (!long_tests()) GTEST_SKIP() << "LEPP_LONG_TESTS=1 runs the 30000-point set";
   const Pslg p = load("neardup30k.node");

@@ -246,6 +246,15 @@ std::vector<double> doubles_around(const mpq_class& q) {
 }
 mpq_class q(VH v, bool y) { return mpq_class(CGAL::to_double(y ? v->point().y() : v->point().x())); }
 
+// The exact centroid of the terminal quad (t1's terminal edge, both apexes).
+void exact_centroid(const Lepp& lepp, mpq_class& x, mpq_class& y) {
+  FH t1 = lepp.t1;
+  int l = lepp.edge;
+  VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l)), c = t1->vertex(l), d = lepp.t2->vertex(lepp.t2->index(t1));
+  x = (q(a, false) + q(b, false) + q(c, false) + q(d, false)) / 4;
+  y = (q(a, true) + q(b, true) + q(c, true) + q(d, true)) / 4;
+}
+
 }  // namespace
 
 bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s) {
@@ -255,9 +264,7 @@ bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s) {
   mpq_class x, y;
   FH other;  // centroid-in-other: the triangle the point must stay strictly inside
   if (s.rule == Rule::QuadCentroid || s.rule == Rule::CentroidInOther) {
-    VH c = t1->vertex(l), d = lepp.t2->vertex(lepp.t2->index(t1));
-    x = (q(a, false) + q(b, false) + q(c, false) + q(d, false)) / 4;
-    y = (q(a, true) + q(b, true) + q(c, true) + q(d, true)) / 4;
+    exact_centroid(lepp, x, y);
     if (s.rule == Rule::CentroidInOther) other = strictly_inside(t1, s.point) ? t1 : lepp.t2;
   } else {
     if (s.split_face != FH()) a = s.split_face->vertex(Cdt::ccw(s.split_index)), b = s.split_face->vertex(Cdt::cw(s.split_index));
@@ -274,6 +281,40 @@ bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s) {
         return true;
       }
     }
+  return false;
+}
+
+bool other_branch(const Triangulation& tr, const Lepp& lepp, Method method, Selection& s) {
+  if (method != Method::Centroid || lepp.t2 == FH()) return false;
+  if (s.rule != Rule::CentroidInOther && s.rule != Rule::SecondLongestMidpoint) return false;
+  FH t1 = lepp.t1, t2 = lepp.t2;
+  int s1 = second_longest_edge(t1), s2 = second_longest_edge(t2);
+  bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
+  if (c1 == c2) return false;  // not Remark 10's branch
+  FH star = c1 ? t1 : t2, other = c1 ? t2 : t1;
+  mpq_class x, y;
+  exact_centroid(lepp, x, y);
+  std::vector<Point> centroids;
+  for (double px : doubles_around(x))
+    for (double py : doubles_around(y)) centroids.push_back({px, py});
+  if (s.rule == Rule::CentroidInOther) {
+    bool turns = false;
+    for (const Point& g : centroids) turns = turns || !strictly_inside(other, g);
+    if (!turns) return false;
+    Selection mid = edge_midpoint(Rule::SecondLongestMidpoint, star, c1 ? s1 : s2);
+    if (!insertable(tr, mid, lepp) && !round_otherwise(tr, lepp, mid)) return false;
+    s = mid;
+    return true;
+  }
+  Selection in_other;
+  in_other.rule = Rule::CentroidInOther;
+  for (const Point& g : centroids) {
+    in_other.point = g;
+    if (strictly_inside(other, g) && insertable(tr, in_other, lepp)) {
+      s = in_other;
+      return true;
+    }
+  }
   return false;
 }
 

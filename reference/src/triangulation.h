@@ -111,6 +111,10 @@ bool insertable(const Triangulation& tr, const Selection& s, const Lepp& lepp);
 // and up), ascending x then y; the first insertable one (for centroid-in-other,
 // still strictly inside the other triangle) replaces s.point. False: none is.
 bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s);
+// Remark 10 at the limit, when that fails too: the other branch, if a double
+// around the exact centroid turns the branch (one outside the other triangle:
+// the midpoint of l*, as rounded; else those strictly inside it: the centroid).
+bool other_branch(const Triangulation& tr, const Lepp& lepp, Method method, Selection& s);
 // Inserts the selected point, restores the constrained Delaunay property by
 // flips in the legalization order of ALGORITHM.md section 7 (counting cocircular
 // ties), sets ids, segment membership and domain flags.
