@@ -837,6 +837,10 @@ struct Replay::Impl {
       VH a = tr.vertex.at(static_cast<std::size_t>(choice.split_edge[0]));
       VH b = tr.vertex.at(static_cast<std::size_t>(choice.split_edge[1]));
       if (!tr.cdt.is_edge(a, b, f, i)) throw std::runtime_error("the edge to split is not in the mesh");
+      if (!in_domain(f)) {  // a boundary edge: split from its domain side, as the engines do (insertable_as)
+        FH n = f->neighbor(i);
+        i = n->index(f), f = n;
+      }
       s.split_face = f, s.split_index = i;
     } else {
       Cdt::Locate_type lt;

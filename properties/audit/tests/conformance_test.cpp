@@ -202,6 +202,28 @@ TEST(Conformance, AtThePrecisionLimitTheChoiceThatCanBeInsertedIsTaken) {
   EXPECT_EQ(report.steps_checked, r.trace.size());
 }
 
+// A boundary edge the replay finds from its outside face (the precision campaign's second
+// sitting, offset 2^39): lepp splits the nearly vertical boundary segment from (X, X) to
+// (X + 0.001, X + 0.0312) at a midpoint rounded off its line; the replay split it from
+// the face outside the domain, and the reference's insertion, seeing the point on the
+// wrong side, made a clockwise triangle ("the point is a choice but cannot be
+// inserted", step 19). It now splits a boundary edge from its domain side, as the
+// engines and its own insertability test do.
+TEST(Conformance, ABoundaryEdgeIsSplitFromItsDomainSide) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(
+      read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/regressions/precision/remark10-other-branch-corner.poly"),
+      warnings);
+  RefineOptions o;
+  o.min_angle_deg = 20;
+  o.trace = true;
+  const RefineResult r = fast::refine(p, o);
+  ASSERT_EQ(r.outcome, Outcome::Unimprovable);
+  const ConformanceReport report = check_conformance(p, points_of(r), options(Method::Centroid, 20));
+  EXPECT_TRUE(report.conforms) << describe(report);
+  EXPECT_EQ(report.steps_checked, r.trace.size());
+}
+
 // ---- exactly rounded choices conform ----
 
 // A toy implementation on the replay: at every step, one of the paper's
