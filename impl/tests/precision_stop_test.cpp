@@ -245,6 +245,48 @@ TEST(PrecisionStop, TheStopIsReached) {
   EXPECT_EQ(r.outcome, Outcome::Unimprovable);
 }
 
+// The floor of a split is held against the far side's apex only in the domain
+// (ALGORITHM.md section 8b; the fast engine keeps no outside faces): an input
+// vertex D outside the domain, half an ulp below the bottom edge's midpoint, is
+// within the floor of that midpoint, and the split goes ahead in both engines.
+TEST(PrecisionStop, VertexOutsideTheDomainDoesNotHoldTheFloor) {
+  Pslg raw;
+  const Point d{0.5, -std::ldexp(1.0, -54)};
+  raw.vertices = {{0, 0}, {1, 0}, {0.875, 0.25}, {0, 0.3125}, d};
+  raw.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
+  std::vector<std::string> warnings;
+  const Pslg p = validate(raw, warnings);
+  ASSERT_TRUE(below_precision_floor({0.5, 0}, d));
+  both_engines(p, 30, Method::Centroid, "vertex outside at 30");
+  for (bool fast_engine : {true, false}) {
+    RefineOptions o;
+    o.trace = true;
+    const RefineResult r = fast_engine ? fast::refine(p, o) : reference::refine(p, o);
+    EXPECT_EQ(r.outcome, Outcome::Converged) << (fast_engine ? "fast" : "reference");
+    EXPECT_EQ(r.precision_stops, 0) << (fast_engine ? "fast" : "reference");
+    bool split = false;
+    for (const TraceStep& s : r.trace) split |= s.point.x == 0.5 && s.point.y == 0;
+    EXPECT_TRUE(split) << (fast_engine ? "fast" : "reference") << ": the bottom edge was not split at its midpoint";
+  }
+}
+
+// Found for the mutation harness (issue 22) by searching gen:ulp-segments inputs:
+// the other roundings of a centroid-in-other point, where an earlier rounding has
+// left the other triangle (beyond the terminal edge, or on an edge of the other),
+// and of a constrained split whose rounded midpoint makes a flat triangle with its
+// apex (by both methods). Both engines agree and the mesh certifies.
+TEST(PrecisionStop, OtherRoundingsAtTinySegmentsAgree) {
+  for (int theta : {20, 25, 30, 33}) {
+    both_engines(load("ulp-segments-centroid-in-other.poly"), theta, Method::Centroid,
+                 fmt::format("centroid-in-other at {}", theta));
+    both_engines(load("ulp-segments-off-the-other.poly"), theta, Method::Centroid,
+                 fmt::format("off the other at {}", theta));
+    for (Method method : {Method::Centroid, Method::Midpoint})
+      both_engines(load("ulp-segments-collinear-split.poly"), theta, method,
+                   fmt::format("collinear split {} at {}", method == Method::Centroid ? "centroid" : "midpoint", theta));
+  }
+}
+
 // The finding the property met (docs/CERTIFIER.md section 5c): a triangle left at double
 // precision that another resolution of an exact length tie could refine. When lepp
 // learns to try the other ties this test fails: then the strict rule certifies.
@@ -265,11 +307,9 @@ TEST(PrecisionStop, TieFindingIsLeftByLeppsTieRuleOnly) {
   EXPECT_TRUE(certify::certify(p, r.mesh, by_ids).certified());
 }
 
-// The generated families at the limit of doubles (properties/gen gen_precision.h):
-// every run of either engine ends (no exception), both agree, the mesh certifies.
-RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
-  const Pslg raw = *gen::atPrecisionLimit();
-  const double theta = *rc::gen::element(20.0, 25.0, 30.0, 33.0);
+// One generated input at the limit of doubles (properties/gen gen_precision.h):
+// the run of either engine ends (no exception), both agree, the mesh certifies.
+void generated_case(const Pslg& raw, double theta, Method method) {
   std::vector<std::string> warnings;
   Pslg p;
   try {
@@ -279,6 +319,7 @@ RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
   }
   RefineOptions o;
   o.min_angle_deg = theta;
+  o.method = method;
   o.max_steiner = 1500;  // a bound on the test's time; a budget stop is still certified (without angles)
   RefineResult fast_run, reference_run;
   try {
@@ -289,7 +330,7 @@ RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
   }
   RC_ASSERT(difference(fast_run, reference_run) == "");
   const bool ended = fast_run.outcome == Outcome::Converged || fast_run.outcome == Outcome::Unimprovable;
-  const certify::Report rep = certificate(p, fast_run, theta, Method::Centroid, ended);
+  const certify::Report rep = certificate(p, fast_run, theta, method, ended);
   // Finding (docs/CERTIFIER.md section 5c): lepp's Lepp breaks exact length ties by ids,
   // and a triangle it leaves may be refinable through another tie. The property holds
   // exactly when ties are read as lepp reads them; each such case is counted.
@@ -300,6 +341,7 @@ RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
     certify::Options by_ids;
     by_ids.min_angle_deg = ended ? theta : 0;
     by_ids.unimprovable = fast_run.unimprovable;
+    by_ids.precision_method = method;
     by_ids.precision_ties_by_ids = true;
     tie_only = certify::certify(p, fast_run.mesh, by_ids).certified();
   }
@@ -312,6 +354,23 @@ RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
   }
   RC_CLASSIFY(at_precision(fast_run) > 0, "left at double precision");
   RC_CLASSIFY(ended, "converged or unimprovable");
+}
+
+// The generated families: clusters a few ulps wide and near-duplicates.
+RC_GTEST_PROP(PrecisionStop, GeneratedClustersAndNearDuplicatesEndCleanly, ()) {
+  const Pslg raw = *gen::atPrecisionLimit();
+  const double theta = *rc::gen::element(20.0, 25.0, 30.0, 33.0);
+  generated_case(raw, theta, Method::Centroid);
+}
+
+// Clusters with segments a few ulps long, by both methods: constrained edges at the
+// precision floor, where the stop decides splits of a second-longest edge and
+// centroid-in-other points (and their other roundings).
+RC_GTEST_PROP(PrecisionStop, GeneratedClustersWithSegmentsEndCleanly, ()) {
+  const Pslg raw = *gen::ulpClusterWithSegments();
+  const double theta = *rc::gen::element(20.0, 25.0, 30.0, 33.0);
+  const Method method = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  generated_case(raw, theta, method);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 // Every PSLG has a closed box of segments, so both engines mesh it as given;
 // run them through validate() first (near-duplicates may coincide exactly).
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -96,6 +97,42 @@ inline rc::Gen<Pslg> nearDuplicates(int max_points = 60) {
                       rc::gen::container<std::vector<std::tuple<int, int, int, int, int>>>(rc::gen::tuple(
                           rc::gen::inRange(0, 1024), rc::gen::inRange(0, 1024), rc::gen::inRange(0, 4), rc::gen::inRange(0, 301),
                           rc::gen::inRange(0, 360)))));
+}
+
+/// The ulp cluster with segments inside it: up to 10 points a few ulps (-12..12 per
+/// coordinate) from a center C inside a box at offset O = 2^e, joined by segments
+/// between neighbours in angle around their mean (a subset of the edges of a
+/// star-shaped polygon, so no two cross). Tiny constrained edges, where the
+/// precision stop's rules for splits and for centroid-in-other are reached
+/// (docs/ALGORITHM.md section 8b). Not in atPrecisionLimit. "gen:ulp-segments"
+inline rc::Gen<Pslg> ulpClusterWithSegments() {
+  return rc::gen::apply(
+      [](int e, int cx, int cy, const std::vector<std::pair<int, int>>& steps, unsigned mask) {
+        const double o = e < 0 ? 0 : std::ldexp(1.0, e), w = 1;
+        Pslg p = detail::boxed(o, o, o + w, o + w);
+        const double c_x = o + w * (1 + cx) / 18, c_y = o + w * (1 + cy) / 18;  // strictly inside
+        std::vector<Point> cluster;
+        for (std::size_t i = 0; i < steps.size() && i < 10; ++i) {
+          const Point q{detail::ulps(c_x, steps[i].first), detail::ulps(c_y, steps[i].second)};
+          if (std::find(cluster.begin(), cluster.end(), q) == cluster.end()) cluster.push_back(q);
+        }
+        // In angle around the mean (in ulps of C, exact enough to order a few points).
+        double mx = 0, my = 0;
+        for (const Point& q : cluster) mx += q.x - c_x, my += q.y - c_y;
+        mx /= std::max<std::size_t>(cluster.size(), 1), my /= std::max<std::size_t>(cluster.size(), 1);
+        std::sort(cluster.begin(), cluster.end(), [&](const Point& a, const Point& b) {
+          return std::atan2(a.y - c_y - my, a.x - c_x - mx) < std::atan2(b.y - c_y - my, b.x - c_x - mx);
+        });
+        const int first = static_cast<int>(p.vertices.size()), n = static_cast<int>(cluster.size());
+        p.vertices.insert(p.vertices.end(), cluster.begin(), cluster.end());
+        for (int i = 0; n >= 2 && i < n; ++i)
+          if ((mask >> i & 1u) && (n > 2 || i == 0)) p.segments.push_back({first + i, first + (i + 1) % n, 2});
+        p.source = "gen:ulp-segments";
+        return p;
+      },
+      rc::gen::inRange(-1, 41), rc::gen::inRange(0, 16), rc::gen::inRange(0, 16),
+      rc::gen::container<std::vector<std::pair<int, int>>>(rc::gen::pair(rc::gen::inRange(-12, 13), rc::gen::inRange(-12, 13))),
+      rc::gen::inRange(1u, 1024u));
 }
 
 /// Either family.
