@@ -133,7 +133,8 @@ def nice(cmd):
 
 
 def failed_tests(out):
-    names = re.findall(r"\d+ - (\S+) \((Failed|Timeout|SEGFAULT|Subprocess aborted|Exception|Child aborted|[^)]*)\)", out)
+    # A parameterized test's name goes on with "  # GetParam() = ..." before the reason.
+    names = re.findall(r"\d+ - (\S+)(?:  # GetParam\(\) = [^\n]*?)? \((Failed|Timeout|SEGFAULT|Subprocess aborted|Exception|Child aborted|[^)]*)\)", out)
     return [f"{n} ({why})" for n, why in names]
 
 
@@ -286,7 +287,8 @@ def main():
                     else:
                         code, out, _ = ctest(build, ["-E", exclude_regex(a.exclude)], 7200, log_path, a.jobs)
                     if code != 0:
-                        by = failed_tests(out) or [f"ctest exit {code}"]
+                        # ctest lists the tests that skipped beside those that failed: never a kill.
+                        by = [f for f in failed_tests(out) if not f.endswith("(Skipped)")] or [f"ctest exit {code}"]
                         if all(re.match(NEVER_JUDGES.rstrip("$"), f) for f in by):
                             continue  # cannot happen (it is left out), but never a kill
                         r = {"status": "killed", "killed_by": by, "stage": stage}
