@@ -142,7 +142,8 @@ int run_audit_command(const AuditArgs& args) {
     o.shrink = !a.no_shrink;
     o.max_findings_per_row = a.max_findings;
     o.shrink_max_seconds = a.shrink_seconds;
-    o.jobs = a.jobs;
+    // A sanitizer build cannot fork safely beside other threads (isolated_engine.h): one job by default.
+    o.jobs = a.jobs == 0 && !audit::fork_safe_with_threads() ? 1 : a.jobs;
     o.repeat = a.repeat;
     if (a.repeat < 1) throw audit::UsageError("--repeat: at least 1");
     o.points_cache_dir = a.no_cache ? std::string() : !a.cache.empty() ? a.cache : audit::default_points_cache_dir();
@@ -220,7 +221,7 @@ void add_audit_command(CLI::App& app, int& status) {
   cmd->add_flag("--no-shrink", a->no_shrink, "Save failures as found, without shrinking");
   cmd->add_option("--max-findings", a->max_findings, "Failures shrunk and saved per row (the rest are counted)")->default_val(3);
   cmd->add_option("--shrink-seconds", a->shrink_seconds, "Time budget of one shrink")->default_val(60);
-  cmd->add_option("-j,--jobs", a->jobs, "Cases, comparisons and shrink candidates run at once (0: the machine's cores)")
+  cmd->add_option("-j,--jobs", a->jobs, "Cases, comparisons and shrink candidates run at once (0: the machine's cores; 1 in a sanitizer build, whose fork is not safe beside threads)")
       ->default_val(0);
   cmd->add_option("--repeat", a->repeat, "Run every case N times: each run checked, the outputs compared (determinism)")
       ->default_val(1);
