@@ -130,20 +130,10 @@ TEST(PrecisionStop, BoundarySliverOutsideDoesNotStopTheReference) {
   for (int theta : {20, 25}) both_engines(p, theta, Method::Midpoint, fmt::format("boundary-sliver midpoint at {}", theta));
 }
 
-// The sliver clause (ALGORITHM.md section 8b) at its boundary. At X = 2^40, u = 2^-12
-// its ulp: the domain is the quadrilateral A = (X, X), B = (X + 12u, X + u),
-// (X + 12u, X + 48u), (X, X + 48u) with input vertex C = (X + 6u, X + 4u) inside, so
-// ABC (28.9 degrees, no input angle) is a triangle whose longest edge AB is on the
-// boundary. AB's midpoint rounds (to even) to P = (X + 6u, X), half an ulp outside;
-// the other rounding (X + 6u, X + u) is within the precision floor of C. Input vertex
-// 3, outside the domain, at (X + 2u, X + dy): on the segment AP for dy = 0.
+// The sliver clause's input (gen_precision.h), validated.
 Pslg sliver_input(double dy) {
-  const double X = std::ldexp(1.0, 40), u = std::ldexp(1.0, -12);
-  Pslg p;
-  p.vertices = {{X, X}, {X + 12 * u, X + u}, {X + 6 * u, X + 4 * u}, {X + 2 * u, X + dy}, {X + 12 * u, X + 48 * u}, {X, X + 48 * u}};
-  p.segments = {{0, 1}, {1, 4}, {4, 5}, {5, 0}};
   std::vector<std::string> warnings;
-  return validate(p, warnings);
+  return validate(gen::sliverClauseInput(dy), warnings);
 }
 
 bool same_triangle(Tri x, Tri y) {

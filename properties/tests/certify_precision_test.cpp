@@ -16,6 +16,7 @@
 #include "lepp/fast.h"
 #include "lepp/reference.h"
 #include "lepp/input.h"
+#include "lepp/gen_precision.h"
 #include "lepp/validate.h"
 
 namespace lepp {
@@ -190,18 +191,10 @@ TEST(CertifyPrecision, RejectsAnInvertedTriangleThere) {
   EXPECT_TRUE(rep.has(certify::Reason::NotCounterClockwise)) << certify::format_report(rep);
 }
 
-// At X = 2^40, u = 2^-12: the domain quadrilateral A = (X, X), B = (X + 12u, X + u),
-// (X + 12u, X + 48u), (X, X + 48u) with input vertex C = (X + 6u, X + 4u) inside, so
-// ABC (28.9 degrees) has its longest edge AB on the boundary; AB's midpoint rounds to
-// P = (X + 6u, X), half an ulp outside, its other rounding is within the floor of C.
-// Input vertex 3, outside the domain, at (X + 2u, X + dy): on the segment AP for dy = 0.
+// The sliver clause's input (gen_precision.h), validated.
 Pslg sliver_input(double dy) {
-  const double X = std::ldexp(1.0, 40), u = std::ldexp(1.0, -12);
-  Pslg p;
-  p.vertices = {{X, X}, {X + 12 * u, X + u}, {X + 6 * u, X + 4 * u}, {X + 2 * u, X + dy}, {X + 12 * u, X + 48 * u}, {X, X + 48 * u}};
-  p.segments = {{0, 1}, {1, 4}, {4, 5}, {5, 0}};
   std::vector<std::string> warnings;
-  return validate(p, warnings);
+  return validate(gen::sliverClauseInput(dy), warnings);
 }
 
 bool exempt(const certify::Report& rep, int t) {

@@ -34,10 +34,13 @@
 namespace lepp::audit {
 namespace {
 
-Pslg paper(const std::string& name) {
+// A .poly of corpus/ (a path below it, without the extension), validated.
+Pslg corpus_poly(const std::string& path) {
   std::vector<std::string> warnings;
-  return validate(read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/paper/" + name + ".poly"), warnings);
+  return validate(read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/" + path + ".poly"), warnings);
 }
+
+Pslg paper(const std::string& name) { return corpus_poly("paper/" + name); }
 
 Pslg polygon(const std::vector<Point>& pts) {
   Pslg p;
@@ -186,10 +189,7 @@ RC_GTEST_PROP(Conformance, OwnTracesOnGeneratedPslgs, ()) {
 // within the tolerance too; split there, the point makes a clockwise triangle. The replay
 // takes the choice that can be inserted at the point.
 TEST(Conformance, AtThePrecisionLimitTheChoiceThatCanBeInsertedIsTaken) {
-  std::vector<std::string> warnings;
-  const Pslg p = validate(
-      read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/regressions/precision/replay-two-choices-in-tolerance.poly"),
-      warnings);
+  const Pslg p = corpus_poly("regressions/precision/replay-two-choices-in-tolerance");
   RefineOptions o;
   o.method = Method::Midpoint;
   o.min_angle_deg = 20;
@@ -210,10 +210,7 @@ TEST(Conformance, AtThePrecisionLimitTheChoiceThatCanBeInsertedIsTaken) {
 // inserted", step 19). It now splits a boundary edge from its domain side, as the
 // engines and its own insertability test do.
 TEST(Conformance, ABoundaryEdgeIsSplitFromItsDomainSide) {
-  std::vector<std::string> warnings;
-  const Pslg p = validate(
-      read_poly(std::string(LEPP_SOURCE_DIR) + "/corpus/regressions/precision/remark10-other-branch-corner.poly"),
-      warnings);
+  const Pslg p = corpus_poly("regressions/precision/remark10-other-branch-corner");
   RefineOptions o;
   o.min_angle_deg = 20;
   o.trace = true;
