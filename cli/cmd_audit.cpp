@@ -142,8 +142,7 @@ int run_audit_command(const AuditArgs& args) {
     o.shrink = !a.no_shrink;
     o.max_findings_per_row = a.max_findings;
     o.shrink_max_seconds = a.shrink_seconds;
-    // A sanitizer build cannot fork safely beside other threads (isolated_engine.h): one job by default.
-    o.jobs = a.jobs == 0 && !audit::fork_safe_with_threads() ? 1 : a.jobs;
+    o.jobs = a.jobs;
     o.repeat = a.repeat;
     if (a.repeat < 1) throw audit::UsageError("--repeat: at least 1");
     o.points_cache_dir = a.no_cache ? std::string() : !a.cache.empty() ? a.cache : audit::default_points_cache_dir();

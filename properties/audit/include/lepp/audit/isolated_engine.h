@@ -31,7 +31,8 @@ Engine isolated_engine(Engine inner);
 // runtime of GCC 12 does not: a child forked while another thread holds one of
 // its allocator's locks waits on it forever (in the sanitizer build, isolated
 // runs of -j 2 audits timed out at random: 35 of 40 audits of the paper's
-// problems, 0 of 60 in Release). lepp audit runs one job by default there.
+// problems, 0 of 60 in Release). An audit runs one job by default there
+// (resolve_jobs, parallel.h: the CLI, Python and run_audit alike).
 constexpr bool fork_safe_with_threads() {
 #if defined(__SANITIZE_ADDRESS__)
   return false;
