@@ -110,7 +110,7 @@ int run_refine(const RefineArgs& args) {
   MeshStats s = mesh_stats(result.mesh, input);
   std::size_t at_precision = 0;
   for (const UnimprovableTriangle& u : result.unimprovable) at_precision += u.reason == LeftReason::DoublePrecision;
-  double avg_lepp = result.lepp_searches ? static_cast<double>(result.lepp_triangles) / static_cast<double>(result.lepp_searches) : 0;
+  const double avg_lepp = average_lepp_size(result);
   if (args.json) {
     nlohmann::json j = {
         {"input", args.input},

@@ -1,11 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lepp/stats.h"
 
+#include "lepp/refine.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace lepp {
+
+double average_lepp_size(const RefineResult& result) {
+  return result.lepp_searches ? static_cast<double>(result.lepp_triangles) / static_cast<double>(result.lepp_searches) : 0;
+}
+
 namespace {
 double len(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 

@@ -11,6 +11,7 @@
 #include "lepp/fast.h"
 #include "lepp/io.h"
 #include "lepp/reference.h"
+#include "lepp/stats.h"
 #include "triangle_wasm.h"
 
 namespace lepp::paper {
@@ -54,7 +55,7 @@ Run Runner::lepp_run(const std::string& problem, const std::string& reading, con
     r.steiner = res.steiner_points;
     r.finished = res.outcome == Outcome::Converged || res.outcome == Outcome::Unimprovable;
     r.outcome = to_string(res.outcome);
-    r.avg_lepp = res.lepp_searches ? static_cast<double>(res.lepp_triangles) / static_cast<double>(res.lepp_searches) : 0;
+    r.avg_lepp = average_lepp_size(res);
     r.seconds = wall;
     finish(r, res.mesh, pslg);
   } catch (const std::exception& e) {

@@ -119,8 +119,7 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
   } else {
     out["trace"] = py::none();
   }
-  const double avg_lepp =
-      result.lepp_searches ? static_cast<double>(result.lepp_triangles) / static_cast<double>(result.lepp_searches) : 0;
+  const double avg_lepp = average_lepp_size(result);
   py::dict s;  // the keys of lepp refine --json
   s["engine"] = call.engine;
   s["method"] = to_string(options.method);

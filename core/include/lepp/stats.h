@@ -9,6 +9,13 @@
 
 namespace lepp {
 
+struct RefineResult;
+
+// The average Lepp size: triangles visited per Lepp search (the paper's Lepp
+// statistic; 0 when no search was made). One definition for the CLI, Python and
+// the paper runner.
+double average_lepp_size(const RefineResult& result);
+
 struct MeshStats {
   std::size_t vertices = 0, triangles = 0;
   double min_angle_deg = 0;        // smallest angle of any triangle
