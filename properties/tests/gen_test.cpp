@@ -8,6 +8,7 @@
 #include "gen_test_support.h"
 #include "lepp/certify.h"
 #include "lepp/gen.h"
+#include "lepp/gen_precision.h"
 #include "lepp/validate.h"
 
 namespace lepp {
@@ -16,6 +17,19 @@ namespace {
 using test::expect_validates_untouched;
 
 RC_GTEST_PROP(Generators, AnyPslgValidates, ()) { expect_validates_untouched(*gen::anyPslg()); }
+// The notch: a simple polygon (validates untouched) whose two segments from A make the
+// outside a thin wedge: w lies right of A -> B, and B above the line A -> w.
+RC_GTEST_PROP(Generators, UlpNotchIsASimplePolygonWithAThinWedgeAtA, ()) {
+  const Pslg p = *gen::ulpNotch();
+  expect_validates_untouched(p);
+  const Point &a = p.vertices[0], &b = p.vertices[1], &w = p.vertices.back();
+  auto cross = [](const Point& o, const Point& q, const Point& r) {  // exact: small multiples of one ulp
+    return (q.x - o.x) * (r.y - o.y) - (q.y - o.y) * (r.x - o.x);
+  };
+  RC_ASSERT(cross(a, b, w) < 0);
+  RC_ASSERT(cross(a, w, b) > 0);
+}
+
 RC_GTEST_PROP(Generators, WellShapedPslgValidatesWithAnglesAtLeast60, ()) {
   const Pslg p = *gen::wellShapedPslg();
   expect_validates_untouched(p);

@@ -135,6 +135,36 @@ inline rc::Gen<Pslg> ulpClusterWithSegments() {
       rc::gen::inRange(1u, 1024u));
 }
 
+/// A polygon with a notch thinner than an ulp: at offset X = 2^e (e in 20..60, the ulp
+/// u = 2^(e - 52) there), from vertex A = (X, X) two boundary segments run nearly
+/// parallel, A -> B = A + (bx, by) u and w -> A with w = A + (wx, by) u, wx > bx: the
+/// outside between them is a wedge at A at most by (wx - bx) / wx ulps wide at B (a few
+/// ulps, under one along much of AB), so a rounded midpoint of one of them can land
+/// across the other (a split that would overlap the
+/// domain beyond it: the sliver clause, docs/ALGORITHM.md section 8b). The rest of the
+/// polygon is a box around A (corners at integer multiples of u, below and left of A
+/// where the ulp is u / 2). Simple: the segments meet only at shared vertices. Found
+/// by the 2026-12-02 notch search (corpus/regressions/precision/notch-*.poly). "gen:ulp-notch"
+inline rc::Gen<Pslg> ulpNotch() {
+  return rc::gen::apply(
+      [](int e, int bx, int by, int dw, int top, int left, int bottom, int right) {
+        const double X = std::ldexp(1.0, e), u = std::ldexp(1.0, e - 52);
+        auto at = [&](int x, int y) { return Point{X + x * u, X + y * u}; };
+        const int wx = bx + dw;
+        Pslg p;
+        // Counter-clockwise: A, B, up and around the box, back along the bottom to w.
+        p.vertices = {at(0, 0), at(bx, by), at(bx, by + top), at(-left, by + top), at(-left, -bottom), at(wx + right, -bottom)};
+        if (right > 0) p.vertices.push_back(at(wx + right, by));
+        p.vertices.push_back(at(wx, by));
+        const int n = static_cast<int>(p.vertices.size());
+        for (int i = 0; i < n; ++i) p.segments.push_back({i, (i + 1) % n, 1});
+        p.source = "gen:ulp-notch";
+        return p;
+      },
+      rc::gen::inRange(20, 61), rc::gen::inRange(6, 61), rc::gen::inRange(1, 4), rc::gen::inRange(2, 81),
+      rc::gen::inRange(4, 61), rc::gen::inRange(2, 41), rc::gen::inRange(2, 41), rc::gen::inRange(0, 21));
+}
+
 // Not a generator: the fixed input at the boundary of the sliver clause (ALGORITHM.md
 // section 8b), shared by the engines' and the certifier's tests. At X = 2^40, u = 2^-12
 // its ulp: the domain is the quadrilateral A = (X, X), B = (X + 12u, X + u),
