@@ -16,6 +16,7 @@
 #include "cgal_mesh.h"
 #include "lepp/angle.h"
 #include "lepp/certify.h"
+#include "lepp/io.h"
 #include "lepp/validate.h"
 #include "test_pslgs.h"
 
@@ -242,6 +243,41 @@ TEST(CertifyRejects, OverlappingTriangle) {
     EXPECT_FALSE(r.certified());
     EXPECT_TRUE(r.has(Reason::EdgeSameDirection) || r.has(Reason::EdgeOverused)) << certify::format_report(r);
   }
+}
+
+// The notch family (gen::ulpNotch, corpus/regressions/precision/notch-*): at X = 2^52
+// (ulp 1) segments A -> B and w -> A leave A nearly parallel. The fast engine of
+// 2026-12-01 split A -> B at its midpoint rounded half an ulp outside, across w -> A
+// (the sliver clause ignored the domain's own boundary, docs/ALGORITHM.md section 8b):
+// its mesh at 25 degrees overlaps itself, and before chain-edges-meet every other
+// check passed it. The mesh is stored, not remade: the engine no longer makes it.
+Pslg notch(const std::string& name) {
+  std::vector<std::string> warnings;
+  return validate(read_poly(LEPP_SOURCE_DIR "/corpus/regressions/precision/" + name + ".poly"), warnings);
+}
+
+TEST(CertifyRejects, NotchMeshWhoseChainsCross) {
+  const Pslg p = notch("notch-overlap");
+  const Mesh m = read_mesh(LEPP_SOURCE_DIR "/corpus/regressions/precision/notch-overlap-fast-25/out");
+  certify::Options o;
+  o.min_angle_deg = 25;
+  const certify::Report r = certify::certify(p, m, o);
+  expect_rejected_only_for(r, Reason::ChainEdgesMeet);
+  const certify::Violation* v = test::first_of(r, Reason::ChainEdgesMeet);
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->edges.size(), 2u);  // A -> B's chain edge through (X + 26, X) and the edge A - w it crosses
+  EXPECT_EQ(v->segment, 0);
+}
+
+// The reference's mesh of another notch at 30 degrees (stored): the chain of A -> B
+// leaves A by an edge farther off its line than w -> A's first one, which the greedy
+// walk took and then ran past B (a false segment-missing); depth first it certifies.
+TEST(CertifyAccepts, NotchChainIsFoundDepthFirst) {
+  const Pslg p = notch("notch-chain-walk");
+  const Mesh m = read_mesh(LEPP_SOURCE_DIR "/corpus/regressions/precision/notch-chain-walk-reference-30/out");
+  certify::Options o;
+  o.min_angle_deg = 30;
+  expect_certified(certify::certify(p, m, o));
 }
 
 TEST(CertifyRejects, MovedInputVertex) {

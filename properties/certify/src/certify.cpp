@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <map>
@@ -14,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "chain_embedding.h"
 #include "exact.h"
 #include "expected_domain.h"
 #include "precision_limit.h"
@@ -66,6 +68,7 @@ class Certifier {
     check_split_points();
     check_listed_constrained_edges();
     check_coverage();
+    check_chains_cross_nowhere();
     check_euler();
     compute_longest_edges();
     check_delaunay();
@@ -84,6 +87,7 @@ class Certifier {
   Report& report_;
   ExpectedDomain domain_;
   OutsideInput outside_;               // the input outside the domain (collect_outside_input)
+  OutsideInput chain_segments_;        // the chain edges as segments (find_chains; the sliver clause)
 
   std::vector<char> tri_ok_;           // ids valid (orientation may still be wrong)
   std::vector<int> twin_;              // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
@@ -389,27 +393,27 @@ class Certifier {
   }
 
   // Walks from a to b: at each vertex, the next vertex strictly ahead along AB and
-  // strictly before B, and no input vertex, the nearest one first among, in this order: the vertices
+  // strictly before B, and no input vertex, tried in this order: the vertices
   // joined by a listed constrained edge within 1, 2, 4, ... ulp up to the loosest
-  // tolerance, then those joined by a listed edge within 2^-20 |AB| of the line,
-  // then any within 1, 2, 4, ... ulp up to the loosest tolerance. Far from the
-  // origin the loosest tolerance ((k+1) ulp with k the number of mesh vertices)
-  // reaches mesh vertices that are not on the segment: the nearest ahead among
-  // all of them is not the chain's next vertex.
-  // Empty when there is no chain.
+  // tolerance, the straightest step first in each tier; then those joined by a
+  // listed edge within 2^-20 |AB| of the line,
+  // nearest first; then any within 1, 2, 4, ... ulp up to the loosest tolerance,
+  // nearest first. Far from the origin the loosest tolerance ((k+1) ulp with k the
+  // number of mesh vertices) reaches mesh vertices that are not on the segment.
+  // Depth first: a step that leads nowhere is taken back and the next one tried
+  // (where two nearly parallel segments leave one vertex, the straightest step may
+  // be the other segment's, which ends past B: the notch family). A vertex from which
+  // B was not reached is not tried again (what lies ahead of it does not depend on
+  // the way there), so the walk visits each vertex once.
+  // {-1, v} when there is no chain, v where the first choices stopped.
   std::vector<int> walk(int a, int b) const {
     const Point &A = P(a), &B = P(b);
     const double loose = segment_tolerance(A, B, mesh_.vertices.size());
     std::vector<double> tiers;  // 1, 2, 4, ... ulp, then the loosest
     for (std::size_t k = 0; k < mesh_.vertices.size(); k = 2 * k + 1) tiers.push_back(segment_tolerance(A, B, k));
     tiers.push_back(loose);
-    std::vector<int> chain{a};
-    int v = a;
-    while (chain.size() <= mesh_.vertices.size()) {
-      if (adjacent(v, b)) {
-        chain.push_back(b);
-        return chain;
-      }
+    // The steps from v, in the order they are tried.
+    auto steps = [&](int v) {
       std::vector<int> ahead_of_v;
       for (int i = adj_begin_[static_cast<std::size_t>(v)]; i < adj_begin_[static_cast<std::size_t>(v) + 1]; ++i) {
         const int w = adj_[static_cast<std::size_t>(i)];
@@ -418,43 +422,52 @@ class Certifier {
         if (mesh_to_input_[static_cast<std::size_t>(w)] < 0 && ahead(A, B, P(v), P(w)) > 0 && ahead(A, B, P(w), B) > 0)
           ahead_of_v.push_back(w);
       }
-      auto nearest = [&](auto&& qualifies) {
-        int best = -1;
-        for (int w : ahead_of_v)
-          if (qualifies(w) && (best < 0 || ahead(A, B, P(w), P(best)) > 0)) best = w;
-        return best;
-      };
-      // Listed edges by tier, tightest first: at an input vertex where two segments
-      // meet at a small angle, the other segment's listed edges reach vertices near
-      // this line (within 2^-20 |AB|) nearer than this chain's next vertex.
       const auto listed = [&](int w) { return listed_.count(edge_key(v, w)) != 0; };
-      int best = -1;
-      // In each tier, the listed step that turns least from AB (the nearest ahead
-      // among equal turns): far below the tolerance's scale (features of 1e-300 at
-      // a corner of a unit square) a tier holds the first vertices of every segment
-      // that leaves v, and the nearest ahead may be another segment's (the precision
-      // campaign, docs/FUZZING.md).
-      auto straightest = [&](auto&& qualifies) {
-        int pick = -1;
-        for (int w : ahead_of_v) {
-          if (!qualifies(w)) continue;
-          const int turn = pick < 0 ? -1 : compare_turn(A, B, P(v), P(w), P(pick));
-          if (pick < 0 || turn < 0 || (turn == 0 && ahead(A, B, P(w), P(pick)) > 0)) pick = w;
-        }
-        return pick;
+      const auto nearer = [&](int q, int r) { return ahead(A, B, P(q), P(r)) > 0; };
+      // Far below the tolerance's scale (features of 1e-300 at a corner of a unit
+      // square) a tier holds the first vertices of every segment that leaves v, and
+      // the nearest ahead may be another segment's (the precision campaign,
+      // docs/FUZZING.md): in the listed tiers the straightest step comes first.
+      const auto straighter = [&](int q, int r) {
+        const int turn = compare_turn(A, B, P(v), P(q), P(r));
+        return turn < 0 || (turn == 0 && nearer(q, r));
       };
-      for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
-        best = straightest([&](int w) { return listed(w) && within(A, B, P(w), tiers[t]); });
-      if (best < 0) best = nearest([&](int w) { return listed(w) && near_line(A, B, P(w)); });
-      for (std::size_t t = 0; best < 0 && t < tiers.size(); ++t)
-        best = nearest([&](int w) { return within(A, B, P(w), tiers[t]); });
-      if (best < 0) break;
-      chain.push_back(best);
-      v = best;
+      std::vector<int> order;
+      auto take = [&](auto&& qualifies, auto&& before) {
+        std::vector<int> pool;
+        for (int w : ahead_of_v)
+          if (qualifies(w) && std::find(order.begin(), order.end(), w) == order.end()) pool.push_back(w);
+        std::sort(pool.begin(), pool.end(), before);
+        order.insert(order.end(), pool.begin(), pool.end());
+      };
+      for (double tol : tiers) take([&](int w) { return listed(w) && within(A, B, P(w), tol); }, straighter);
+      take([&](int w) { return listed(w) && near_line(A, B, P(w)); }, nearer);
+      for (double tol : tiers) take([&](int w) { return within(A, B, P(w), tol); }, nearer);
+      return order;
+    };
+    std::vector<int> chain{a};
+    std::vector<std::vector<int>> options{steps(a)};
+    std::vector<std::size_t> tried{0};
+    std::unordered_set<int> dead;
+    int stuck = -1;
+    while (!chain.empty()) {
+      if (adjacent(chain.back(), b)) {
+        chain.push_back(b);
+        return chain;
+      }
+      if (tried.back() == options.back().size()) {  // nothing ahead of here reaches B
+        if (stuck < 0) stuck = chain.back();
+        dead.insert(chain.back());
+        chain.pop_back(), options.pop_back(), tried.pop_back();
+        continue;
+      }
+      const int w = options.back()[tried.back()++];
+      if (dead.count(w)) continue;
+      chain.push_back(w);
+      options.push_back(steps(w));
+      tried.push_back(0);
     }
-    chain.push_back(v);  // marks where the walk stopped
-    chain.insert(chain.begin(), -1);
-    return chain;
+    return {-1, stuck};
   }
 
   // Where validate() split a file's segment (at a vertex on it, or with
@@ -529,6 +542,11 @@ class Certifier {
     for (std::size_t h = 0; h < constrained_half_.size(); ++h)
       if (tri_ok_[h / 3] && chain_edge_.count(edge_key(from(static_cast<int>(h)), to(static_cast<int>(h))))) constrained_half_[h] = 1;
     report_.stats.constrained_edges = chain_edge_.size();
+    // Sorted: the exemption's scans then meet them in an order independent of the hash.
+    std::vector<std::uint64_t> keys;
+    for (const auto& kv : chain_edge_) keys.push_back(kv.first);
+    std::sort(keys.begin(), keys.end());
+    for (std::uint64_t key : keys) chain_segments_.segments.push_back({P(static_cast<int>(key >> 32)), P(static_cast<int>(key & 0xffffffffu))});
   }
 
   void check_listed_constrained_edges() {
@@ -599,6 +617,44 @@ class Certifier {
         };
         side(left, sides & ExpectedDomain::Left, "left");
         side(right, sides & ExpectedDomain::Right, "right");
+      }
+    }
+  }
+
+  // The coverage checks above count triangles by the chains' winding number,
+  // the domain's only where the chains are drawn as the segments are: no two
+  // chain edges meet but at a shared endpoint, no mesh vertex lies on one
+  // (chain_embedding.h). Chains within the tolerance of nearly parallel
+  // segments can cross where the segments do not.
+  void check_chains_cross_nowhere() {
+    std::vector<std::pair<std::uint64_t, int>> keyed(chain_edge_.begin(), chain_edge_.end());
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::array<int, 2>> edges;
+    edges.reserve(keyed.size());
+    for (const auto& [key, s] : keyed) edges.push_back({static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)});
+    std::vector<ChainMeet> meets = chain_meetings(mesh_.vertices, edges, used_);
+    std::sort(meets.begin(), meets.end(), [](const ChainMeet& x, const ChainMeet& y) {
+      return std::tie(x.edge, x.other, x.vertex) < std::tie(y.edge, y.other, y.vertex);
+    });
+    auto text = [&](int i) {
+      const auto& e = edges[static_cast<std::size_t>(i)];
+      return fmt::format("edge {}-{} {} {} of segment {}", e[0], e[1], pt(P(e[0])), pt(P(e[1])), keyed[static_cast<std::size_t>(i)].second);
+    };
+    for (const ChainMeet& m : meets) {
+      const auto& e = edges[static_cast<std::size_t>(m.edge)];
+      const int s = keyed[static_cast<std::size_t>(m.edge)].second;
+      if (m.other >= 0) {
+        const auto& f = edges[static_cast<std::size_t>(m.other)];
+        add({Reason::ChainEdgesMeet,
+             fmt::format("{} and {} meet other than at a shared end: the mesh's boundary crosses itself, so it covers part of the "
+                         "plane twice or leaves out domain (a point placed across a nearly parallel segment?)",
+                         text(m.edge), text(m.other)),
+             {}, {e, f}, {e[0], e[1], f[0], f[1]}, {}, s});
+      } else {
+        add({Reason::ChainEdgesMeet,
+             fmt::format("mesh vertex {} {} lies on {} but is not one of its ends: its triangles overlap the ones along that edge",
+                         m.vertex, pt(P(m.vertex)), text(m.edge)),
+             {}, {e}, {m.vertex, e[0], e[1]}, {}, s});
       }
     }
   }
@@ -843,7 +899,7 @@ class Certifier {
     }
   }
 
-  PrecisionView precision_view() const { return {mesh_, tri_ok_, twin_, constrained_half_, outside_}; }
+  PrecisionView precision_view() const { return {mesh_, tri_ok_, twin_, constrained_half_, outside_, chain_segments_}; }
   // The input outside the expected domain: vertices on no domain triangle, segments
   // with the domain on neither side (the precision exemption's sliver clause).
   void collect_outside_input() {

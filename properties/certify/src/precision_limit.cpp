@@ -199,7 +199,11 @@ class Search {
   }
   // The split of edge h at p: every triangle it makes, on each side, counter-clockwise;
   // on the mesh boundary with p strictly outside, the closed sliver a, p, b free of
-  // the input outside the domain (the sliver clause).
+  // the input outside the domain and of the mesh's own chains (the sliver clause, as
+  // the reference decides it on its whole triangulation: where a nearly parallel
+  // segment leaves a or b, its chain may pass through the sliver). A mesh vertex in
+  // the sliver implies a chain edge meeting it in a mesh the coverage checks pass.
+  // A linear scan: only bad triangles on the boundary come here.
   bool split_insertable_any(int h, const std::vector<Point>& ps) const {
     const int g = v_.twin[static_cast<std::size_t>(h)];
     const Point &a = P(from(h)), &b = P(to(h)), &c = P(apex(h));
@@ -209,7 +213,8 @@ class Search {
       if (g >= 0) {
         const Point& d = P(apex(g));
         if (exact::orient(b, p, d) <= 0 || exact::orient(p, a, d) <= 0 || below_precision_floor(p, d)) continue;
-      } else if (exact::orient(a, b, p) < 0 && sliver_blocked(v_.outside, a, b, p, exact::orient)) {
+      } else if (exact::orient(a, b, p) < 0 &&
+                 (sliver_blocked(v_.outside, a, b, p, exact::orient) || sliver_blocked(v_.chains, a, b, p, exact::orient))) {
         continue;
       }
       return true;

@@ -18,14 +18,16 @@ namespace lepp::certify {
 // The mesh as the certifier has checked it. Half-edge h = 3t + i runs from
 // triangle t's vertex i to vertex i + 1; twin[h] is the opposite half-edge, -1
 // on the mesh boundary, -2 for a bad edge; chain[h] is 1 on a segment chain.
-// outside: the input's vertices and segments outside the expected domain (the
-// sliver clause of a boundary split, ALGORITHM.md section 8b).
+// outside: the input's vertices and segments outside the expected domain, and
+// chains: the mesh's segment-chain edges (the sliver clause of a boundary split,
+// ALGORITHM.md section 8b: the domain's own boundary blocks it too).
 struct PrecisionView {
   const Mesh& mesh;
   const std::vector<char>& tri_ok;
   const std::vector<int>& twin;
   const std::vector<char>& chain;
   const OutsideInput& outside;
+  const OutsideInput& chains;
 };
 
 // True iff triangle t is precision-limited for `method`: each choice of point

@@ -19,6 +19,7 @@ Check check_of(Reason reason) {
     case Reason::BoundaryNotOnDomainBoundary:
     case Reason::MeshOutsideDomain:
     case Reason::DomainBoundaryUncovered:
+    case Reason::ChainEdgesMeet:
     case Reason::EulerCharacteristic: return Check::Topology;
     case Reason::InputVertexMissing:
     case Reason::InputVertexMoved: return Check::InputVertices;
@@ -62,6 +63,7 @@ const char* to_string(Reason reason) {
     case Reason::BoundaryNotOnDomainBoundary: return "boundary-not-on-domain-boundary";
     case Reason::MeshOutsideDomain: return "mesh-outside-domain";
     case Reason::DomainBoundaryUncovered: return "domain-boundary-uncovered";
+    case Reason::ChainEdgesMeet: return "chain-edges-meet";
     case Reason::EulerCharacteristic: return "euler-characteristic";
     case Reason::InputVertexMissing: return "input-vertex-missing";
     case Reason::InputVertexMoved: return "input-vertex-moved";

@@ -32,6 +32,7 @@ enum class Reason {
   BoundaryNotOnDomainBoundary,  // a mesh boundary edge inside the domain (gap) or facing the wrong way
   MeshOutsideDomain,         // a triangle beyond a domain boundary segment (exterior or hole meshed)
   DomainBoundaryUncovered,   // a domain boundary segment with no triangle along it
+  ChainEdgesMeet,            // two segment-chain edges cross or overlap, or a mesh vertex lies on one (overlap)
   EulerCharacteristic,       // V - E + F differs from the domain's
   // Input preservation
   InputVertexMissing,        // an input vertex in the domain is not a mesh vertex
