@@ -428,6 +428,27 @@ Pslg precision_input(const std::string& name) {
 // The cause, on the numbers: every double around t1's midpoint is within the floor of a
 // vertex of t1; t2's midpoint is beyond the floor of t1's vertices (the certifier, which
 // also holds it to t2's apex and the orientations, finds it insertable: the next test).
+// Another notch (B = A + (35, 1), w = A + (69, 1)), the reference's mesh at 35 degrees by
+// the midpoint method, stored with its list: 17 triangles left at double precision, all
+// exempt. For triangle (A, A + (8, 1), A + (2, 4)) a choice is a boundary split whose
+// midpoint rounds half an ulp outside, and the closed sliver it would cover meets the
+// mesh's own chains: the reference refuses it (its scan sees every constrained edge).
+// Before the sliver clause counted the chains (2026-12-02), the certifier saw only the
+// input outside the domain, found that split insertable and rejected the claim (a false
+// unimprovable-rule-fails; mutant cert-prec-sliver-chains-ignored).
+TEST(PrecisionExemption, NotchSplitWhoseSliverMeetsAChainIsNotInsertable) {
+  const std::string prefix = LEPP_SOURCE_DIR "/corpus/regressions/precision/notch-exemption-sliver-chain-reference-35/out";
+  const Pslg p = precision_input("notch-exemption-sliver-chain");
+  certify::Options o;
+  o.min_angle_deg = 35;
+  o.precision_method = Method::Midpoint;
+  o.unimprovable = read_unimprovable(prefix);
+  ASSERT_EQ(o.unimprovable.size(), 17u);
+  const certify::Report r = certify::certify(p, read_mesh(prefix), o);
+  EXPECT_TRUE(r.certified()) << certify::format_report(r);
+  EXPECT_EQ(r.unimprovable_accepted.size(), 17u);
+}
+
 TEST(PrecisionExemption, NotchT1MidpointIsBelowTheFloorAndT2sIsNot) {
   for (const T2EdgeCase& c : t2_edge_cases()) {
     for (double x : {std::floor(c.t1_midpoint_exact[0]), std::ceil(c.t1_midpoint_exact[0])})
