@@ -135,8 +135,8 @@ class Refiner {
 
         prefetch_around(lepp);
         Choice choice = select_point(mesh_, lepp, opt_.method);
-        if (!choice_insertable(mesh_, lepp, choice, outside_) && !round_otherwise(mesh_, lepp, choice, outside_) &&
-            !other_branch(mesh_, lepp, opt_.method, choice, outside_)) {  // the precision stop (section 8b)
+        if (!choice_insertable(mesh_, lepp, choice, obstacles_) && !round_otherwise(mesh_, lepp, choice, obstacles_) &&
+            !other_branch(mesh_, lepp, opt_.method, choice, obstacles_)) {  // the precision stop (section 8b)
           ++result.precision_stops;
           stopped_.push_back({item, choice.rule, choice.point});
           break;
@@ -150,6 +150,7 @@ class Refiner {
         int split_segment = -1;
         const int p = static_cast<int>(mesh_.pts.size());
         const int around = inserter_.insert(mesh_, mem_, choice, split_segment);
+        if (split_segment >= 0) obstacles_.on_split(mesh_, split_segment, p);
         ++steiner;
         if (opt_.trace) {
           step.split_segment = split_segment;
@@ -283,7 +284,7 @@ class Refiner {
   Quality quality_;
   TriMesh mesh_;
   Inserter inserter_;
-  OutsideOfDomain outside_{pslg_, mem_};  // the sliver clause's input outside the domain (section 8b)
+  SliverObstacles obstacles_{pslg_, mem_};  // what the sliver clause tests (section 8b)
   std::vector<Stopped> stopped_;
   std::int64_t refill_mark_ = 0;
 };

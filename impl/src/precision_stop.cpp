@@ -32,7 +32,7 @@ void exact_centroid(const TriMesh& m, const Lepp& lepp, mpq_class& x, mpq_class&
 
 }  // namespace
 
-bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDomain& outside) {
+bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, SliverObstacles& obstacles) {
   mpq_class x, y;
   const FTri& f1 = m.t(lepp.t1);
   const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
@@ -51,7 +51,7 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDom
       alt.point = {px, py};
       if (alt.point == c.point) continue;
       if (c.rule == Rule::CentroidInOther && !strictly_inside(m, c.tri, alt.point)) continue;  // the branch's condition
-      if (choice_insertable(m, lepp, alt, outside)) {
+      if (choice_insertable(m, lepp, alt, obstacles)) {
         c = alt;
         return true;
       }
@@ -59,7 +59,7 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDom
   return false;
 }
 
-bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, OutsideOfDomain& outside) {
+bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, SliverObstacles& obstacles) {
   if (method != Method::Centroid || lepp.t2 < 0) return false;
   if (c.rule != Rule::CentroidInOther && c.rule != Rule::SecondLongestMidpoint) return false;
   const int l1 = middle_edge(m, lepp.t1), l2 = middle_edge(m, lepp.t2);
@@ -76,7 +76,7 @@ bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, Outsid
     for (const Point& g : centroids) turns = turns || !strictly_inside(m, other, g);
     if (!turns) return false;
     Choice mid = split_choice(m, star, c1 ? l1 : l2, Rule::SecondLongestMidpoint);
-    if (!choice_insertable(m, lepp, mid, outside) && !round_otherwise(m, lepp, mid, outside)) return false;
+    if (!choice_insertable(m, lepp, mid, obstacles) && !round_otherwise(m, lepp, mid, obstacles)) return false;
     c = mid;
     return true;
   }
@@ -85,7 +85,7 @@ bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, Outsid
   in_other.tri = other;
   for (const Point& g : centroids) {
     in_other.point = g;
-    if (strictly_inside(m, other, g) && choice_insertable(m, lepp, in_other, outside)) {
+    if (strictly_inside(m, other, g) && choice_insertable(m, lepp, in_other, obstacles)) {
       c = in_other;
       return true;
     }

@@ -3,12 +3,11 @@
 // rounded to doubles, be inserted where its insertion needs it? If not, the
 // bad triangle is left (listed as unimprovable at double precision).
 #pragma once
-#include "lepp/boundary_sliver.h"
 #include "lepp/refine.h"
 #include "lepp_search.h"
-#include "outside_input.h"
 #include "point_selection.h"
 #include "predicates.h"
+#include "sliver_obstacles.h"
 #include "tri_mesh.h"
 
 namespace lepp::fast {
@@ -18,16 +17,16 @@ namespace lepp::fast {
 // may be half an ulp off the edge's line, or on an endpoint), and no new edge
 // is below the precision floor (lepp::below_precision_floor: a few ulps).
 // On the domain boundary with p strictly outside, the split also covers the
-// closed sliver a, p, b: no input vertex or segment outside the domain may be
-// in it (the sliver clause; a linear scan of those, which only this branch
-// reaches and which there is no spatial index of).
-inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p, OutsideOfDomain& outside) {
+// closed sliver a, p, b: no vertex may be in it and no constrained edge meet
+// it, the domain's own boundary included (the sliver clause: SliverObstacles,
+// an index built the first time this branch is reached).
+inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p, SliverObstacles& obstacles) {
   const FTri& f = m.t(ti);
   const Point &a = m.p(f.v[next3(i)]), &b = m.p(f.v[prev3(i)]), &c = m.p(f.v[i]);
   if (orient(a, p, c) <= 0 || orient(p, b, c) <= 0) return false;
   if (below_precision_floor(p, a) || below_precision_floor(p, b) || below_precision_floor(p, c)) return false;
   if (f.nbr[i] < 0 && orient(a, b, p) < 0)
-    return !sliver_blocked(outside.of(m), a, b, p, [](const Point& x, const Point& y, const Point& z) { return orient(x, y, z); });
+    return !obstacles.blocks(m, f.v[next3(i)], f.v[prev3(i)], p);
   if (f.nbr[i] < 0) return true;
   const FTri& g = m.t(nbr_tri(f.nbr[i]));
   const Point& d = m.p(g.v[nbr_edge(f.nbr[i])]);
@@ -61,8 +60,8 @@ inline int place_in(const TriMesh& m, int ti, const Point& p) {
 // A point for a CDT insertion: in the closed terminal quad (t1, else t2),
 // off its vertices and off constrained edges, and farther than the precision
 // floor from the vertices of the pair.
-inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c, OutsideOfDomain& outside) {
-  if (c.edge >= 0) return split_insertable(m, c.tri, c.edge, c.point, outside);
+inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c, SliverObstacles& obstacles) {
+  if (c.edge >= 0) return split_insertable(m, c.tri, c.edge, c.point, obstacles);
   if (near_pair_vertex(m, lepp, c.point)) return false;
   const int in_first = place_in(m, c.tri, c.point);
   if (in_first != 0 || c.other < 0) return in_first > 0;
@@ -73,13 +72,13 @@ inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& 
 // (each coordinate rounded down and up), in ascending x then y, the first that
 // can (and, for centroid-in-other, is still strictly inside the other triangle)
 // replaces it. False when none can: the triangle is left.
-bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, OutsideOfDomain& outside);
+bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, SliverObstacles& obstacles);
 
 // Remark 10 at the limit: when the branch's point cannot be inserted at any
 // rounding, the other branch, if a double around the exact centroid turns the
 // branch (a rounding outside the other triangle: the midpoint of l*, as
 // rounded; else the roundings strictly inside it: the centroid there). The
 // certifier counts both (CERTIFIER.md section 5c). False: neither can.
-bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, OutsideOfDomain& outside);
+bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, SliverObstacles& obstacles);
 
 }  // namespace lepp::fast

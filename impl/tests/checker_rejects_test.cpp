@@ -79,5 +79,20 @@ TEST(CheckerRejects, OverlappingTriangles) {
   EXPECT_TRUE(mentions(check_invariants(p, m, {}), "same direction"));
 }
 
+// The global overlap check: a triangle folded across the mesh shares no edge with
+// what it covers, so only overlapping_triangles sees it; neighbours touching along
+// an edge or at a vertex are no overlap.
+TEST(CheckerRejects, TriangleAcrossTheMesh) {
+  Pslg p = square();
+  Mesh m = fast::build_cdt(p);
+  EXPECT_TRUE(overlapping_triangles(m).empty());
+  m.vertices.push_back({2, 1});
+  m.vertices.push_back({3, 1});
+  m.vertices.push_back({2, 2});
+  const int n = static_cast<int>(m.vertices.size());
+  m.triangles.push_back({n - 3, n - 2, n - 1});  // inside the square, over its triangles
+  EXPECT_TRUE(mentions(overlapping_triangles(m), "overlap"));
+}
+
 }  // namespace
 }  // namespace lepp::impl_test

@@ -123,4 +123,34 @@ std::vector<std::string> check_invariants(const Pslg& pslg, const Mesh& mesh, co
   return out;
 }
 
+std::vector<std::string> overlapping_triangles(const Mesh& mesh) {
+  std::vector<std::string> out;
+  auto pt = [&](int v) { return kp(mesh.vertices[static_cast<std::size_t>(v)]); };
+  // Some edge line of t with every vertex of u on its closed outer (right) side.
+  auto separates = [&](const Tri& t, const Tri& u) {
+    for (int i = 0; i < 3; ++i) {
+      const K::Point_2 a = pt(t[static_cast<std::size_t>(i)]), b = pt(t[static_cast<std::size_t>((i + 1) % 3)]);
+      if (std::all_of(u.begin(), u.end(), [&](int v) { return CGAL::orientation(a, b, pt(v)) != CGAL::LEFT_TURN; })) return true;
+    }
+    return false;
+  };
+  const std::size_t n = mesh.triangles.size();
+  std::vector<CGAL::Bbox_2> box(n);
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Tri& t = mesh.triangles[i];
+    box[i] = pt(t[0]).bbox() + pt(t[1]).bbox() + pt(t[2]).bbox();
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return box[x].xmin() < box[y].xmin(); });
+  for (std::size_t k = 0; k < n; ++k)  // a sweep in x: only pairs whose boxes overlap
+    for (std::size_t l = k + 1; l < n && box[order[l]].xmin() <= box[order[k]].xmax(); ++l) {
+      const std::size_t i = order[k], j = order[l];
+      if (!CGAL::do_overlap(box[i], box[j])) continue;
+      const Tri &t = mesh.triangles[i], &u = mesh.triangles[j];
+      if (!separates(t, u) && !separates(u, t)) out.push_back(fmt::format("triangles {} and {} overlap", std::min(i, j), std::max(i, j)));
+    }
+  return out;
+}
+
 }  // namespace lepp::impl_test

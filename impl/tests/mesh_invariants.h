@@ -25,4 +25,11 @@ struct InvariantOptions {
 // engines' sin^2 threshold) and area <= max_area.
 std::vector<std::string> check_invariants(const Pslg& pslg, const Mesh& mesh, const InvariantOptions& options);
 
+// Pairs of counter-clockwise triangles whose interiors overlap (empty: none), exactly:
+// two triangles have disjoint interiors iff the line of an edge of one of them has the
+// other on its closed outer side. Not among check_invariants, whose local tests (each
+// edge in two triangles, opposite ways) miss a boundary folded across another part of
+// the mesh: a split at a point beyond a neighbouring boundary segment.
+std::vector<std::string> overlapping_triangles(const Mesh& mesh);
+
 }  // namespace lepp::impl_test
