@@ -136,7 +136,8 @@ class Refiner {
         prefetch_around(lepp);
         Choice choice = select_point(mesh_, lepp, opt_.method);
         if (!choice_insertable(mesh_, lepp, choice, obstacles_) && !round_otherwise(mesh_, lepp, choice, obstacles_) &&
-            !other_branch(mesh_, lepp, opt_.method, choice, obstacles_)) {  // the precision stop (section 8b)
+            !other_branch(mesh_, lepp, opt_.method, choice, obstacles_) &&
+            !other_constrained_edge(mesh_, lepp, choice, obstacles_)) {  // the precision stop (section 8b)
           ++result.precision_stops;
           stopped_.push_back({item, choice.rule, choice.point});
           break;

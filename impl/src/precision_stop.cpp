@@ -93,4 +93,15 @@ bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, Sliver
   return false;
 }
 
+bool other_constrained_edge(TriMesh& m, const Lepp& lepp, Choice& c, SliverObstacles& obstacles) {
+  if (lepp.t2 < 0 || c.tri != lepp.t1 || c.edge < 0) return false;
+  if (c.rule != Rule::BothSecondLongestMidpoint && c.rule != Rule::SecondLongestMidpoint) return false;
+  const int l1 = middle_edge(m, lepp.t1), l2 = middle_edge(m, lepp.t2);
+  if (c.edge != l1 || m.t(lepp.t1).seg[l1] < 0 || m.t(lepp.t2).seg[l2] < 0) return false;  // not both constrained
+  Choice mid = split_choice(m, lepp.t2, l2, c.rule);
+  if (!choice_insertable(m, lepp, mid, obstacles) && !round_otherwise(m, lepp, mid, obstacles)) return false;
+  c = mid;
+  return true;
+}
+
 }  // namespace lepp::fast

@@ -81,4 +81,11 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, SliverObstac
 // certifier counts both (CERTIFIER.md section 5c). False: neither can.
 bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, SliverObstacles& obstacles);
 
+// Both second-longest edges constrained (centroid rule 3; the midpoint method's
+// rule 3 with both): when t1's midpoint cannot be inserted at any rounding,
+// t2's, the formula's double then its other roundings. The paper allows either
+// constrained edge; the certifier counts both (CERTIFIER.md section 5c). False:
+// t2's cannot be inserted either (or the rule is another).
+bool other_constrained_edge(TriMesh& m, const Lepp& lepp, Choice& c, SliverObstacles& obstacles);
+
 }  // namespace lepp::fast

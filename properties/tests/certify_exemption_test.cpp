@@ -386,10 +386,11 @@ TEST(SmallAngleExemption, TriangleRoundsItsAngleTest) {
 // both of whose second-longest edges are constrained (t1's on w -> A's chain, t2's on the
 // bottom boundary, or the two walls of a corner). The engines split t1's (ALGORITHM.md
 // section 5); its midpoint at every rounding is within the precision floor of a vertex of
-// t1, so they leave t1 at double precision. The paper allows either constrained
-// second-longest edge (CONFORMANCE.md) and t2's midpoint, beyond the floor, can be
-// inserted, so the certifier rejects the claim: it is right, and the engines' stop is an
-// open finding (CERTIFIER.md section 5c, "Finding").
+// t1, and until 2026-12-02 they then left t1 at double precision. The paper allows either
+// constrained second-longest edge (CONFORMANCE.md) and t2's midpoint, beyond the floor,
+// can be inserted, so the certifier rejects that claim, rightly (CERTIFIER.md section 5c,
+// "Finding"). The engines now split t2's there: PrecisionStop.OtherConstrainedSecond-
+// LongestEdgeIsTriedAtTheLimit (impl/tests/precision_stop_test.cpp).
 struct T2EdgeCase {
   std::string name;  // corpus/regressions/precision/<name>.poly, mesh in <name>-reference-<theta>/
   double theta;
@@ -397,14 +398,12 @@ struct T2EdgeCase {
   std::array<std::array<double, 2>, 3> t1;  // in ulps from (X, X)
   std::array<double, 2> t1_midpoint_exact;  // t1's constrained second-longest edge
   std::array<double, 2> t2_midpoint;        // t2's: a double, insertable
-  Rule rule;                                // the rule the engines stop at
 };
 
 std::vector<T2EdgeCase> t2_edge_cases() {
-  return {{"notch-exemption-t2-second-longest", 30, Method::Centroid, {{{58, -3}, {65, 2}, {58, 1}}}, {61.5, 1.5}, {62, -3},
-           Rule::BothSecondLongestMidpoint},
+  return {{"notch-exemption-t2-second-longest", 30, Method::Centroid, {{{58, -3}, {65, 2}, {58, 1}}}, {61.5, 1.5}, {62, -3}},
           {"notch-exemption-t2-second-longest-midpoint", 35, Method::Midpoint, {{{27, 44}, {22, 36}, {27, 38}}}, {27, 41},
-           {22, 44}, Rule::SecondLongestMidpoint}};
+           {22, 44}}};
 }
 
 const double kX = std::ldexp(1.0, 52);
@@ -461,9 +460,10 @@ TEST(PrecisionExemption, NotchT1MidpointIsBelowTheFloorAndT2sIsNot) {
   }
 }
 
-// The reference's stored mesh and its list: every claim but the one at t1 is accepted,
-// with lepp's tie rule; the rule alone does not exempt t1. This is the right verdict and
-// stays so when the engines are fixed (the stored mesh is then no longer theirs).
+// The reference's stored mesh and its list (made before the fix): every claim but the one
+// at t1 is accepted, with lepp's tie rule; the rule alone does not exempt t1. This is the
+// right verdict and stays so now that the engines split t2's edge (the stored mesh is no
+// longer theirs).
 TEST(PrecisionExemption, NotchStopWithAnInsertableT2EdgeIsRejected) {
   for (const T2EdgeCase& c : t2_edge_cases()) {
     const Pslg p = precision_input(c.name);
@@ -490,34 +490,6 @@ TEST(PrecisionExemption, NotchStopWithAnInsertableT2EdgeIsRejected) {
     EXPECT_EQ(std::count(alone.precision_exempt_triangles.begin(), alone.precision_exempt_triangles.end(), t1), 0) << c.name;
     EXPECT_EQ(alone.precision_exempt_count + 1, o.unimprovable.size()) << c.name << "\n" << certify::format_report(alone);
     EXPECT_EQ(alone.count(certify::Reason::AngleBelowTheta), 1u) << c.name << "\n" << certify::format_report(alone);
-  }
-}
-
-// Pins the engines' current stop (the open finding): the reference leaves t1 at
-// double precision with t1's midpoint. SHOULD BE: when t1's constrained second-longest
-// midpoint cannot be inserted at any rounding and t2's second-longest edge is constrained
-// too, the engines try t2's (as they try Remark 10's other branch), insert it, and the
-// mesh certifies by the strict rule; then invert this test (the fast engine must follow
-// in the same change: ALGORITHM.md is what both engines decide).
-TEST(PrecisionExemption, EnginesTryOnlyT1sConstrainedSecondLongestEdge) {
-  for (const T2EdgeCase& c : t2_edge_cases()) {
-    RefineOptions o;
-    o.min_angle_deg = c.theta;
-    o.method = c.method;
-    const RefineResult r = reference::refine(precision_input(c.name), o);
-    ASSERT_EQ(r.outcome, Outcome::Unimprovable) << c.name;
-    const int t1 = triangle_at(r.mesh, c.t1);
-    ASSERT_GE(t1, 0) << c.name;
-    const auto left = std::find_if(r.unimprovable.begin(), r.unimprovable.end(), [&](const UnimprovableTriangle& u) {
-      std::set<int> a(u.triangle.begin(), u.triangle.end());
-      const Tri& t = r.mesh.triangles[static_cast<std::size_t>(t1)];
-      return a == std::set<int>(t.begin(), t.end());
-    });
-    ASSERT_NE(left, r.unimprovable.end()) << c.name << ": t1 is no longer left (the finding fixed? see the comment)";
-    EXPECT_EQ(left->reason, LeftReason::DoublePrecision) << c.name;
-    EXPECT_EQ(left->rule, c.rule) << c.name;
-    EXPECT_LT(std::abs(left->point.x - kX - c.t1_midpoint_exact[0]), 1) << c.name;  // t1's edge, not t2's
-    EXPECT_LT(std::abs(left->point.y - kX - c.t1_midpoint_exact[1]), 1) << c.name;
   }
 }
 

@@ -84,7 +84,8 @@ class Refiner {
         }
         Selection s = select_point(lepp, options_.method);
         if (!insertable(tr_, s, lepp) && !round_otherwise(tr_, lepp, s) &&
-            !other_branch(tr_, lepp, options_.method, s)) {  // the precision stop (section 8b)
+            !other_branch(tr_, lepp, options_.method, s) &&
+            !other_constrained_edge(tr_, lepp, s)) {  // the precision stop (section 8b)
           ++result_.precision_stops;
           stopped_.push_back({t, s.rule, s.point});
           break;

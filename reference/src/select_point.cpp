@@ -318,6 +318,18 @@ bool other_branch(const Triangulation& tr, const Lepp& lepp, Method method, Sele
   return false;
 }
 
+bool other_constrained_edge(const Triangulation& tr, const Lepp& lepp, Selection& s) {
+  if (lepp.t2 == FH() || s.split_face != lepp.t1) return false;
+  if (s.rule != Rule::BothSecondLongestMidpoint && s.rule != Rule::SecondLongestMidpoint) return false;
+  FH t1 = lepp.t1, t2 = lepp.t2;
+  int s1 = second_longest_edge(t1), s2 = second_longest_edge(t2);
+  if (s.split_index != s1 || !t1->is_constrained(s1) || !t2->is_constrained(s2)) return false;  // not both constrained
+  Selection mid = edge_midpoint(s.rule, t2, s2);
+  if (!insertable(tr, mid, lepp) && !round_otherwise(tr, lepp, mid)) return false;
+  s = mid;
+  return true;
+}
+
 namespace {
 
 // The faces around a new vertex v (made by the insertion, flags unset) are

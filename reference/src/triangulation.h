@@ -115,6 +115,10 @@ bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s);
 // around the exact centroid turns the branch (one outside the other triangle:
 // the midpoint of l*, as rounded; else those strictly inside it: the centroid).
 bool other_branch(const Triangulation& tr, const Lepp& lepp, Method method, Selection& s);
+// Both second-longest edges constrained, when t1's midpoint cannot be inserted at any
+// rounding: t2's, the formula's double then its other roundings (the paper allows either
+// constrained edge). False: t2's cannot either, or the rule is another.
+bool other_constrained_edge(const Triangulation& tr, const Lepp& lepp, Selection& s);
 // Inserts the selected point, restores the constrained Delaunay property by
 // flips in the legalization order of ALGORITHM.md section 7 (counting cocircular
 // ties), sets ids, segment membership and domain flags.
