@@ -3,6 +3,8 @@
 // for candidate pairs, then exact signs.
 #include "chain_embedding.h"
 
+#include <algorithm>
+
 #include <CGAL/Bbox_2.h>
 #include <CGAL/box_intersection_d.h>
 
@@ -16,12 +18,6 @@ using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
 
 Box box_of(const Point& u, const Point& w, int info) {
   return Box(CGAL::Bbox_2(std::min(u.x, w.x), std::min(u.y, w.y), std::max(u.x, w.x), std::max(u.y, w.y)), info);
-}
-
-// w lies on the closed segment uv (collinear and in its box).
-bool on_closed(const Point& u, const Point& v, const Point& w) {
-  return exact::orient(u, v, w) == 0 && std::min(u.x, v.x) <= w.x && w.x <= std::max(u.x, v.x) && std::min(u.y, v.y) <= w.y &&
-         w.y <= std::max(u.y, v.y);
 }
 
 }  // namespace
@@ -57,16 +53,19 @@ std::vector<ChainMeet> chain_meetings(const std::vector<Point>& points, const st
   };
   CGAL::box_self_intersection_d(edge_boxes.begin(), edge_boxes.end(), pair);
 
-  // Vertex against edge: a mesh vertex (in a triangle) on an edge's interior.
+  // Vertex against edge: a mesh vertex (in a triangle) on an edge's interior. The
+  // closed boxes meet, so the vertex is in the edge's box: on the closed segment iff
+  // collinear.
   std::vector<Box> vertex_boxes;
   for (std::size_t v = 0; v < points.size(); ++v)
     if (used[v]) vertex_boxes.push_back(box_of(points[v], points[v], static_cast<int>(v)));
   auto on_edge = [&](const Box& vb, const Box& eb) {
     const int v = vb.info();
     const std::array<int, 2>& e = edges[static_cast<std::size_t>(eb.info())];
-    if (v != e[0] && v != e[1] && on_closed(P(e[0]), P(e[1]), P(v))) found.push_back({eb.info(), -1, v});
+    if (v != e[0] && v != e[1] && exact::orient(P(e[0]), P(e[1]), P(v)) == 0) found.push_back({eb.info(), -1, v});
   };
-  CGAL::box_intersection_d(vertex_boxes.begin(), vertex_boxes.end(), edge_boxes.begin(), edge_boxes.end(), on_edge);
+  CGAL::box_intersection_d(vertex_boxes.begin(), vertex_boxes.end(), edge_boxes.begin(), edge_boxes.end(), on_edge, std::ptrdiff_t(10),
+                           CGAL::Box_intersection_d::CLOSED, CGAL::Box_intersection_d::BIPARTITE);
   return found;
 }
 
