@@ -2,7 +2,9 @@
 // `lepp certify IN.poly MESH_PREFIX`: the exact certificate of any mesher's
 // Triangle-format output (docs/CERTIFIER.md): exit 0 certified, 1 violations, 2 bad input.
 #include <cstdio>
+#include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +12,7 @@
 #include "commands.h"
 #include "lepp/certify.h"
 #include "lepp/certify_json.h"
+#include "lepp/certify_svg.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
@@ -31,8 +34,22 @@ struct CertifyArgs {
   double max_area = 0;
   bool region_areas = false;
   std::size_t max_listed = 50;
+  std::string svg, svg_zoom;
   DomainOptions domain;
 };
+
+// Writes the drawing; a message on stderr either way (the verdict is unchanged).
+void write_svg(const std::string& path, const Mesh& mesh, const certify::Report& report, bool zoom, const std::string& title) {
+  try {
+    const std::string svg = certify::report_svg(mesh, report, zoom, title);
+    std::ofstream out(path, std::ios::binary);
+    out << svg;
+    if (!out) throw std::runtime_error("cannot write " + path);
+    std::fprintf(stderr, "lepp certify: wrote %s\n", path.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lepp certify: no drawing %s: %s\n", path.c_str(), e.what());
+  }
+}
 
 int run_certify(const CertifyArgs& args) {
   Pslg input;
@@ -69,6 +86,10 @@ int run_certify(const CertifyArgs& args) {
   } else {
     std::printf("%s", certify::format_report(report).c_str());
   }
+  std::fflush(stdout);
+  const std::string title = args.mesh + (report.certified() ? ": certified" : ": not certified");
+  if (!args.svg.empty()) write_svg(args.svg, mesh, report, false, title);
+  if (!args.svg_zoom.empty()) write_svg(args.svg_zoom, mesh, report, true, title);
   return report.certified() ? 0 : 1;
 }
 
@@ -111,6 +132,8 @@ void add_certify_command(CLI::App& app, int& status) {
   cmd->add_flag("--split-crossings", args->domain.split_crossings,
                 "Crossing segments are split at their rounded intersection (as refine --split-crossings)");
   cmd->add_flag("--json", args->json, "Print the report as JSON");
+  cmd->add_option("--svg", args->svg, "Also draw the mesh with every listed violation in red to this SVG file");
+  cmd->add_option("--svg-zoom", args->svg_zoom, "Also draw the window around the first listed violation to this SVG file");
   cmd->footer("Exit status: 0 certified; 1 violations found (each listed); 2 unreadable input. docs/CERTIFIER.md says what each check tests.");
   cmd->callback([args, &status] { status = run_certify(*args); });
 }

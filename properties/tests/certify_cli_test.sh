@@ -88,4 +88,20 @@ grep -q '^unimprovable-rule-fails: .*(0, 0) (2e-323, 0) (0, 5e-324)) is listed a
   { cat "$dir/out"; fail "tie-finding-subnormal-midpoint: no rule-fails line for (0,0) (4u,0) (0,u)"; }
 "$lepp" certify "$tie" "$dir/tie2" --min-angle 20 --method midpoint --exempt-precision-limited --precision-ties-by-ids > "$dir/out"; s=$?
 [ $s -eq 0 ] || { cat "$dir/out"; fail "tie-finding-subnormal-midpoint, ties by ids: exit $s"; }
+# The pictures (--svg, --svg-zoom): the notch mesh that overlaps itself (corpus/regressions/precision),
+# its crossing chain edges drawn in red and named in the legend; the zoom is a window (smaller
+# viewBox content: fewer triangles drawn). The verdict and stdout are unchanged by drawing.
+notch=$src/corpus/regressions/precision
+"$lepp" certify "$notch/notch-overlap.poly" "$notch/notch-overlap-fast-25/out" --min-angle 25 --svg "$dir/n.svg" --svg-zoom "$dir/nz.svg" \
+  > "$dir/out" 2> "$dir/err"; s=$?
+[ $s -eq 1 ] || { cat "$dir/out" "$dir/err"; fail "notch overlap with --svg: exit $s"; }
+grep -q '^chain-edges-meet: ' "$dir/out" || { cat "$dir/out"; fail "notch overlap: no chain-edges-meet line"; }
+grep -q "wrote $dir/n.svg" "$dir/err" && grep -q "wrote $dir/nz.svg" "$dir/err" || { cat "$dir/err"; fail "no 'wrote' lines"; }
+for f in n nz; do
+  grep -q '<svg' "$dir/$f.svg" && grep -q 'chain-edges-meet' "$dir/$f.svg" || fail "$f.svg: no drawing or no legend"
+  grep -q 'red' "$dir/$f.svg" || fail "$f.svg: nothing highlighted"
+done
+grep -q '>window \[' "$dir/nz.svg" && ! grep -q '>window \[' "$dir/n.svg" || fail "nz.svg is not a window, or n.svg is"
+"$lepp" certify "$src/corpus/paper/A.poly" "$dir/a" --min-angle 30 --svg "$dir/a.svg" > /dev/null 2>&1; s=$?
+[ $s -eq 0 ] && grep -q '<svg' "$dir/a.svg" || fail "certified mesh with --svg: exit $s"
 echo "OK"

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/diagnosis.h"
+#include "lepp/certify_svg.h"
 #include "lepp/io.h"
 #include "lepp/render.h"
 #include "xml_escape.h"
@@ -120,15 +121,8 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
       ro.highlight_bad = row == Row::MinAngle;
       ro.min_angle_deg = text.theta;
       ro.title = title;
-      render::Highlight h;
+      render::Highlight h = certify::highlight_of(result.violations, *mesh);
       h.label = row_key(row);
-      for (const certify::Violation& v : result.violations) {
-        for (int t : v.triangles)
-          if (t >= 0 && static_cast<std::size_t>(t) < mesh->triangles.size()) h.triangles.push_back(t);
-        for (const auto& e : v.edges)
-          if (e[0] >= 0 && e[1] >= 0 && static_cast<std::size_t>(std::max(e[0], e[1])) < mesh->vertices.size()) h.edges.push_back(e);
-        for (const Point& p : v.points) h.points.push_back(p);
-      }
       ro.highlights.push_back(h);
       write_text(d / "finding.svg", render::render_svg(*mesh, ro));
       drawn = true;
