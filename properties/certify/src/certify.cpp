@@ -32,6 +32,8 @@ std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
+// The ends of edge_key's edge (smaller id first).
+std::array<int, 2> edge_ends(std::uint64_t key) { return {static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)}; }
 
 std::string pt(const Point& p) { return fmt::format("({}, {})", p.x, p.y); }
 
@@ -87,7 +89,9 @@ class Certifier {
   Report& report_;
   ExpectedDomain domain_;
   OutsideInput outside_;               // the input outside the domain (collect_outside_input)
-  OutsideInput chain_segments_;        // the chain edges as segments (find_chains; the sliver clause)
+  std::vector<std::array<int, 2>> chain_edges_;  // chain_edge_'s edges sorted by key (find_chains), and
+  std::vector<int> chain_edge_segment_;          // the segment of each
+  OutsideInput chain_segments_;        // the same edges as segments (the exemption's sliver clause)
 
   std::vector<char> tri_ok_;           // ids valid (orientation may still be wrong)
   std::vector<int> twin_;              // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
@@ -542,11 +546,15 @@ class Certifier {
     for (std::size_t h = 0; h < constrained_half_.size(); ++h)
       if (tri_ok_[h / 3] && chain_edge_.count(edge_key(from(static_cast<int>(h)), to(static_cast<int>(h))))) constrained_half_[h] = 1;
     report_.stats.constrained_edges = chain_edge_.size();
-    // Sorted: the exemption's scans then meet them in an order independent of the hash.
-    std::vector<std::uint64_t> keys;
-    for (const auto& kv : chain_edge_) keys.push_back(kv.first);
-    std::sort(keys.begin(), keys.end());
-    for (std::uint64_t key : keys) chain_segments_.segments.push_back({P(static_cast<int>(key >> 32)), P(static_cast<int>(key & 0xffffffffu))});
+    // Sorted: the checks and reports that scan them do not depend on the hash's order.
+    std::vector<std::pair<std::uint64_t, int>> keyed(chain_edge_.begin(), chain_edge_.end());
+    std::sort(keyed.begin(), keyed.end());
+    for (const auto& [key, seg] : keyed) {
+      const std::array<int, 2> e = edge_ends(key);
+      chain_edges_.push_back(e);
+      chain_edge_segment_.push_back(seg);
+      chain_segments_.segments.push_back({P(e[0]), P(e[1])});
+    }
   }
 
   void check_listed_constrained_edges() {
@@ -568,7 +576,7 @@ class Certifier {
     if (mesh_.constrained_edges.empty()) return;  // the mesh lists none: found by geometry only
     for (const auto& [key, s] : chain_edge_)
       if (!listed_.count(key)) {
-        const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+        const auto [a, b] = edge_ends(key);
         add({Reason::ConstrainedEdgeUnlisted,
              fmt::format("edge {}-{} {} {} lies on segment {} but the mesh does not list it as constrained", a, b, pt(P(a)), pt(P(b)), s),
              {}, {{a, b}}, {a, b}, {}, s});
@@ -627,22 +635,18 @@ class Certifier {
   // (chain_embedding.h). Chains within the tolerance of nearly parallel
   // segments can cross where the segments do not.
   void check_chains_cross_nowhere() {
-    std::vector<std::pair<std::uint64_t, int>> keyed(chain_edge_.begin(), chain_edge_.end());
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<std::array<int, 2>> edges;
-    edges.reserve(keyed.size());
-    for (const auto& [key, s] : keyed) edges.push_back({static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)});
+    const std::vector<std::array<int, 2>>& edges = chain_edges_;
     std::vector<ChainMeet> meets = chain_meetings(mesh_.vertices, edges, used_);
     std::sort(meets.begin(), meets.end(), [](const ChainMeet& x, const ChainMeet& y) {
       return std::tie(x.edge, x.other, x.vertex) < std::tie(y.edge, y.other, y.vertex);
     });
     auto text = [&](int i) {
       const auto& e = edges[static_cast<std::size_t>(i)];
-      return fmt::format("edge {}-{} {} {} of segment {}", e[0], e[1], pt(P(e[0])), pt(P(e[1])), keyed[static_cast<std::size_t>(i)].second);
+      return fmt::format("edge {}-{} {} {} of segment {}", e[0], e[1], pt(P(e[0])), pt(P(e[1])), chain_edge_segment_[static_cast<std::size_t>(i)]);
     };
     for (const ChainMeet& m : meets) {
       const auto& e = edges[static_cast<std::size_t>(m.edge)];
-      const int s = keyed[static_cast<std::size_t>(m.edge)].second;
+      const int s = chain_edge_segment_[static_cast<std::size_t>(m.edge)];
       if (m.other >= 0) {
         const auto& f = edges[static_cast<std::size_t>(m.other)];
         add({Reason::ChainEdgesMeet,
