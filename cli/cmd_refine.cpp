@@ -138,6 +138,7 @@ int run_refine(const RefineArgs& args) {
          {{to_string(LeftReason::SmallInputAngle), result.unimprovable.size() - at_precision},
           {to_string(LeftReason::DoublePrecision), at_precision}}},
         {"precision_stops", result.precision_stops},
+        {"tie_resolutions", result.tie_resolutions},
         {"outcome", to_string(result.outcome)},
         {"stuck", result.stuck},
         {"seconds", result.seconds},

@@ -79,19 +79,6 @@ double default_edge_floor(const Pslg& pslg) {
   return std::ldexp(feature, -20);  // a million times shorter than the input's smallest feature
 }
 
-bool below_precision_floor(const Point& a, const Point& b) {
-  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
-  const double tiny = std::numeric_limits<double>::denorm_min();
-  const double ulp = m > 0 ? std::max(std::ldexp(1.0, std::ilogb(m) - 52), tiny) : tiny;
-  const double dx = std::fabs(a.x - b.x), dy = std::fabs(a.y - b.y);
-  if (!(dx < 4 * ulp && dy < 4 * ulp)) return false;
-  // In doubles, by this one function both engines call, so they stop alike; in
-  // units of ulp (exact: ulp is a power of two and dx, dy are multiples of the
-  // smallest one), so that subnormal differences do not square to zero.
-  const double ux = dx / ulp, uy = dy / ulp;
-  return ux * ux + uy * uy < 16;
-}
-
 const char* to_string(Outcome outcome) {
   switch (outcome) {
     case Outcome::Converged: return "converged";

@@ -27,6 +27,8 @@ class EdgeOrder {
     if (mi != mj) return mi < mj;  // older vertices win ties
     return std::max(f_.v[next3(i)], f_.v[prev3(i)]) < std::max(f_.v[next3(j)], f_.v[prev3(j)]);
   }
+  // True iff edges i and j have exactly the same length (a tie the ids decide).
+  bool same_length(int i, int j) const { return compare_sqlen(a(i), b(i), len_[i], a(j), b(j), len_[j]) == 0; }
   int longest() const {
     int w = longer(0, 1) ? 0 : 1;
     return longer(w, 2) ? w : 2;

@@ -135,12 +135,13 @@ class Refiner {
 
         prefetch_around(lepp);
         Choice choice = select_point(mesh_, lepp, opt_.method);
-        if (!choice_insertable(mesh_, lepp, choice, obstacles_) && !round_otherwise(mesh_, lepp, choice, obstacles_) &&
-            !other_branch(mesh_, lepp, opt_.method, choice, obstacles_) &&
-            !other_constrained_edge(mesh_, lepp, choice, obstacles_)) {  // the precision stop (section 8b)
-          ++result.precision_stops;
-          stopped_.push_back({item, choice.rule, choice.point});
-          break;
+        if (!settle_choice(mesh_, lepp, opt_.method, choice, obstacles_)) {  // at the limit (section 8b)
+          if (!other_tie_resolution(mesh_, item.tri, opt_.method, lepp, choice, obstacles_)) {  // the precision stop
+            ++result.precision_stops;
+            stopped_.push_back({item, choice.rule, choice.point});
+            break;
+          }
+          ++result.tie_resolutions;
         }
         ++result.lepp_searches;
         result.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());

@@ -42,7 +42,7 @@ inline bool strictly_inside(const TriMesh& m, int ti, const Point& p) {
 inline Choice select_point(TriMesh& m, const Lepp& lepp, Method method) {
   if (lepp.t2 < 0) return split_choice(m, lepp.t1, lepp.e1, Rule::TerminalConstrainedMidpoint);
   const FTri &f1 = m.t(lepp.t1), &f2 = m.t(lepp.t2);
-  const int l1 = middle_edge(m, lepp.t1), l2 = middle_edge(m, lepp.t2);
+  const int l1 = second_longest(m, lepp, false), l2 = second_longest(m, lepp, true);
   const bool c1 = f1.seg[l1] >= 0, c2 = f2.seg[l2] >= 0;
   const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
   Choice c;

@@ -88,4 +88,20 @@ bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, Sliver
 // t2's cannot be inserted either (or the rule is another).
 bool other_constrained_edge(TriMesh& m, const Lepp& lepp, Choice& c, SliverObstacles& obstacles);
 
+// Select Point's choice c for this Lepp as the engine inserts it (section 8b, in
+// this order): the formula's double, its other roundings, Remark 10's other branch,
+// the other constrained second-longest edge. True iff one can be inserted (then c
+// holds it; else c is unchanged).
+inline bool settle_choice(TriMesh& m, const Lepp& lepp, Method method, Choice& c, SliverObstacles& obstacles) {
+  return choice_insertable(m, lepp, c, obstacles) || round_otherwise(m, lepp, c, obstacles) ||
+         other_branch(m, lepp, method, c, obstacles) || other_constrained_edge(m, lepp, c, obstacles);
+}
+
+// The other resolutions of exact length ties (section 8b, "Every tie resolution"):
+// when the edge order's Lepp of bad triangle t has no insertable choice, every Lepp
+// of t and every second-longest edge under exact ties, depth first in the edge
+// order, each settled as settle_choice says. True iff one can be inserted: lepp and
+// c then hold it (lepp.m1, lepp.m2 its second-longest edges); else both unchanged.
+bool other_tie_resolution(TriMesh& m, int t, Method method, Lepp& lepp, Choice& c, SliverObstacles& obstacles);
+
 }  // namespace lepp::fast

@@ -334,6 +334,42 @@ TEST(PrecisionStop, SliverClauseSeesTheDomainsOwnBoundary) {
   }
 }
 
+// The chain edges at the ends of the triangle's range (sliver_obstacles.cpp): a chain of
+// the input outside the domain whose one edge passes through the sliver a, p, b below the
+// boundary edge ab, from a vertex inside the sliver's box (but outside the sliver) to one
+// beyond the box's range along the chain: the edge leaving the range last, then the edge
+// entering it first. Its vertices alone do not block; the edge does. A seeded bug that
+// skipped the last edge leaving the range survived the whole ctest (issue 28).
+TEST(PrecisionStop, SliverClauseSeesTheChainEdgesAtTheRangesEnds) {
+  const Point p{6, -1};  // below ab = (0, 0) -> (12, 0): the sliver a, p, b
+  struct Case {
+    Point q, r;
+    bool blocks;
+    const char* what;
+  };
+  const Case cases[] = {
+      {{2, -1}, {14, -0.2}, true, "the edge leaving the range (2, -1) -> (14, -0.2)"},
+      {{-2, -0.2}, {10, -1}, true, "the edge entering the range (-2, -0.2) -> (10, -1)"},
+      {{1, -1}, {14, -1.5}, false, "below p, leaving the range (1, -1) -> (14, -1.5)"},
+      {{-2, -1.5}, {11, -1}, false, "below p, entering the range (-2, -1.5) -> (11, -1)"},
+  };
+  for (const Case& c : cases) {
+    Pslg pslg;
+    pslg.vertices = {{0, 0}, {12, 0}, {12, 10}, {0, 10}, c.q, c.r};
+    pslg.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}, {4, 5, 0}};
+    const fast::SegmentMembership mem = fast::make_membership(pslg);
+    const fast::TriMesh m = fast::build_initial_cdt(pslg, mem, 0, 0);
+    fast::SliverObstacles obstacles(pslg, mem);
+    EXPECT_EQ(obstacles.blocks(m, 0, 1, p), c.blocks) << c.what;
+    // The certifier's geometry says the same of the edge itself.
+    const OutsideInput edge{{}, {{c.q, c.r}}};
+    EXPECT_EQ(sliver_blocked(edge, pslg.vertices[0], pslg.vertices[1], p,
+                             [](const Point& x, const Point& y, const Point& z) { return fast::orient(x, y, z); }),
+              c.blocks)
+        << c.what;
+  }
+}
+
 TEST(PrecisionStop, NearDuplicatesLong) {
   if (!long_tests()) GTEST_SKIP() << "LEPP_LONG_TESTS=1 runs the 30000-point set";
   const Pslg p = load("neardup30k.node");
@@ -394,24 +430,39 @@ TEST(PrecisionStop, OtherRoundingsAtTinySegmentsAgree) {
   }
 }
 
-// The finding the property met (docs/CERTIFIER.md section 5c): a triangle left at double
-// precision that another resolution of an exact length tie could refine. When lepp
-// learns to try the other ties this test fails: then the strict rule certifies.
-TEST(PrecisionStop, TieFindingIsLeftByLeppsTieRuleOnly) {
-  const Pslg p = load("tie-finding.poly");
-  RefineOptions o;
-  o.min_angle_deg = 20;
-  const RefineResult r = fast::refine(p, o);
-  EXPECT_EQ(difference(r, reference::refine(p, o)), "");
-  ASSERT_EQ(r.outcome, Outcome::Unimprovable);
-  certify::Options strict;
-  strict.min_angle_deg = 20;
-  strict.unimprovable = r.unimprovable;
-  const certify::Report rep = certify::certify(p, r.mesh, strict);
-  EXPECT_EQ(rep.count(certify::Reason::UnimprovableRuleFails), 1u) << certify::format_report(rep);
-  certify::Options by_ids = strict;
-  by_ids.precision_ties_by_ids = true;
-  EXPECT_TRUE(certify::certify(p, r.mesh, by_ids).certified());
+// ALGORITHM.md section 8b, "Every tie resolution": on each input a triangle whose
+// Lepp in the edge order (ties by ids) ends at no insertable point, while another
+// resolution of an exact length tie reaches one. Until 2026-12-03 both engines left
+// it and the strict certificate rejected their claim (stored meshes of that version:
+// properties/tests/certify_cli_test.sh). Now both take the other resolution, agree,
+// and the mesh certifies by the strict rule.
+TEST(PrecisionStop, AnotherTieResolutionIsTriedAtTheLimit) {
+  struct Case {
+    const char* file;
+    Method method;
+  };
+  for (const Case& c : {Case{"tie-finding.poly", Method::Centroid}, Case{"tie-finding-subnormal-midpoint.poly", Method::Midpoint}}) {
+    const Pslg p = load(c.file);
+    RefineOptions o;
+    o.min_angle_deg = 20;
+    o.method = c.method;
+    const RefineResult r = fast::refine(p, o);
+    EXPECT_EQ(difference(r, reference::refine(p, o)), "") << c.file;
+    EXPECT_GT(r.tie_resolutions, 0) << c.file << ": no insertion through another tie resolution";
+    const certify::Report rep = certificate(p, r, 20, c.method, true);
+    EXPECT_TRUE(rep.certified()) << c.file << "\n" << certify::format_report(rep);
+  }
+}
+
+// Points a few ulps apart on one line (make_on_edge_ulps.py 7: the unit square, its
+// diagonals, a grid of ulps at (0.5, 0.5)), the kind of input CDT libraries test
+// "points on an edge" with. Before issue 28 both engines left triangles there that
+// another tie resolution refines (centroid at 20, midpoint at 10 to 20 degrees: the
+// strict certificate rejected them); now every run certifies strictly, fast == reference.
+TEST(PrecisionStop, PointsUlpsApartOnAnEdgeCertifyStrictly) {
+  const Pslg p = load("on-edge-ulps.poly");
+  for (int theta : {10, 15, 20, 25, 30}) both_engines(p, theta, Method::Centroid, fmt::format("on-edge-ulps at {}", theta));
+  for (int theta : {10, 15, 20, 22}) both_engines(p, theta, Method::Midpoint, fmt::format("on-edge-ulps midpoint at {}", theta));
 }
 
 // One generated input at the limit of doubles (properties/gen gen_precision.h):
@@ -444,24 +495,12 @@ void generated_case(const Pslg& raw, double theta, Method method) {
     RC_FAIL(fmt::format("{} at theta {}, {}: the engines differ: {}; vertices{}", raw.source, theta, to_string(method), d, vertices()));
   const bool ended = fast_run.outcome == Outcome::Converged || fast_run.outcome == Outcome::Unimprovable;
   const certify::Report rep = certificate(p, fast_run, theta, method, ended);
-  // Finding (docs/CERTIFIER.md section 5c): lepp's Lepp breaks exact length ties by ids,
-  // and a triangle it leaves may be refinable through another tie. The property holds
-  // exactly when ties are read as lepp reads them; each such case is counted.
-  bool tie_only = false;
-  std::size_t violations = 0;
-  for (std::size_t c : rep.count_by_reason) violations += c;
-  if (!rep.certified() && violations == rep.count(certify::Reason::UnimprovableRuleFails)) {
-    certify::Options by_ids;
-    by_ids.min_angle_deg = ended ? theta : 0;
-    by_ids.unimprovable = fast_run.unimprovable;
-    by_ids.precision_method = method;
-    by_ids.precision_ties_by_ids = true;
-    tie_only = certify::certify(p, fast_run.mesh, by_ids).certified();
-  }
-  RC_CLASSIFY(tie_only, "left by lepp's tie rule (finding)");
-  if (!rep.certified() && !tie_only)
+  // Strict (docs/CERTIFIER.md section 5c): every resolution of exact length ties counts,
+  // and the engines try them all before leaving a triangle (ALGORITHM.md section 8b).
+  if (!rep.certified())
     RC_FAIL(fmt::format("{} at theta {}, {}: {} not certified; vertices{}\n{}", raw.source, theta, to_string(method),
                         to_string(fast_run.outcome), vertices(), certify::format_report(rep)));
+  RC_CLASSIFY(fast_run.tie_resolutions > 0, "refined through another tie resolution");
   RC_CLASSIFY(at_precision(fast_run) > 0, "left at double precision");
   RC_CLASSIFY(ended, "converged or unimprovable");
 }

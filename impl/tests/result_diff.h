@@ -50,6 +50,8 @@ inline std::string difference(const RefineResult& a, const RefineResult& b) {
   }
   if (a.precision_stops != b.precision_stops)
     return fmt::format("precision stops {} vs {}", a.precision_stops, b.precision_stops);
+  if (a.tie_resolutions != b.tie_resolutions)
+    return fmt::format("insertions through another tie resolution {} vs {}", a.tie_resolutions, b.tie_resolutions);
   return "";
 }
 

@@ -31,6 +31,11 @@ std::array<int, 3> edges_ascending(FH f) {
   return e;
 }
 
+// Edges i and j of f have exactly the same length.
+bool same_length(FH f, int i, int j) {
+  return squared_length(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i))) == squared_length(f->vertex(Cdt::ccw(j)), f->vertex(Cdt::cw(j)));
+}
+
 }  // namespace
 
 bool edge_greater(FH f, int i, FH g, int j) {
@@ -40,6 +45,21 @@ bool edge_greater(FH f, int i, FH g, int j) {
 int longest_edge(FH f) { return edges_ascending(f)[2]; }
 int second_longest_edge(FH f) { return edges_ascending(f)[1]; }
 int shortest_edge(FH f) { return edges_ascending(f)[0]; }
+
+std::vector<int> tied_longest_edges(FH f) {
+  const std::array<int, 3> e = edges_ascending(f);
+  std::vector<int> out{e[2]};
+  for (int k = 1; k >= 0; --k)
+    if (same_length(f, e[k], e[2])) out.push_back(e[k]);
+  return out;
+}
+
+std::vector<int> tied_second_edges(FH f, int e) {
+  int i = Cdt::ccw(e), j = Cdt::cw(e);
+  if (edge_greater(f, j, f, i)) std::swap(i, j);
+  if (same_length(f, i, j)) return {i, j};
+  return {i};
+}
 
 Tri key(FH f) {
   Tri t{id(f->vertex(0)), id(f->vertex(1)), id(f->vertex(2))};

@@ -83,12 +83,13 @@ class Refiner {
           break;
         }
         Selection s = select_point(lepp, options_.method);
-        if (!insertable(tr_, s, lepp) && !round_otherwise(tr_, lepp, s) &&
-            !other_branch(tr_, lepp, options_.method, s) &&
-            !other_constrained_edge(tr_, lepp, s)) {  // the precision stop (section 8b)
-          ++result_.precision_stops;
-          stopped_.push_back({t, s.rule, s.point});
-          break;
+        if (!settle_selection(tr_, lepp, options_.method, s)) {  // at the limit (section 8b)
+          if (!other_tie_resolution(tr_, f, options_.method, lepp, s)) {  // the precision stop
+            ++result_.precision_stops;
+            stopped_.push_back({t, s.rule, s.point});
+            break;
+          }
+          ++result_.tie_resolutions;
         }
         if (first && too_big(f)) ++result_.area_refined;
         first = false;

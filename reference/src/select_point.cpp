@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Point selection (ALGORITHM.md Section 5: the paper's Select Point and New
 // Select Point with Remark 10) and insertion (Section 6).
-#include <gmpxx.h>
-
 #include <cmath>
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "lepp/rounding.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
@@ -50,7 +49,7 @@ Selection select_point(const Lepp& lepp, Method method) {
   int l = lepp.edge;
   if (t2 == FH()) return edge_midpoint(Rule::TerminalConstrainedMidpoint, t1, l);
 
-  int s1 = second_longest_edge(t1), s2 = second_longest_edge(t2);
+  int s1 = second_longest_of(lepp, false), s2 = second_longest_of(lepp, true);
   bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
 
   if (method == Method::Midpoint) {
@@ -236,23 +235,26 @@ bool insertable(const Triangulation& tr, const Selection& s, const Lepp& lepp) {
 
 namespace {
 
-// The doubles next to the exact value q, ascending (one when q is a double): GMP
-// truncates toward zero, the other neighbour is one step away from zero.
-std::vector<double> doubles_around(const mpq_class& q) {
-  const double d = q.get_d();
-  if (mpq_class(d) == q) return {d};
-  const double e = std::nextafter(d, q > 0 ? HUGE_VAL : -HUGE_VAL);
-  return d < e ? std::vector<double>{d, e} : std::vector<double>{e, d};
-}
-mpq_class q(VH v, bool y) { return mpq_class(CGAL::to_double(y ? v->point().y() : v->point().x())); }
+double x_of(VH v) { return CGAL::to_double(v->point().x()); }
+double y_of(VH v) { return CGAL::to_double(v->point().y()); }
 
-// The exact centroid of the terminal quad (t1's terminal edge, both apexes).
-void exact_centroid(const Lepp& lepp, mpq_class& x, mpq_class& y) {
+// The doubles around the exact midpoint of a, b (lepp/rounding.h), ascending x then y.
+std::vector<Point> midpoint_roundings(VH a, VH b) {
+  std::vector<Point> out;
+  for (double x : doubles_around_midpoint(x_of(a), x_of(b)))
+    for (double y : doubles_around_midpoint(y_of(a), y_of(b))) out.push_back({x, y});
+  return out;
+}
+
+// The doubles around the exact centroid of the terminal quad (t1's terminal edge, both apexes).
+std::vector<Point> centroid_roundings(const Lepp& lepp) {
   FH t1 = lepp.t1;
   int l = lepp.edge;
   VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l)), c = t1->vertex(l), d = lepp.t2->vertex(lepp.t2->index(t1));
-  x = (q(a, false) + q(b, false) + q(c, false) + q(d, false)) / 4;
-  y = (q(a, true) + q(b, true) + q(c, true) + q(d, true)) / 4;
+  std::vector<Point> out;
+  for (double x : doubles_around_centroid(x_of(a), x_of(b), x_of(c), x_of(d)))
+    for (double y : doubles_around_centroid(y_of(a), y_of(b), y_of(c), y_of(d))) out.push_back({x, y});
+  return out;
 }
 
 }  // namespace
@@ -261,26 +263,24 @@ bool round_otherwise(const Triangulation& tr, const Lepp& lepp, Selection& s) {
   FH t1 = lepp.t1;
   int l = lepp.edge;
   VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l));
-  mpq_class x, y;
+  std::vector<Point> points;
   FH other;  // centroid-in-other: the triangle the point must stay strictly inside
   if (s.rule == Rule::QuadCentroid || s.rule == Rule::CentroidInOther) {
-    exact_centroid(lepp, x, y);
+    points = centroid_roundings(lepp);
     if (s.rule == Rule::CentroidInOther) other = strictly_inside(t1, s.point) ? t1 : lepp.t2;
   } else {
     if (s.split_face != FH()) a = s.split_face->vertex(Cdt::ccw(s.split_index)), b = s.split_face->vertex(Cdt::cw(s.split_index));
-    x = (q(a, false) + q(b, false)) / 2;
-    y = (q(a, true) + q(b, true)) / 2;
+    points = midpoint_roundings(a, b);
   }
-  for (double px : doubles_around(x))
-    for (double py : doubles_around(y)) {
-      Selection alt = s;
-      alt.point = {px, py};
-      if (alt.point == s.point || (other != FH() && !strictly_inside(other, alt.point))) continue;
-      if (insertable(tr, alt, lepp)) {
-        s = alt;
-        return true;
-      }
+  for (const Point& p : points) {
+    Selection alt = s;
+    alt.point = p;
+    if (alt.point == s.point || (other != FH() && !strictly_inside(other, alt.point))) continue;
+    if (insertable(tr, alt, lepp)) {
+      s = alt;
+      return true;
     }
+  }
   return false;
 }
 
@@ -288,15 +288,11 @@ bool other_branch(const Triangulation& tr, const Lepp& lepp, Method method, Sele
   if (method != Method::Centroid || lepp.t2 == FH()) return false;
   if (s.rule != Rule::CentroidInOther && s.rule != Rule::SecondLongestMidpoint) return false;
   FH t1 = lepp.t1, t2 = lepp.t2;
-  int s1 = second_longest_edge(t1), s2 = second_longest_edge(t2);
+  int s1 = second_longest_of(lepp, false), s2 = second_longest_of(lepp, true);
   bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
   if (c1 == c2) return false;  // not Remark 10's branch
   FH star = c1 ? t1 : t2, other = c1 ? t2 : t1;
-  mpq_class x, y;
-  exact_centroid(lepp, x, y);
-  std::vector<Point> centroids;
-  for (double px : doubles_around(x))
-    for (double py : doubles_around(y)) centroids.push_back({px, py});
+  const std::vector<Point> centroids = centroid_roundings(lepp);
   if (s.rule == Rule::CentroidInOther) {
     bool turns = false;
     for (const Point& g : centroids) turns = turns || !strictly_inside(other, g);
@@ -322,7 +318,7 @@ bool other_constrained_edge(const Triangulation& tr, const Lepp& lepp, Selection
   if (lepp.t2 == FH() || s.split_face != lepp.t1) return false;
   if (s.rule != Rule::BothSecondLongestMidpoint && s.rule != Rule::SecondLongestMidpoint) return false;
   FH t1 = lepp.t1, t2 = lepp.t2;
-  int s1 = second_longest_edge(t1), s2 = second_longest_edge(t2);
+  int s1 = second_longest_of(lepp, false), s2 = second_longest_of(lepp, true);
   if (s.split_index != s1 || !t1->is_constrained(s1) || !t2->is_constrained(s2)) return false;  // not both constrained
   Selection mid = edge_midpoint(s.rule, t2, s2);
   if (!insertable(tr, mid, lepp) && !round_otherwise(tr, lepp, mid)) return false;

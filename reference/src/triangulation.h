@@ -81,6 +81,12 @@ bool edge_greater(FH f, int i, FH g, int j);
 int longest_edge(FH f);         // index of the vertex opposite the longest edge
 int second_longest_edge(FH f);
 int shortest_edge(FH f);
+// Every resolution of exact length ties (ALGORITHM.md section 8b, "Every tie resolution"):
+// the edges of f of maximal exact length, the edge order's longest first; and the
+// second-longest edges of f with edge e taken as its longest, the longer of the other
+// two in the edge order first, both when their lengths tie.
+std::vector<int> tied_longest_edges(FH f);
+std::vector<int> tied_second_edges(FH f, int e);
 Tri key(FH f);                  // ids sorted ascending
 Tri ccw_ids(FH f);              // ids CCW, rotated to start at the smallest
 bool is_skinny(FH f, const FT& sin2);
@@ -91,8 +97,16 @@ struct Lepp {
   std::vector<FH> path;  // t first, then t1, then t2 if any
   FH t1, t2;             // t2 null for a constrained terminal edge
   int edge = -1;         // terminal edge as index in t1
+  // The second-longest edges of t1 and t2 where another resolution of an exact
+  // length tie fixed them (the precision limit, tie_resolutions.cpp); -1: the edge order's.
+  int s1 = -1, s2 = -1;
 };
 Lepp find_lepp(FH t);
+// The second-longest edge of t1 (t2 when second) of the Lepp's terminal pair.
+inline int second_longest_of(const Lepp& lepp, bool second) {
+  const int fixed = second ? lepp.s2 : lepp.s1;
+  return fixed >= 0 ? fixed : second_longest_edge(second ? lepp.t2 : lepp.t1);
+}
 
 // --- select_point.cpp: ALGORITHM.md Sections 5 and 6 ---
 struct Selection {
@@ -119,6 +133,19 @@ bool other_branch(const Triangulation& tr, const Lepp& lepp, Method method, Sele
 // rounding: t2's, the formula's double then its other roundings (the paper allows either
 // constrained edge). False: t2's cannot either, or the rule is another.
 bool other_constrained_edge(const Triangulation& tr, const Lepp& lepp, Selection& s);
+// The selection s for this Lepp as the engine inserts it (section 8b, in this order):
+// the formula's double, its other roundings, Remark 10's other branch, the other
+// constrained second-longest edge. True iff one can be inserted (s then holds it).
+inline bool settle_selection(const Triangulation& tr, const Lepp& lepp, Method method, Selection& s) {
+  return insertable(tr, s, lepp) || round_otherwise(tr, lepp, s) || other_branch(tr, lepp, method, s) ||
+         other_constrained_edge(tr, lepp, s);
+}
+// --- tie_resolutions.cpp ---
+// When the edge order's Lepp of bad face t has no insertable selection: every Lepp of
+// t and every second-longest edge under exact ties, depth first in the edge order,
+// each settled as settle_selection says. True iff one can be inserted (lepp and s
+// then hold it); else both unchanged.
+bool other_tie_resolution(const Triangulation& tr, FH t, Method method, Lepp& lepp, Selection& s);
 // Inserts the selected point, restores the constrained Delaunay property by
 // flips in the legalization order of ALGORITHM.md section 7 (counting cocircular
 // ties), sets ids, segment membership and domain flags.

@@ -10,6 +10,7 @@
 
 #include "lepp/mesh.h"
 #include "lepp/pslg.h"
+#include "lepp/rounding.h"  // below_precision_floor
 
 namespace lepp {
 
@@ -101,6 +102,7 @@ struct RefineResult {
   std::int64_t lepp_triangles = 0;      // triangles visited by them (average Lepp size = ratio)
   std::int64_t area_refined = 0;        // bad triangles refined that were too big (skinny or not)
   std::int64_t precision_stops = 0;     // times a chosen point could not be inserted (section 8b)
+  std::int64_t tie_resolutions = 0;     // insertions through another resolution of exact length ties (section 8b)
   std::string stuck;                    // for a guard outcome: which triangle, its Lepp
   double seconds = 0;
 };
@@ -108,9 +110,6 @@ struct RefineResult {
 // Defaults of the loop guards, a function of the input (ALGORITHM.md, "Termination").
 std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& options);
 double default_edge_floor(const Pslg& pslg);
-// The precision floor of an edge (ALGORITHM.md section 9): true iff |a - b| is below
-// 4 ulps of the largest magnitude of their coordinates, compared exactly.
-bool below_precision_floor(const Point& a, const Point& b);
 
 const char* to_string(Outcome outcome);
 const char* to_string(Rule rule);

@@ -861,14 +861,22 @@ class Certifier {
         const std::size_t listed_index = it->second;
         found[listed_index] = 1;
         if (opt_.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
-          if (limited || precision_limited(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids)) {
+          const PrecisionVerdict verdict =
+              limited ? PrecisionVerdict::Limited : precision_verdict(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids);
+          if (verdict == PrecisionVerdict::Limited) {
             report_.unimprovable_accepted.push_back(opt_.unimprovable[listed_index]);
             continue;
           }
+          // Undecided: the claim cannot be verified, so it is not accepted; the text says which.
           add({Reason::UnimprovableRuleFails,
-               fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as rounded, "
-                           "can be inserted",
-                           tri_text(t), to_string(opt_.precision_method)),
+               verdict == PrecisionVerdict::Insertable
+                   ? fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as "
+                                 "rounded, can be inserted",
+                                 tri_text(t), to_string(opt_.precision_method))
+                   : fmt::format("{} is listed as limited by double precision but the search of its Lepps under every "
+                                 "resolution of exact length ties stopped undecided (more than {} Lepp states, or a bad "
+                                 "triangle), so the claim is not verified",
+                                 tri_text(t), kPrecisionSearchStates),
                {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
           continue;
         }

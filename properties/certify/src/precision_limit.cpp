@@ -4,8 +4,6 @@
 // every way, and ask whether any of them can be inserted.
 #include "precision_limit.h"
 
-#include <gmpxx.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,29 +11,22 @@
 #include <utility>
 
 #include "exact.h"
+#include "lepp/rounding.h"
 
 namespace lepp::certify {
 namespace {
 
-constexpr std::size_t kMaxStates = 4096;  // Lepp states searched per triangle; beyond: no exemption
-
-// The doubles a mesher may round the exact value q to: truncation and the next
-// double away from zero (GMP's mpq_get_d truncates), one of them when q is a double.
-std::vector<double> roundings(const mpq_class& q) {
-  const double d = q.get_d();
-  if (mpq_class(d) == q) return {d};
-  return {d, std::nextafter(d, q > 0 ? HUGE_VAL : -HUGE_VAL)};
-}
+constexpr std::size_t kMaxStates = kPrecisionSearchStates;  // Lepp states searched per triangle; beyond: no exemption
 
 class Search {
  public:
   Search(const PrecisionView& v, Method method, bool ties_by_ids) : v_(v), method_(method), by_ids_(ties_by_ids) {}
 
-  // True iff every choice for triangle t, at every rounding, is not insertable.
-  bool limited(std::size_t t) {
+  // Whether every choice for triangle t, at every rounding, is not insertable.
+  PrecisionVerdict verdict(std::size_t t) {
     for (int h : longest(static_cast<int>(t)))
-      if (!walk(h)) return false;
-    return !too_big_;
+      if (!walk(h)) return too_big_ || undecided_ ? PrecisionVerdict::Undecided : PrecisionVerdict::Insertable;
+    return too_big_ ? PrecisionVerdict::Undecided : PrecisionVerdict::Limited;
   }
 
  private:
@@ -44,6 +35,7 @@ class Search {
   bool by_ids_;  // equal lengths decided by vertex ids, as lepp's edge order (ALGORITHM.md section 3)
   std::set<int> seen_;  // half-edges taken as a triangle's longest edge
   bool too_big_ = false;
+  bool undecided_ = false;  // a bad triangle or edge met: no choice can be judged there
 
   const Tri& T(int t) const { return v_.mesh.triangles[static_cast<std::size_t>(t)]; }
   const Point& P(int id) const { return v_.mesh.vertices[static_cast<std::size_t>(id)]; }
@@ -90,9 +82,9 @@ class Search {
   bool walk(int h) {
     if (!seen_.insert(h).second) return true;
     if (seen_.size() > kMaxStates) return !(too_big_ = true);
-    if (!v_.tri_ok[static_cast<std::size_t>(h / 3)]) return false;
+    if (!v_.tri_ok[static_cast<std::size_t>(h / 3)]) return !(undecided_ = true);
     const int g = v_.twin[static_cast<std::size_t>(h)];
-    if (g == -2) return false;
+    if (g == -2) return !(undecided_ = true);
     if (constrained(h)) return !split_insertable_any(h, midpoints(h));  // one terminal triangle
     const std::vector<int> next = longest(g / 3);
     for (int e : next) {
@@ -105,22 +97,22 @@ class Search {
     return true;
   }
 
-  std::vector<Point> points(const mpq_class& x, const mpq_class& y, const Point& formula) const {
+  // The formula's double, then the doubles a mesher may round the exact point to
+  // (each coordinate truncated or rounded the other way, lepp/rounding.h).
+  static std::vector<Point> points(const DoublesAround& xs, const DoublesAround& ys, const Point& formula) {
     std::vector<Point> out{formula};
-    for (double px : roundings(x))
-      for (double py : roundings(y)) out.push_back({px, py});
+    for (double px : xs)
+      for (double py : ys) out.push_back({px, py});
     return out;
   }
   std::vector<Point> midpoints(int h) const {
     const Point &a = P(from(h)), &b = P(to(h));
-    const mpq_class x = (mpq_class(a.x) + mpq_class(b.x)) / 2, y = (mpq_class(a.y) + mpq_class(b.y)) / 2;
-    return points(x, y, {(a.x + b.x) * 0.5, (a.y + b.y) * 0.5});
+    return points(doubles_around_midpoint(a.x, b.x), doubles_around_midpoint(a.y, b.y), {(a.x + b.x) * 0.5, (a.y + b.y) * 0.5});
   }
   std::vector<Point> centroids(int h, int g) const {
     const Point &a = P(from(h)), &b = P(to(h)), &c = P(apex(h)), &d = P(apex(g));
-    const mpq_class x = (mpq_class(a.x) + mpq_class(b.x) + mpq_class(c.x) + mpq_class(d.x)) / 4;
-    const mpq_class y = (mpq_class(a.y) + mpq_class(b.y) + mpq_class(c.y) + mpq_class(d.y)) / 4;
-    return points(x, y, {((a.x + b.x) + (c.x + d.x)) * 0.25, ((a.y + b.y) + (c.y + d.y)) * 0.25});
+    return points(doubles_around_centroid(a.x, b.x, c.x, d.x), doubles_around_centroid(a.y, b.y, c.y, d.y),
+                  {((a.x + b.x) + (c.x + d.x)) * 0.25, ((a.y + b.y) + (c.y + d.y)) * 0.25});
   }
 
   // The terminal pair (h, g): every branch of Select Point (method), every second-longest tie.
@@ -225,9 +217,13 @@ class Search {
 
 }  // namespace
 
+PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids) {
+  if (!view.tri_ok[t]) return PrecisionVerdict::Undecided;
+  return Search(view, method, ties_by_ids).verdict(t);
+}
+
 bool precision_limited(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids) {
-  if (!view.tri_ok[t]) return false;
-  return Search(view, method, ties_by_ids).limited(t);
+  return precision_verdict(view, t, method, ties_by_ids) == PrecisionVerdict::Limited;
 }
 
 }  // namespace lepp::certify

@@ -39,4 +39,11 @@ struct PrecisionView {
 // (Options::precision_ties_by_ids, for checking lepp's own meshes), else every tie.
 bool precision_limited(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
 
+// The same search, its three outcomes: every choice fails (limited), one can be
+// inserted, or the search stopped at its bound of kPrecisionSearchStates Lepp states
+// (or met a bad edge) before deciding. Only Limited exempts.
+enum class PrecisionVerdict { Limited, Insertable, Undecided };
+constexpr std::size_t kPrecisionSearchStates = 4096;
+PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
+
 }  // namespace lepp::certify

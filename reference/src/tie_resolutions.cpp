@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every resolution of exact length ties at the precision limit (ALGORITHM.md
+// section 8b, "Every tie resolution"): the reference's own enumeration, in the
+// order the fast engine's follows, so that both insert the same point.
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "triangulation.h"
+
+namespace lepp::reference::detail {
+namespace {
+
+constexpr std::size_t kMaxStates = 4096;  // Lepp states per triangle, as the certifier caps its search
+
+class TieSearch {
+ public:
+  TieSearch(const Triangulation& tr, Method method) : tr_(tr), method_(method) {}
+
+  bool run(FH t, Lepp& lepp, Selection& s) {
+    path_ = {t};
+    for (int e : tied_longest_edges(t))
+      if (walk(t, e, lepp, s)) return true;
+    return false;
+  }
+
+ private:
+  // The Lepp goes on from f (the last face of path_) with edge i taken as its longest.
+  bool walk(FH f, int i, Lepp& lepp, Selection& s) {
+    if (seen_.size() >= kMaxStates || !seen_.insert({ccw_ids(f), i}).second) return false;
+    if (f->is_constrained(i)) return terminal(f, i, FH(), lepp, s);
+    FH n = f->neighbor(i);
+    if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");
+    const int j = n->index(f);
+    path_.push_back(n);
+    for (int e : tied_longest_edges(n))
+      if (e == j ? terminal(f, i, n, lepp, s) : walk(n, e, lepp, s)) return true;
+    path_.pop_back();
+    return false;
+  }
+
+  // A terminal edge reached: every pair of second-longest edges, t1's outer.
+  bool terminal(FH t1, int edge, FH t2, Lepp& lepp, Selection& s) {
+    Lepp alt;
+    alt.t1 = t1, alt.t2 = t2, alt.edge = edge;
+    const std::vector<int> none{-1};
+    const std::vector<int> seconds1 = t2 == FH() ? none : tied_second_edges(t1, edge);
+    const std::vector<int> seconds2 = t2 == FH() ? none : tied_second_edges(t2, t2->index(t1));
+    for (int s1 : seconds1)
+      for (int s2 : seconds2) {
+        alt.s1 = s1, alt.s2 = s2;
+        Selection choice = select_point(alt, method_);
+        if (settle_selection(tr_, alt, method_, choice)) {
+          alt.path = path_;
+          lepp = std::move(alt);
+          s = choice;
+          return true;
+        }
+      }
+    return false;
+  }
+
+  const Triangulation& tr_;
+  Method method_;
+  std::vector<FH> path_;  // t ... the current face
+  std::set<std::pair<Tri, int>> seen_;
+};
+
+}  // namespace
+
+bool other_tie_resolution(const Triangulation& tr, FH t, Method method, Lepp& lepp, Selection& s) {
+  return TieSearch(tr, method).run(t, lepp, s);
+}
+
+}  // namespace lepp::reference::detail
