@@ -106,6 +106,22 @@ class Mesh:
         from ._meshio import to_meshio
         return to_meshio(self, edges=edges)
 
+    # Jupyter draws a mesh by this; above the cap it returns None (the text repr is shown)
+    # rather than an SVG too large for a notebook.
+    svg_max_triangles = 100_000
+
+    def _repr_svg_(self):
+        """The drawing of `lepp render` (coloured by quality, triangles below the target
+        angle marked), for notebooks; None above svg_max_triangles triangles."""
+        if self.triangles.shape[0] == 0 or self.triangles.shape[0] > self.svg_max_triangles:
+            return None
+        return _lepp.render_svg(self._arrays(), "quality", True, float(self._target_angle()), 600.0, "", [], [])
+
+    def _target_angle(self):
+        """The angle the mesh was refined for (30, render's default, when unknown)."""
+        target = self.statistics.get("min_angle_target") if self.statistics else None
+        return 30.0 if target is None else float(target)
+
 
 # The file names Mesh.write knows by their extension.
 _TRIANGLE_EXTENSIONS = (".node", ".ele", ".poly")
