@@ -70,7 +70,11 @@ def _gmsh_labels(mesh, block, prefix, none_name):
     if tags is None or not mesh.field_data:
         return None
     label_of = {}
-    for name, (tag, _dim) in ((k, np.asarray(v).ravel()[:2]) for k, v in mesh.field_data.items()):
+    for name, value in mesh.field_data.items():
+        value = np.asarray(value).ravel()
+        if value.size != 2:  # not a physical name's (tag, dimension)
+            continue
+        tag = value[0]
         if name == none_name:
             label_of[int(tag)] = 0
         elif name.startswith(prefix) and name[len(prefix):].isdigit():

@@ -155,6 +155,14 @@ def test_from_meshio_of_any_triangle_mesh():
     assert lepp.from_meshio(odd).input_vertices == 0
     firsts = meshio.Mesh(points, [("triangle", [[0, 1, 2], [0, 2, 3]])], point_data={"input": [1, 1, 0, 0]})
     assert lepp.from_meshio(firsts).input_vertices == 2
+    # Physical groups that lepp did not name are not read as regions or markers.
+    gmsh = meshio.Mesh(points, [("triangle", [[0, 1, 2], [0, 2, 3]]), ("line", [[0, 1]])],
+                       cell_data={"gmsh:physical": [[7, 7], [3]]}, field_data={"fluid": [7, 2], "inlet": [3, 1]})
+    g = lepp.from_meshio(gmsh)
+    assert g.triangle_regions.size == 0 and g.edge_markers.tolist() == [0] and g.edges.tolist() == [[0, 1]]
+    named = meshio.Mesh(points, gmsh.cells, cell_data=gmsh.cell_data, field_data={"region_2": [7, 2], "marker_5": [3, 1]})
+    n = lepp.from_meshio(named)
+    assert n.triangle_regions.tolist() == [2, 2] and n.edge_markers.tolist() == [5]
 
 
 @pytest.mark.parametrize("bad,match", [
