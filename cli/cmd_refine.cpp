@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
@@ -81,7 +83,9 @@ int run_refine(const RefineArgs& args) {
   options.time_limit_seconds = args.time_limit;
   options.edge_floor = args.edge_floor;
   options.trace = args.trace;
-  if (!args.quiet && !args.json) {
+  // The progress line is rewritten in place (\r, ESC[K): on a terminal only, so that a
+  // log file or a pipe gets no control characters (lepp audit does the same).
+  if (!args.quiet && !args.json && isatty(STDERR_FILENO)) {
     options.on_progress = [](std::int64_t n) { std::fprintf(stderr, "\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
   }
 
@@ -233,7 +237,7 @@ void add_refine_command(CLI::App& app, int& status) {
                 "markers are then the file's segment numbers");
   cmd->add_flag("--json", args->json, "Print the statistics as JSON");
   cmd->add_flag("--trace", args->trace, "Also write PREFIX.trace: the Steiner points in insertion order (docs/FORMATS.md)");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress line on stderr (there is none when stderr is no terminal)");
   cmd->footer(
       "Exit status: 0 converged; 3 stopped by a guard (budget, edge floor, time limit) or triangles left\n"
       "unimprovable by small input angles or at double precision (the mesh is still written, a valid CDT);\n"

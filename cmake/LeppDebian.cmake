@@ -67,14 +67,16 @@ if(LEPP_PYTHON_BUILT)
     "python3 (>= ${LEPP_PYTHON_VERSION}), python3 (<< ${LEPP_PYTHON_VERSION_BELOW}), python3-numpy")
   # lepp.audit's built-in sources (corpus/paper, corpus/hostile) are the lepp package's share/lepp.
   set(CPACK_DEBIAN_PYTHON_PACKAGE_RECOMMENDS "lepp (= ${CPACK_PACKAGE_VERSION})")
-  set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-hypothesis")
+  # lepp.testing needs Hypothesis; Mesh.to_meshio and lepp.from_meshio meshio; lepp.plot matplotlib.
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-hypothesis, python3-meshio, python3-matplotlib")
   set(CPACK_COMPONENT_PYTHON_DESCRIPTION
 "Lepp-centroid quality triangulation and its exact certifier for Python
 The lepp Python package: lepp.refine (Lepp-centroid refinement of a planar
 straight-line graph into a constrained Delaunay mesh with no angle below a
 bound, NumPy arrays in and out), lepp.triangulate (the triangle package's
 dict API), lepp.certify (the exact certifier of any mesher's mesh),
-lepp.render (SVG), lepp.audit (a Python mesher checked against the paper's
+lepp.render (SVG), lepp.plot (matplotlib), Mesh.to_meshio and
+lepp.from_meshio (meshio), lepp.audit (a Python mesher checked against the paper's
 statements) and lepp.testing (Hypothesis strategies of valid PSLGs).")
   install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/python3-lepp RENAME copyright COMPONENT python)
   install(FILES ${PROJECT_SOURCE_DIR}/docs/PYTHON.md DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/python3-lepp COMPONENT python)

@@ -3,6 +3,7 @@
 #include "lepp/mesh_formats.h"
 
 #include "lepp/io.h"
+#include "lepp/stats.h"
 
 namespace lepp {
 
@@ -30,6 +31,15 @@ const char* file_extension(MeshFormat format) {
     case MeshFormat::Msh4: return ".msh";
   }
   return "";
+}
+
+const std::vector<TriangleMeasure>& triangle_measures() {
+  static const std::vector<TriangleMeasure> measures = {{"min_angle", min_angle_deg},
+                                                        {"max_angle", max_angle_deg},
+                                                        {"area_quality", area_quality},
+                                                        {"radius_ratio", radius_ratio},
+                                                        {"edge_ratio", edge_ratio}};
+  return measures;
 }
 
 void write_mesh(const std::string& prefix, const Mesh& mesh, MeshFormat format, const MeshLabels& labels,

@@ -10,7 +10,6 @@
 
 #include "block_file.h"
 #include "lepp/mesh_formats.h"
-#include "lepp/stats.h"
 
 namespace lepp {
 namespace {
@@ -70,9 +69,9 @@ void write_vtu(const std::string& path, const Mesh& mesh, const MeshLabels& labe
   const std::size_t id_bytes = wide ? 8 : 4;
 
   const Array point_data[] = {{"input", "UInt8", 1, n, 1}};
-  const Array cell_data[] = {{"min_angle", "Float64", 1, m, 8},  {"max_angle", "Float64", 1, m, 8},
-                             {"area_quality", "Float64", 1, m, 8}, {"radius_ratio", "Float64", 1, m, 8},
-                             {"edge_ratio", "Float64", 1, m, 8},   {"region", "Int32", 1, m, 4}};
+  std::vector<Array> cell_data;
+  for (const TriangleMeasure& measure : triangle_measures()) cell_data.push_back({measure.name, "Float64", 1, m, 8});
+  cell_data.push_back({"region", "Int32", 1, m, 4});
   const Array points = {"Points", "Float64", 3, 3 * n, 8};
   const Array cells[] = {{"connectivity", id_type, 1, 3 * m, id_bytes},
                          {"offsets", id_type, 1, m, id_bytes},
@@ -104,11 +103,7 @@ void write_vtu(const std::string& path, const Mesh& mesh, const MeshLabels& labe
 
   // The data, in the order declared.
   write_values<std::uint8_t>(out, n, [&](std::size_t v) { return v < mesh.input_vertices ? 1 : 0; });
-  write_measure(out, mesh, min_angle_deg);
-  write_measure(out, mesh, max_angle_deg);
-  write_measure(out, mesh, area_quality);
-  write_measure(out, mesh, radius_ratio);
-  write_measure(out, mesh, edge_ratio);
+  for (const TriangleMeasure& measure : triangle_measures()) write_measure(out, mesh, measure.of);
   write_values<std::int32_t>(out, m, [&](std::size_t t) {
     return labels.triangle_regions.empty() ? 0 : labels.triangle_regions[t];
   });

@@ -6,6 +6,8 @@
     report = lepp.certify((vertices, segments), mesh, min_angle=30)
     assert report.ok, report.text
     lepp.render(mesh, "mesh.svg")
+    mesh.write("mesh.vtu")                                     # .vtu, .msh or Triangle's files, by extension
+    lepp.plot(mesh)                                            # matplotlib; mesh.to_meshio(), lepp.from_meshio
     lepp.audit(my_mesher, theta=(20, 25, 30), cases=60)        # any Python mesher, against the paper
 
 lepp.triangulate(tri, 'pq30a0.1') takes and returns the `triangle` package's dicts.
@@ -20,13 +22,15 @@ from ._certify import Report, certify
 from ._convert import mesh_dict as _mesh_dict
 from ._convert import pslg_dict as _pslg_dict
 from ._mesh import Mesh
+from ._meshio import from_meshio
+from ._plot import plot
 from .triangle_api import triangulate
 
 __version__ = _lepp.__version__
 InputError = _lepp.InputError
 
-__all__ = ["InputError", "Mesh", "Report", "AuditReport", "refine", "certify", "render", "audit", "triangulate",
-           "read_poly", "validate", "__version__"]
+__all__ = ["InputError", "Mesh", "Report", "AuditReport", "refine", "certify", "render", "plot", "audit", "triangulate",
+           "read_poly", "validate", "from_meshio", "__version__"]
 
 
 def read_poly(path):

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading inputs as `lepp refine` does, validating them with the domain
-// options, and writing meshes in every format lepp refine --format writes.
+// options, writing meshes in every format lepp refine --format writes, and the
+// .vtu's per-triangle measures as arrays (Mesh.to_meshio, lepp.plot).
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -12,6 +14,7 @@
 #include "bindings.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "lepp/mesh_formats.h"
 #include "lepp/mesh_output.h"
 #include "lepp/validate.h"
 
@@ -64,6 +67,37 @@ void bind_io(py::module_& m) {
       py::arg("prefix"), py::arg("mesh"), py::arg("formats"), py::arg("binary") = false,
       py::arg("unimprovable") = py::list(),
       "PREFIX.node/.ele/.poly, PREFIX.vtu, PREFIX.msh (and PREFIX.unimprovable) as lepp refine --format writes them.");
+  m.def(
+      "triangle_measures",
+      [](const py::dict& mesh) {
+        const Mesh m = mesh_from_dict(mesh);
+        for (const Tri& tri : m.triangles)
+          for (int v : tri)
+            if (v < 0 || static_cast<std::size_t>(v) >= m.vertices.size())
+              throw std::invalid_argument("triangles: vertex id " + std::to_string(v) + " out of range");
+        const auto& measures = triangle_measures();
+        const auto count = static_cast<py::ssize_t>(m.triangles.size());
+        std::vector<py::array_t<double>> arrays;
+        std::vector<double*> data;
+        for (std::size_t k = 0; k < measures.size(); ++k) {
+          arrays.emplace_back(count);
+          data.push_back(arrays.back().mutable_data());
+        }
+        {
+          py::gil_scoped_release release;
+          for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+            const Tri& tri = m.triangles[t];
+            const Point& a = m.vertices[static_cast<std::size_t>(tri[0])];
+            const Point& b = m.vertices[static_cast<std::size_t>(tri[1])];
+            const Point& c = m.vertices[static_cast<std::size_t>(tri[2])];
+            for (std::size_t k = 0; k < measures.size(); ++k) data[k][t] = measures[k].of(a, b, c);
+          }
+        }
+        py::dict out;  // in the .vtu's order (dicts keep it)
+        for (std::size_t k = 0; k < measures.size(); ++k) out[measures[k].name] = arrays[k];
+        return out;
+      },
+      py::arg("mesh"), "The .vtu's per-triangle measures: {name: (m,) float64}, in the .vtu's order.");
 }
 
 }  // namespace lepp::python

@@ -137,6 +137,28 @@ def test_markers_are_kept():
     assert (t["segment_markers"][bottom_edges, 0] == 5).all() and (t["segment_markers"][~bottom_edges, 0] == 1).all()
 
 
+@pytest.mark.parametrize("interior_marker", [0, 9])
+def test_interior_segment_markers(interior_marker):
+    """Triangle's rule for a segment inside the domain: it keeps its marker, 0 included (only a
+    boundary segment without one gets 1), and so do the vertices added on it."""
+    v = np.array([[0, 0], [4, 0], [4, 4], [0, 4], [1, 2], [3, 2]], dtype=float)
+    s = np.array([[0, 1], [1, 2], [2, 3], [3, 0], [4, 5]])  # a square, and a segment inside it
+    t = lepp.triangulate({"vertices": v, "segments": s, "segment_markers": [0, 0, 0, 0, interior_marker]},
+                         "pq30a0.05")
+    ends = t["vertices"][t["segments"]]
+    inside = np.isclose(ends[:, :, 1], 2).all(axis=1) & (ends[:, :, 0] > 0.5).all(axis=1) & (ends[:, :, 0] < 3.5).all(axis=1)
+    assert inside.sum() > 1 and (~inside).sum() > 4  # both kinds of segment were split
+    np.testing.assert_array_equal(t["segment_markers"][inside, 0], interior_marker)
+    np.testing.assert_array_equal(t["segment_markers"][~inside, 0], 1)
+    x, y = t["vertices"][:, 0], t["vertices"][:, 1]
+    on_boundary = np.isclose(x, 0) | np.isclose(x, 4) | np.isclose(y, 0) | np.isclose(y, 4)
+    on_interior = np.isclose(y, 2) & (x > 1 - 1e-9) & (x < 3 + 1e-9)
+    assert on_interior.sum() > 2
+    np.testing.assert_array_equal(t["vertex_markers"][on_boundary, 0], 1)
+    np.testing.assert_array_equal(t["vertex_markers"][on_interior, 0], interior_marker)
+    np.testing.assert_array_equal(t["vertex_markers"][~on_boundary & ~on_interior, 0], 0)
+
+
 @pytest.mark.parametrize("opts,switch", [("pqD", "D"), ("pr", "r"), ("pA", "A"), ("pq30e", "e"), ("pqV", "V"),
                                          ("pqo2", "o"), ("pqY", "Y"), ("pS10", "S")])
 def test_unsupported_switches_are_named(opts, switch):

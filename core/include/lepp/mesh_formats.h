@@ -40,6 +40,15 @@ const char* file_extension(MeshFormat format);
 void write_mesh(const std::string& prefix, const Mesh& mesh, MeshFormat format, const MeshLabels& labels,
                 const MeshWriteOptions& options = {});
 
+// The per-triangle measures the .vtu writes as cell data, in its order, each a
+// function of the corners (lepp/stats.h). One list, so that other views of a
+// mesh (Python's Mesh.to_meshio and lepp.plot) carry the same names and values.
+struct TriangleMeasure {
+  const char* name;  // the .vtu's array name: "min_angle", "max_angle", "area_quality", ...
+  double (*of)(const Point& a, const Point& b, const Point& c);
+};
+const std::vector<TriangleMeasure>& triangle_measures();
+
 // The writers themselves, to the path given (no extension added).
 void write_vtu(const std::string& path, const Mesh& mesh, const MeshLabels& labels);
 void write_msh2(const std::string& path, const Mesh& mesh, const MeshLabels& labels, bool binary = false);
