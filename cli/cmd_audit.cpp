@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -134,6 +135,10 @@ int run_audit_command(const AuditArgs& args) {
     o.inputs.corpus = has("corpus");
     o.timeout_seconds = a.timeout;
     o.memory_mb = a.memory;
+    // The replay makes exact rationals of both: a NaN or an infinity is bad usage here (in
+    // the library it makes every run's conformance an internal error: the replay refuses it).
+    if (!std::isfinite(a.angle_tolerance) || !std::isfinite(a.point_tolerance))
+      throw audit::UsageError("--angle-tolerance and --point-tolerance must be finite numbers");
     o.checks.angle_tolerance_deg = a.angle_tolerance;
     o.checks.point_tolerance_ulps = a.point_tolerance;
     o.checks.area_centroid = a.centroid == "area";
@@ -228,7 +233,8 @@ void add_audit_command(CLI::App& app, int& status) {
                   "Directory of the comparison points cache (default: $XDG_CACHE_HOME/lepp/audit-points, else "
                   "~/.cache/lepp/audit-points)");
   cmd->add_flag("--no-cache", a->no_cache, "Run every comparison, read and write no cache");
-  cmd->footer("Exit status: 0 every row holds; 1 a row failed (findings saved under --out); 2 bad usage. docs/AUDIT.md.");
+  cmd->footer("Exit status: 0 every row holds; 1 a row failed (findings saved under --out); 2 bad usage; 3 the audit's own "
+              "verdict code failed on some run (internal-error findings saved; the report is written). docs/AUDIT.md.");
   cmd->callback([a, &status] { status = run_audit_command(*a); });
 }
 

@@ -18,6 +18,7 @@
 
 #include "lepp/angle.h"
 #include "cocircular_cells.h"
+#include "exact_constructions.h"
 #include "lepp/reference_replay.h"
 #include "triangulation.h"
 
@@ -139,20 +140,6 @@ double abs_max(const CPoint& p) {
   return std::max(std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())));
 }
 
-// The double nearest to x (ties to even), from the exact value.
-double round_nearest(const FT& x) {
-  std::pair<double, double> iv = CGAL::to_interval(CGAL::exact(x));
-  if (iv.first == iv.second) return iv.first;
-  double lo = iv.first, hi = std::nextafter(lo, std::numeric_limits<double>::infinity());
-  if (hi != iv.second) return CGAL::to_double(x);  // not a tight interval: cannot happen with GMP rationals
-  CGAL::Comparison_result r = CGAL::compare(x, (FT(lo) + FT(hi)) / 2);
-  if (r == CGAL::SMALLER) return lo;
-  if (r == CGAL::LARGER) return hi;
-  std::int64_t bits;
-  std::memcpy(&bits, &lo, sizeof bits);
-  return (bits & 1) ? hi : lo;
-}
-
 // A terminal configuration: terminal edge l of t1, and t2 across it (null if l is constrained).
 struct Terminal {
   FH t1, t2;
@@ -173,16 +160,6 @@ CPoint triangle_centroid(const CPoint& a, const CPoint& b, const CPoint& c) {
   return CPoint((a.x() + b.x() + c.x()) / 3, (a.y() + b.y() + c.y()) / 3);
 }
 
-// The area centroid (centre of mass) of the quad made of triangles abc and abd
-// on both sides of ab: their centroids weighted by their areas, exactly.
-CPoint area_centroid(const CPoint& a, const CPoint& b, const CPoint& c, const CPoint& d) {
-  FT w1 = CGAL::abs((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
-  FT w2 = CGAL::abs((b.x() - a.x()) * (d.y() - a.y()) - (b.y() - a.y()) * (d.x() - a.x()));
-  FT w = 3 * (w1 + w2);
-  return CPoint((w1 * (a.x() + b.x() + c.x()) + w2 * (a.x() + b.x() + d.x())) / w,
-                (w1 * (a.y() + b.y() + c.y()) + w2 * (a.y() + b.y() + d.y())) / w);
-}
-
 }  // namespace
 
 struct Replay::Impl {
@@ -198,6 +175,12 @@ struct Replay::Impl {
   FH hint() const { return last_ != VH() ? last_->face() : FH(); }
 
   Impl(const Pslg& p, const ReplayRules& r) : pslg(p), rules(r) {
+    // Every rule below becomes an exact number: a NaN or an infinity would be
+    // GMP's invalid operation (SIGFPE), so they are refused here.
+    if (!(r.min_angle_deg > 0 && r.min_angle_deg < 60))
+      throw std::invalid_argument("replay: the angle must be between 0 and 60 degrees");
+    if (!std::isfinite(r.angle_tolerance_deg) || !std::isfinite(r.point_tolerance_ulps))
+      throw std::invalid_argument("replay: the angle and point tolerances must be finite");
     double theta = std::min(r.min_angle_deg + std::max(r.angle_tolerance_deg, 0.0), 60.0);
     sin2_ = FT(sin2_bracket(theta).hi);
     build_triangulation(pslg, tr);
@@ -268,7 +251,7 @@ struct Replay::Impl {
   // (its weights are cross products: eps M^2 absolute error on an area of size
   // |ab|^2), so its scale is M * max(1, M / |ab|).
   template <class T>
-  Candidate quad_centroid(Rule rule, const T& t1, const T& t2, int l, CentroidReading reading) const {
+  std::optional<Candidate> quad_centroid(Rule rule, const T& t1, const T& t2, int l, CentroidReading reading) const {
     VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
     VH d = vtx(t2, index_off(t2, a, b));
     double scale = std::max({abs_max(a->point()), abs_max(b->point()), abs_max(c->point()), abs_max(d->point())});
@@ -279,7 +262,9 @@ struct Replay::Impl {
     }
     double ab = std::sqrt(CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
     if (ab > 0 && scale / ab > 1) scale *= scale / ab;
-    return Candidate{rule, area_centroid(a->point(), b->point(), c->point(), d->point()), scale, {}, {}};
+    const std::optional<CPoint> g = guarded_area_centroid(a->point(), b->point(), c->point(), d->point());
+    if (!g) return std::nullopt;  // a flat quad has no area centroid: no such choice
+    return Candidate{rule, *g, scale, {}, {}};
   }
 
   // The catalogue's points at a terminal configuration (docs/CONFORMANCE.md,
@@ -310,28 +295,30 @@ struct Replay::Impl {
     VH d = vtx(t2, l2);
     const CentroidReading reading = rules.centroid;
     const CentroidReading other_reading = reading == CentroidReading::Vertex ? CentroidReading::Area : CentroidReading::Vertex;
-    const Candidate g = quad_centroid(Rule::QuadCentroid, t1, t2, l, reading);
+    // The area reading has no point on a flat quad (none: no such deviation there).
+    const std::optional<Candidate> g = quad_centroid(Rule::QuadCentroid, t1, t2, l, reading);
     // The other reading's centroid, only where it is another point (on a
     // parallelogram both readings are the same point: no deviation of reading).
-    const Candidate g_other = quad_centroid(Rule::QuadCentroid, t1, t2, l, other_reading);
-    if (g_other.point != g.point)
-      add(reading == CentroidReading::Vertex ? Deviation::AreaCentroid : Deviation::VertexCentroid, g_other);
+    const std::optional<Candidate> g_other = quad_centroid(Rule::QuadCentroid, t1, t2, l, other_reading);
+    if (g_other && (!g || g_other->point != g->point))
+      add(reading == CentroidReading::Vertex ? Deviation::AreaCentroid : Deviation::VertexCentroid, *g_other);
     add(Deviation::TriangleCentroid, tri_centroid(a, b, c, Rule::QuadCentroid));
     add(Deviation::TriangleCentroid, tri_centroid(a, b, d, Rule::QuadCentroid));
     // On a parallelogram the terminal midpoint is the quad centroid: then the
     // centroid's rules (below) name it.
     const Candidate m = midpoint(Rule::TerminalMidpoint, t1, l);
-    if (m.point != g.point) add(Deviation::TerminalMidpoint, m);
+    if (!g || m.point != g->point) add(Deviation::TerminalMidpoint, m);
     for (int s1 : second_longest_given(t1, l))
       for (int s2 : second_longest_given(t2, l2)) {
         bool c1 = constrained(t1, s1), c2 = constrained(t2, s2);
+        if (!g) continue;  // the rules below are about the centroid
         if (rules.method == Method::Midpoint || (c1 && c2)) {
-          add(Deviation::CentroidNotMidpoint, g);
+          add(Deviation::CentroidNotMidpoint, *g);
         } else if (c1 != c2) {
           const T& star = c1 ? t1 : t2;
           const T& other = c1 ? t2 : t1;
-          int inside = inside_status(other, g.point, tolerance(g.scale));
-          if (inside < 0) add(Deviation::Remark10Reversed, g);  // the paper: the midpoint only
+          int inside = inside_status(other, g->point, tolerance(g->scale));
+          if (inside < 0) add(Deviation::Remark10Reversed, *g);  // the paper: the midpoint only
           if (inside > 0) add(Deviation::Remark10Reversed, midpoint(Rule::SecondLongestMidpoint, star, c1 ? s1 : s2));
         }
       }
@@ -362,7 +349,7 @@ struct Replay::Impl {
           continue;
         }
         if (!c1 && !c2) {
-          out.push_back(centroid(Rule::QuadCentroid));
+          if (auto g = centroid(Rule::QuadCentroid)) out.push_back(*g);
         } else if (c1 && c2) {
           out.push_back(midpoint(Rule::BothSecondLongestMidpoint, t1, s1));
           out.push_back(midpoint(Rule::BothSecondLongestMidpoint, t2, s2));
@@ -373,9 +360,10 @@ struct Replay::Impl {
           const T& star = c1 ? t1 : t2;
           const T& other = c1 ? t2 : t1;
           int star_edge = c1 ? s1 : s2;
-          Candidate g = centroid(Rule::CentroidInOther);
-          int inside = inside_status(other, g.point, tolerance(g.scale));
-          if (inside >= 0) out.push_back(g);
+          // A flat quad has no area centroid: not inside, so the midpoint.
+          std::optional<Candidate> g = centroid(Rule::CentroidInOther);
+          int inside = g ? inside_status(other, g->point, tolerance(g->scale)) : -1;
+          if (inside >= 0) out.push_back(*g);
           if (inside <= 0) out.push_back(midpoint(Rule::SecondLongestMidpoint, star, star_edge));
         }
       }
@@ -900,7 +888,9 @@ struct Replay::Impl {
   std::vector<Candidate> triangle_points(FH f) const {
     std::vector<Candidate> out;
     const CPoint &a = f->vertex(0)->point(), &b = f->vertex(1)->point(), &c = f->vertex(2)->point();
-    const CPoint cc = CGAL::circumcenter(a, b, c);
+    const std::optional<CPoint> center = guarded_circumcenter(a, b, c);
+    if (!center) return out;  // a flat triangle has neither point
+    const CPoint& cc = *center;
     double scale = std::max({abs_max(a), abs_max(b), abs_max(c), abs_max(cc)});
     out.push_back({Rule::QuadCentroid, cc, scale, {}, {}, Deviation::Circumcenter});
     int e = 0;
@@ -961,6 +951,9 @@ struct Replay::Impl {
     auto consider = [&](const Candidate& c, double tol, const Terminal* t, const std::vector<FH>& lepp) {
       const int rank = static_cast<int>(c.deviation);
       if (rank > best_rank) return;
+      // A point out of the doubles' range (the circumcenter of a nearly flat
+      // triangle) has an infinite scale: it would match every point.
+      if (!std::isfinite(tol)) return;
       const double d = distance(p, c.point);
       if (!(d <= tol) || (rank == best_rank && d >= best_d)) return;
       best_rank = rank, best_d = d;

@@ -139,6 +139,7 @@ struct FindingJob {
   std::size_t case_index = 0, repetition = 0;
   Row row = Row::Certificate;
   std::size_t number = 0;  // OUT/ROW-N
+  bool internal = false;   // an internal error of the audit: OUT/internal-error-N
 };
 
 }  // namespace
@@ -146,10 +147,13 @@ struct FindingJob {
 bool AuditReport::holds() const {
   for (const RowSummary& r : rows)
     if (!r.holds()) return false;
-  return true;
+  return internal_error_runs == 0;
 }
 
-int exit_status(const AuditReport& report) { return report.holds() ? 0 : 1; }
+int exit_status(const AuditReport& report) {
+  if (report.internal_error_runs > 0) return 3;  // the audit itself failed somewhere: some runs are undecided
+  return report.holds() ? 0 : 1;
+}
 
 AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   if (opt.thetas.empty()) throw UsageError("--theta: no angle given");
@@ -290,7 +294,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   std::set<std::pair<int, std::string>> chosen;
   std::vector<FindingJob> finding_jobs;
   std::array<std::size_t, kRows> planned{};
-  std::size_t finding_number = 0;
+  std::size_t finding_number = 0, internal_planned = 0, internal_number = 0;
   double longest_finished = -1;  // the engine's longest finished run: the termination shrink's fallback clock
   std::map<std::size_t, double> finished_on_input;
   for (std::size_t ci = 0; ci < total; ++ci) {
@@ -322,6 +326,17 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     for (std::size_t k = 0; k < out.results.size(); ++k) {
       const CaseResult& result = out.results[k];
       rep.status_counts[static_cast<int>(out.statuses[k])]++;
+      // An internal error of the audit: counted once per run, the first few saved
+      // (the row whose verdict code stopped first), the other rows counted as usual.
+      for (Row row : kAllRows) {
+        if (result[row].verdict != Verdict::InternalError) continue;
+        ++rep.internal_error_runs;
+        if (internal_planned < opt.max_findings_per_row && chosen.insert({-1, input.name}).second) {
+          ++internal_planned;
+          finding_jobs.push_back({ci, k, row, ++internal_number, true});
+        }
+        break;
+      }
       rep.exempt_triangles += result.exempt_triangles;
       rep.runs_with_exempt += result.exempt_triangles > 0;
       rep.precision_exempt_triangles += result.precision_exempt_triangles;
@@ -335,6 +350,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
           case Verdict::Finding: ++s.run, ++s.findings; break;
           case Verdict::NotApplicable: ++s.not_applicable; break;
           case Verdict::NotChecked: ++s.not_checked; break;
+          case Verdict::InternalError: ++s.internal_errors; break;
         }
         if (r.verdict != Verdict::Failed && r.verdict != Verdict::Finding) continue;
         if (s.first_detail.empty()) s.first_detail = fmt::format("{} at theta {}: {}", input.name, c.theta, r.detail);
@@ -368,7 +384,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     cx.row = row;
     cx.input = input.name;
     cx.theta = theta;
-    cx.dir = (fs::path(opt.out_dir) / fmt::format("{}-{}", row_key(row), job.number)).string();
+    cx.dir = (fs::path(opt.out_dir) / fmt::format("{}-{}", job.internal ? "internal-error" : row_key(row), job.number)).string();
     cx.original_vertices = input.pslg.vertices.size();
     cx.original_segments = input.pslg.segments.size();
     cx.original_holes = input.pslg.holes.size();
@@ -409,6 +425,9 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
       sh = shrink_input(
           input,
           [&](const Pslg& candidate) {
+            // check_run turns its own errors into internal-error verdicts, which keep
+            // only an internal-error finding; anything else thrown here is a candidate
+            // not kept (shrink_input's fails_safely): the best input so far stays.
             EngineRequest q = request_for(theta, candidate_timeout);
             EngineRun again = engine(candidate, q);
             const CaseResult cr = check_run(candidate, q, again, opt.checks);
@@ -463,7 +482,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     } catch (const std::exception& e) {
       cx.detail += fmt::format(" (could not save: {})", e.what());
     }
-    rep[row].counterexamples.push_back(cx);
+    (job.internal ? rep.internal_errors : rep[row].counterexamples).push_back(cx);
     rep.shrink_seconds += since(ts);
   }
   for (RowSummary& s : rep.rows)

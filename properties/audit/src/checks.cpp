@@ -26,6 +26,17 @@ std::string first_violation(const certify::Report& report, certify::Check check,
   return first;
 }
 
+// The rows whose verdict code stopped: undecided, an internal error of the audit.
+void internal_error(CaseResult& c, std::initializer_list<Row> rows, const char* stage, const std::string& what) {
+  for (Row r : rows) {
+    RowResult e;
+    e.verdict = Verdict::InternalError;
+    e.detail = fmt::format("internal error of the audit: the {} stopped: {}", stage, what);
+    e.internal_error = stage;
+    c[r] = std::move(e);
+  }
+}
+
 }  // namespace
 
 const char* row_key(Row row) {
@@ -76,6 +87,7 @@ const char* to_string(Verdict v) {
     case Verdict::Finding: return "finding";
     case Verdict::NotApplicable: return "n/a";
     case Verdict::NotChecked: return "not checked";
+    case Verdict::InternalError: return "internal-error";
   }
   return "?";
 }
@@ -136,7 +148,16 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   o.exempt_precision_limited = true;
   o.precision_method = req.method;
   o.max_listed_per_reason = 20;
-  const certify::Report report = certify::certify(pslg, run.mesh, o);
+  certify::Report report;
+  bool certified = false;
+  try {
+    report = certify::certify(pslg, run.mesh, o);
+    certified = true;
+  } catch (const std::exception& e) {
+    internal_error(c, {Row::Certificate, Row::MinAngle, Row::Theorem2}, "certifier", e.what());
+  } catch (...) {
+    internal_error(c, {Row::Certificate, Row::MinAngle, Row::Theorem2}, "certifier", "an unknown exception");
+  }
   c.exempt_triangles = report.exempt_count;
   c.precision_exempt_triangles = report.precision_exempt_count;
 
@@ -151,10 +172,12 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     r.detail = detail;
     c[row] = std::move(r);
   };
-  decide(Row::Certificate, {certify::Check::Topology, certify::Check::InputVertices, certify::Check::Constraints,
-                            certify::Check::Delaunay});
-  decide(Row::MinAngle, {certify::Check::MinAngle});
-  decide(Row::Theorem2, {certify::Check::Theorem2});
+  if (certified) {
+    decide(Row::Certificate, {certify::Check::Topology, certify::Check::InputVertices, certify::Check::Constraints,
+                              certify::Check::Delaunay});
+    decide(Row::MinAngle, {certify::Check::MinAngle});
+    decide(Row::Theorem2, {certify::Check::Theorem2});
+  }
   // A program that exited non-zero but left a mesh: its mesh is judged, its status said.
   if (run.exit_code != 0)
     for (Row r : {Row::Certificate, Row::MinAngle, Row::Theorem2})
@@ -171,7 +194,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   co.angle_tolerance_deg = options.angle_tolerance_deg;
   co.point_tolerance_ulps = options.point_tolerance_ulps;
   co.area_centroid = options.area_centroid;
-  const bool not_delaunay = !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
+  const bool not_delaunay = certified && !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
   try {
     const ConformanceReport conf = check_conformance(pslg, *run.trace, co);
     // Theorem 2 on the terminal pair of every replayed step, reported like a conformance finding.
@@ -218,7 +241,10 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
       c[Row::Conformance] = std::move(r);
     }
   } catch (const std::exception& e) {
-    c[Row::Conformance] = {Verdict::Failed, std::string("the replay stopped: ") + e.what(), {}, "unknown"};
+    // Not the program's failure: the replay (or the step's diagnosis) could not decide.
+    internal_error(c, {Row::Conformance}, "conformance replay", e.what());
+  } catch (...) {
+    internal_error(c, {Row::Conformance}, "conformance replay", "an unknown exception");
   }
   return c;
 }

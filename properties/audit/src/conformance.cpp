@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -67,6 +68,19 @@ bool fits_variant(const Pslg& validated, const std::vector<Point>& trace, refere
 
 std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
 
+// The replay of the first `steps` points of the trace (each a choice, inserted
+// before): the mesh just before step `steps`.
+std::unique_ptr<reference::Replay> replay_up_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
+                                                const reference::ReplayRules& rules) {
+  auto replay = std::make_unique<reference::Replay>(validated, rules);
+  for (std::size_t i = 0; i < steps; ++i) {
+    reference::ReplayChoice choice;
+    if (!replay->match(trace[i], choice)) break;  // cannot happen: the same replay matched it before
+    replay->insert(trace[i], choice);
+  }
+  return replay;
+}
+
 }  // namespace
 
 ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
@@ -78,6 +92,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   ConformanceReport report;
   report.steps = trace.size();
   report.area_centroid = options.area_centroid;
+  std::unique_ptr<reference::Replay> before;  // the mesh before a step whose insertion failed
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const Point& p = trace[i];
     reference::ReplayChoice choice;
@@ -107,13 +122,18 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         continue;
       } catch (const std::runtime_error& e) {
         reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());
+        // The insertion may have stopped half way (the point in, a triangle not
+        // counter-clockwise, even flat: issue 30), so the report's mesh, choices and
+        // deviation come from the trace replayed again up to this step.
+        before = replay_up_to(validated, trace, i, rules);
       }
     }
+    reference::Replay& at = before ? *before : replay;
     ConformanceFailure failure;
     failure.step = i;
     failure.point = p;
-    failure.mesh = replay.mesh();
-    std::vector<reference::ReplayChoice> all = replay.all_choices(p, 20, failure.candidates_total);
+    failure.mesh = at.mesh();
+    std::vector<reference::ReplayChoice> all = at.all_choices(p, 20, failure.candidates_total);
     for (const auto& c : all) failure.candidates.push_back(candidate(c));
     if (!all.empty()) failure.nearest_distance = all.front().distance;
     if (reason.empty()) {
@@ -129,7 +149,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     }
     failure.reason = reason;
     // The catalogue, on the same mesh with the same arithmetic and tolerance.
-    const reference::DeviationMatch dm = replay.diagnose(p);
+    const reference::DeviationMatch dm = at.diagnose(p);
     failure.deviation = reference::to_string(dm.deviation);
     failure.deviation_what = dm.what;
     failure.deviation_definition = reference::definition(dm.deviation);

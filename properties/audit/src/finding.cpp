@@ -147,6 +147,11 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
       "# {}: {}\n\n- engine: {}\n- method: {}, theta: {}\n- statement: {}\n- paper: {}\n- verdict: {}\n- run: {}{}\n",
       row_key(row), to_string(result.verdict), text.engine, to_string(text.method), text.theta, row_statement(row),
       row_passage(row), result.detail, to_string(run.status), run.detail.empty() ? "" : " (" + run.detail + ")");
+  if (result.verdict == Verdict::InternalError)
+    md += fmt::format("- **an internal error of lepp audit, not a failure of the program**: the audit's {} stopped on this run, "
+                      "so the row is undecided. Please report it with this directory (input.poly and the program's output "
+                      "are here; the reproduce line runs the same check again).\n",
+                      result.internal_error);
   const std::string sizes = fmt::format("{} vertices, {} segments, {} holes", input.vertices.size(), input.segments.size(),
                                         input.holes.size());
   if (text.shrink_steps > 0) {

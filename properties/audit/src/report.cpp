@@ -19,6 +19,7 @@ std::string thetas_text(const std::vector<double>& thetas) {
 
 std::string verdict_of(const RowSummary& r) {
   if (r.failed > 0) return "FAILED";
+  if (r.internal_errors > 0) return fmt::format("undecided on {} runs (internal error of the audit)", r.internal_errors);
   if (r.run == 0) return r.not_checked > 0 ? "not checked" : "not applicable";
   if (r.findings > 0) return "holds (findings outside the claim)";
   return "holds";
@@ -89,6 +90,16 @@ std::string markdown_report(const AuditReport& rep) {
                       r.run, r.held, failed, verdict_of(r), smallest_cell(r));
   }
   md += deviations_text(rep);
+  if (rep.internal_error_runs > 0) {
+    md += fmt::format("\n**The audit itself failed on {} run{}**: its own verdict code (the certifier, the conformance replay) "
+                      "stopped, so {} undecided; not a failure of the program. Undecided:",
+                      rep.internal_error_runs, rep.internal_error_runs == 1 ? "" : "s",
+                      rep.internal_error_runs == 1 ? "that run's rows are" : "those runs' rows are");
+    for (const RowSummary& r : rep.rows)
+      if (r.internal_errors) md += fmt::format(" {} {},", row_key(r.row), r.internal_errors);
+    md.pop_back();
+    md += ". Each saved one is under \"Internal errors of the audit\" below; please report it with its directory.\n";
+  }
   md += "\nRuns a row did not apply to: ";
   for (std::size_t i = 0; i < kRows; ++i) {
     const RowSummary& r = rep.rows[i];
@@ -144,42 +155,63 @@ std::string markdown_report(const AuditReport& rep) {
         md += fmt::format("; reproduce{}: `{}`", c.deterministic ? "" : " (may not reproduce: not deterministic)", c.reproduce);
       md += "\n";
     }
+  if (!rep.internal_errors.empty()) {
+    md += "\n## Internal errors of the audit\n\n";
+    for (const Counterexample& c : rep.internal_errors) {
+      md += fmt::format("- **internal-error** ({}) theta {}: {} ({} vertices, {} segments, {} holes, {}; from {})\n", row_key(c.row),
+                        theta_text(c.theta), md_cell(c.detail), c.vertices, c.segments, c.holes,
+                        c.shrink_steps > 0 ? fmt::format("shrunk from {} vertices in {} steps", c.original_vertices, c.shrink_steps)
+                                           : std::string("as found"),
+                        c.input);
+      md += fmt::format("  files: `{}/`", c.dir);
+      if (!c.reproduce.empty()) md += fmt::format("; reproduce: `{}`", c.reproduce);
+      md += "\n";
+    }
+  }
   if (!rep.skipped_inputs.empty()) {
     md += fmt::format("\n{} inputs skipped (missing, unreadable or invalid)", rep.skipped_inputs.size());
     md += rep.skipped_inputs.size() <= 5 ? ":\n" : ", the first 5:\n";
     for (std::size_t i = 0; i < rep.skipped_inputs.size() && i < 5; ++i) md += "- " + md_cell(rep.skipped_inputs[i]) + "\n";
   }
-  md += fmt::format("\nVerdict: {}.\n", rep.holds() ? "every row holds" : "some rows FAILED");
+  bool failed = false;
+  for (const RowSummary& r : rep.rows) failed = failed || !r.holds();
+  std::string verdict = failed ? "some rows FAILED" : "every row holds";
+  if (rep.internal_error_runs > 0)
+    verdict = fmt::format("the audit itself FAILED on {} runs (internal errors, those runs undecided); on the others, {}",
+                          rep.internal_error_runs, failed ? "some rows FAILED" : "every row holds");
+  md += fmt::format("\nVerdict: {}.\n", verdict);
   return md;
 }
 
 nlohmann::json json_report(const AuditReport& rep) {
+  auto counterexample = [](const Counterexample& c) {
+    nlohmann::json j = {{"dir", c.dir},
+                        {"input", c.input},
+                        {"theta", c.theta},
+                        {"vertices", c.vertices},
+                        {"segments", c.segments},
+                        {"holes", c.holes},
+                        {"original_vertices", c.original_vertices},
+                        {"original_segments", c.original_segments},
+                        {"original_holes", c.original_holes},
+                        {"shrink_steps", c.shrink_steps},
+                        {"shrink_runs", c.shrink_runs},
+                        {"shrink_timeout", c.shrink_timeout},
+                        {"signature", c.signature},
+                        {"detail", c.detail},
+                        {"original_detail", c.original_detail},
+                        {"original_input", c.original_input},
+                        {"deterministic", c.deterministic},
+                        {"nondeterminism", c.nondeterminism},
+                        {"stderr_file", c.stderr_file},
+                        {"reproduce", c.reproduce}};
+    if (!c.deviation.empty()) j["deviation"] = c.deviation;
+    return j;
+  };
   nlohmann::json rows = nlohmann::json::array();
   for (const RowSummary& r : rep.rows) {
     nlohmann::json cx = nlohmann::json::array();
-    for (const Counterexample& c : r.counterexamples) {
-      cx.push_back({{"dir", c.dir},
-                    {"input", c.input},
-                    {"theta", c.theta},
-                    {"vertices", c.vertices},
-                    {"segments", c.segments},
-                    {"holes", c.holes},
-                    {"original_vertices", c.original_vertices},
-                    {"original_segments", c.original_segments},
-                    {"original_holes", c.original_holes},
-                    {"shrink_steps", c.shrink_steps},
-                    {"shrink_runs", c.shrink_runs},
-                    {"shrink_timeout", c.shrink_timeout},
-                    {"signature", c.signature},
-                    {"detail", c.detail},
-                    {"original_detail", c.original_detail},
-                    {"original_input", c.original_input},
-                    {"deterministic", c.deterministic},
-                    {"nondeterminism", c.nondeterminism},
-                    {"stderr_file", c.stderr_file},
-                    {"reproduce", c.reproduce}});
-      if (!c.deviation.empty()) cx.back()["deviation"] = c.deviation;
-    }
+    for (const Counterexample& c : r.counterexamples) cx.push_back(counterexample(c));
     rows.push_back({{"check", row_key(r.row)},
                     {"statement", row_statement(r.row)},
                     {"paper", row_passage(r.row)},
@@ -189,11 +221,17 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"findings", r.findings},
                     {"not_applicable", r.not_applicable},
                     {"not_checked", r.not_checked},
+                    {"internal_errors", r.internal_errors},
                     {"holds", r.holds()},
                     {"first", r.first_detail},
                     {"deviations", r.deviations},
                     {"deviations_consistent", r.deviation_consistent},
                     {"counterexamples", cx}});
+  }
+  nlohmann::json internal = nlohmann::json::array();
+  for (const Counterexample& c : rep.internal_errors) {
+    internal.push_back(counterexample(c));
+    internal.back()["check"] = row_key(c.row);
   }
   nlohmann::json ratios = nlohmann::json::array();
   for (const PointsRatio& p : rep.ratios)
@@ -208,6 +246,8 @@ nlohmann::json json_report(const AuditReport& rep) {
           {"runs", rep.cases},
           {"holds", rep.holds()},
           {"rows", rows},
+          {"internal_error_runs", rep.internal_error_runs},
+          {"internal_errors", internal},
           {"centroid", rep.area_centroid ? "area" : "vertex"},
           {"points_ratio", ratios},
           {"order_termination", to_json(rep.order_terminations)},
@@ -233,13 +273,14 @@ nlohmann::json json_report(const AuditReport& rep) {
 }
 
 std::string junit_report(const AuditReport& rep) {
-  std::size_t failures = 0;
-  for (const RowSummary& r : rep.rows) failures += r.failed > 0;
+  std::size_t failures = 0, errors = 0;
+  for (const RowSummary& r : rep.rows) failures += r.failed > 0, errors += r.failed == 0 && r.internal_errors > 0;
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<testsuites name=\"lepp audit\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", kRows, failures, rep.seconds);
-  x += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n",
+  x += fmt::format("<testsuites name=\"lepp audit\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"{:.3f}\">\n", kRows, failures,
+                   errors, rep.seconds);
+  x += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"{}\" time=\"{:.3f}\">\n",
                    xml_escape(fmt::format("lepp audit {} {} theta {}", rep.engine, to_string(rep.method), thetas_text(rep.thetas))),
-                   kRows, failures, rep.seconds);
+                   kRows, failures, errors, rep.seconds);
   for (const RowSummary& r : rep.rows) {
     x += fmt::format("    <testcase classname=\"lepp.audit.{}\" name=\"{}\">\n", xml_escape(rep.engine), row_key(r.row));
     if (r.failed > 0) {
@@ -248,6 +289,12 @@ std::string junit_report(const AuditReport& rep) {
       for (const Counterexample& c : r.counterexamples)
         body += fmt::format("{}: {} ({} vertices): {}\n{}\n", c.shrink_steps > 0 ? "shrunk" : "as found", c.dir, c.vertices, c.detail, c.reproduce);
       x += fmt::format("      <failure message=\"{}\">{}</failure>\n", xml_escape(row_statement(r.row)), xml_escape(body));
+    } else if (r.internal_errors > 0) {
+      // JUnit's <error>: the check itself broke, the runs are undecided.
+      std::string body = fmt::format("the audit's own verdict code stopped on {} runs (internal errors of lepp audit)\n", r.internal_errors);
+      for (const Counterexample& c : rep.internal_errors)
+        if (c.row == r.row) body += fmt::format("{}: {}\n{}\n", c.dir, c.detail, c.reproduce);
+      x += fmt::format("      <error message=\"internal error of lepp audit\">{}</error>\n", xml_escape(body));
     } else if (r.run == 0) {
       x += "      <skipped message=\"no run this check applied to\"/>\n";
     }

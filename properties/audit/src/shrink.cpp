@@ -27,6 +27,18 @@ std::optional<Pslg> validated(const Pslg& p) {
   }
 }
 
+// still_fails on a candidate, where anything it throws counts as "does not
+// fail the same way": the candidate is not kept and the best input so far
+// stays. An exception must not escape: in a worker thread of parallel_for it
+// would end the whole audit (std::terminate), losing every other finding.
+bool fails_safely(const std::function<bool(const Pslg&)>& still_fails, const Pslg& candidate) {
+  try {
+    return still_fails(candidate);
+  } catch (...) {
+    return false;
+  }
+}
+
 // Plain copy without line bookkeeping (shrunk PSLGs come from no file).
 Pslg bare(const Pslg& p) {
   Pslg q;
@@ -105,7 +117,7 @@ class Greedy {
         if (ok[at]) batch.push_back(at);
       if (batch.empty()) continue;
       std::vector<char> fails(batch.size(), 0);
-      parallel_for(batch.size(), jobs, [&](std::size_t i) { fails[i] = still_fails_(*ok[batch[i]]) ? 1 : 0; });
+      parallel_for(batch.size(), jobs, [&](std::size_t i) { fails[i] = fails_safely(still_fails_, *ok[batch[i]]) ? 1 : 0; });
       r_.runs += batch.size();
       for (std::size_t i = 0; i < batch.size(); ++i)
         if (fails[i]) {
@@ -265,7 +277,7 @@ ShrinkResult shrink_input(const AuditInput& input, const std::function<bool(cons
       }
       if (batch.empty()) break;
       std::vector<char> fails(batch.size(), 0);
-      parallel_for(batch.size(), jobs, [&](std::size_t i) { fails[i] = still_fails(values[i]) ? 1 : 0; });
+      parallel_for(batch.size(), jobs, [&](std::size_t i) { fails[i] = fails_safely(still_fails, values[i]) ? 1 : 0; });
       r.runs += batch.size();
       for (std::size_t i = 0; i < batch.size(); ++i)
         if (fails[i]) {

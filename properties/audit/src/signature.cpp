@@ -12,6 +12,11 @@ std::string conformance_deviation(const RowResult& result) { return result.devia
 FailureSignature failure_signature(Row row, const Pslg& input, const EngineRun& run, const RowResult& result) {
   FailureSignature s;
   s.verdict = result.verdict;
+  // An internal error of the audit keeps candidates on which the same stage stops.
+  if (result.verdict == Verdict::InternalError) {
+    s.kind = "internal-error in the " + result.internal_error;
+    return s;
+  }
   auto first_reason = [&] { return result.violations.empty() ? std::string() : certify::to_string(result.violations.front().reason); };
   switch (row) {
     case Row::Certificate:

@@ -80,6 +80,7 @@ struct Counterexample {
 struct RowSummary {
   Row row = Row::Certificate;
   std::size_t run = 0, held = 0, failed = 0, findings = 0, not_applicable = 0, not_checked = 0;
+  std::size_t internal_errors = 0;  // runs this row's verdict code stopped on (undecided; Verdict::InternalError)
   std::vector<Counterexample> counterexamples;  // saved ones, smallest first
   std::string first_detail;                     // the first failure or finding seen, before shrinking
   // Conformance: failed runs by named deviation, and where each was first seen
@@ -121,8 +122,14 @@ struct AuditReport {
   double comparison_seconds = 0, shrink_seconds = 0;
   double overhead_per_case_ms = 0;             // (seconds - engine - comparisons - shrinking) / cases
   std::string out_dir;
+  // Runs on which the audit's own verdict code stopped (Verdict::InternalError on
+  // some row): each such run is undecided, the first few saved as internal-error
+  // findings (OUT/internal-error-N/, `row` the row whose code stopped), shrunk
+  // like the others; the audit goes on with the other cases.
+  std::size_t internal_error_runs = 0;
+  std::vector<Counterexample> internal_errors;
 
-  bool holds() const;                          // no row failed
+  bool holds() const;                          // no row failed and no run hit an internal error
   RowSummary& operator[](Row r) { return rows[static_cast<std::size_t>(r)]; }
   const RowSummary& operator[](Row r) const { return rows[static_cast<std::size_t>(r)]; }
 };
@@ -130,7 +137,8 @@ struct AuditReport {
 // Throws UsageError on bad options (no thetas, a missing input directory).
 AuditReport run_audit(const Engine& engine, const AuditOptions& options);
 
-// 0 every row holds, 1 some row failed.
+// 3 the audit's own verdict code stopped on some run (internal errors; the
+// report is complete otherwise), else 0 every row holds, 1 some row failed.
 int exit_status(const AuditReport& report);
 
 }  // namespace lepp::audit

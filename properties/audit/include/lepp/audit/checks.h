@@ -32,6 +32,11 @@ enum class Verdict {
   Finding,        // outside what the paper claims (a non-ending run above the termination band): reported, not failed
   NotApplicable,  // the statement says nothing here (no mesh to check, an input outside its class)
   NotChecked,     // could be checked but this build cannot (no trace, no conformance checker)
+  // The audit's own verdict code (the certifier, the conformance replay, the
+  // step's diagnosis) stopped with an exception on this run: undecided, and a
+  // failure of the audit, not of the program (issue 30). Saved as an
+  // internal-error finding; the audit's exit status is 3.
+  InternalError,
 };
 const char* to_string(Verdict v);
 
@@ -47,6 +52,8 @@ struct RowResult {
   std::shared_ptr<const StepDiagnosis> diagnosis;
   // Conformance: every traced step fits the deviation's variant (ConformanceFailure::consistent_variant).
   bool consistent_variant = false;
+  // InternalError: where the verdict code stopped ("certifier", "conformance replay"); detail has the message.
+  std::string internal_error;
 };
 
 // Passed to the conformance replay (lepp/audit/conformance.h, ConformanceOptions).
@@ -70,7 +77,8 @@ struct CaseResult {
 // that the input have no angle below 60 degrees (the class those results cover).
 bool termination_claimed(Method method, double theta);
 
-// Decides every row for one run.
+// Decides every row for one run. Never throws: an exception inside the
+// certifier or the replay makes the rows it was deciding InternalError.
 CaseResult check_run(const Pslg& validated, const EngineRequest& request, const EngineRun& run, const CheckOptions& options);
 
 

@@ -13,6 +13,8 @@
 //   termination  the verdict (failed: inside the claimed class; a finding:
 //                outside it) and how the run ended (timed out, stopped);
 //   conformance  the named deviation of the first non-conforming step.
+// An internal error of the audit (Verdict::InternalError, on any row): the
+// stage of the verdict code that stopped ("certifier", "conformance replay").
 #pragma once
 #include <string>
 
