@@ -5,6 +5,9 @@
 //   fuzz_make_seeds OUT_DIR
 //   fuzz_make_seeds --bake IN OUT   re-encodes a finding with the environment's
 //     LEPP_FUZZ_METHOD / LEPP_FUZZ_THETA applied, so it replays without them
+//   fuzz_make_seeds --poly IN OUT.poly   writes the PSLG a structured finding describes
+//     (the environment applied) as a Triangle .poly, and prints method and theta, so
+//     `lepp refine` and `lepp certify` (any version) can run it
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "lepp/io.h"
 #include "support/fuzz_input.h"
 
 using lepp::fuzz::FuzzInput;
@@ -102,8 +106,20 @@ int bake(const char* in_path, const char* out_path) {
   return 0;
 }
 
+int poly(const char* in_path, const char* out_path) {
+  std::ifstream in(in_path, std::ios::binary);
+  const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  FuzzInput input = lepp::fuzz::decode(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  lepp::fuzz::apply_environment(input);
+  lepp::write_poly(out_path, lepp::fuzz::to_pslg(input));
+  const lepp::RefineOptions o = lepp::fuzz::options_of(input);
+  std::printf("--method %s --min-angle %.17g --order %s\n", lepp::to_string(o.method), o.min_angle_deg, lepp::to_string(o.order));
+  return 0;
+}
+
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--bake") return bake(argv[2], argv[3]);
+  if (argc == 4 && std::string(argv[1]) == "--poly") return poly(argv[2], argv[3]);
   if (argc != 2) {
     std::fprintf(stderr, "usage: fuzz_make_seeds OUT_DIR\n");
     return 2;

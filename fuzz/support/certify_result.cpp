@@ -43,7 +43,9 @@ std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_de
   options.precision_ties_by_ids = ties != nullptr && std::string(ties) == "1";
   const certify::Report report = certify::certify(pslg, mesh, options);
   if (!report.certified()) {
-    std::string text;
+    std::size_t violations = 0;
+    for (std::size_t c : report.count_by_reason) violations += c;
+    std::string text = violations == report.precision_undecided ? std::string(kPrecisionUndecided) : std::string();
     for (std::size_t i = 0; i < report.violations.size() && i < 3; ++i)
       text += fmt::format("[{}] {}; ", certify::to_string(report.violations[i].reason), report.violations[i].message);
     return text.empty() ? "not certified" : text;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "known_loops.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,6 +17,15 @@
 namespace lepp::fuzz {
 
 namespace fs = std::filesystem;
+
+std::string below_resolution_reason(const Pslg& pslg) {
+  double extent = 0;
+  for (const Point& v : pslg.vertices) extent = std::max({extent, std::fabs(v.x), std::fabs(v.y)});
+  // The default edge floor is 2^-20 of the smallest feature (exact unless it underflows).
+  const double floor = default_edge_floor(pslg);
+  if (extent == 0) return "";
+  return floor == 0 || floor < std::ldexp(extent, -60) ? "feature-below-resolution" : "";
+}
 
 std::string unclaimed_loop_reason(Method method, double theta_deg, const std::string& loop_class) {
   if (loop_class == "small-angle-cascade") return "small-input-angle";

@@ -22,6 +22,14 @@ namespace lepp::fuzz {
 // "" when it is inside a proven band (a real finding).
 std::string unclaimed_loop_reason(Method method, double theta_deg, const std::string& loop_class);
 
+// An input whose smallest feature (two vertices, or a vertex and a segment it does
+// not end) is below 2^-40 of its largest coordinate magnitude, or underflows: doubles
+// do not resolve it at its place, and refinement there can cascade without end
+// (docs/THEOREMS.md, "Termination in doubles"). "feature-below-resolution" for such
+// an input, else "". Loops on such inputs are kept and gone past; every other
+// finding on them (a crash, a mismatch, a certificate) still stops the run.
+std::string below_resolution_reason(const Pslg& pslg);
+
 // The theta band as it appears in file names: "10-20.7", "20.8-22.2",
 // "22.3-30", "30.1-36" (the bands of theta_band()).
 std::string band_label(double theta_deg);

@@ -179,6 +179,34 @@ TEST(KnownLoops, LoopsOutsideThePapersClaimsAreKnown) {
   EXPECT_EQ(unclaimed_loop_reason(Method::Midpoint, 15.0, "small-angle-cascade"), "small-input-angle");
 }
 
+// Inputs doubles do not resolve (THEOREMS.md, "Termination in doubles"): a feature
+// below 2^-40 of the largest coordinate magnitude. At the boundary: 2^-40 exactly is
+// resolved, one step below is not; a subnormal feature (the floor underflows) is not.
+TEST(KnownLoops, FeaturesBelowResolutionAtTheBoundary) {
+  auto square_with = [](double x, double y) {
+    lepp::Pslg p;
+    p.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {x, y}};
+    p.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+    return p;
+  };
+  EXPECT_EQ(below_resolution_reason(square_with(0.5, 0.5)), "");
+  EXPECT_EQ(below_resolution_reason(square_with(0.5, std::ldexp(1.0, -40))), "");  // 2^-40 from the side y = 0
+  EXPECT_EQ(below_resolution_reason(square_with(0.5, std::ldexp(1.0, -41))), "feature-below-resolution");
+  EXPECT_EQ(below_resolution_reason(square_with(0.5, 5e-324)), "feature-below-resolution");
+  // Scale does not matter: the same square at 2^40.
+  lepp::Pslg big = square_with(0.5, std::ldexp(1.0, -41));
+  for (lepp::Point& v : big.vertices) v = {v.x * 0x1p40, v.y * 0x1p40};
+  EXPECT_EQ(below_resolution_reason(big), "feature-below-resolution");
+}
+
+// The certificate's text for the fuzz targets: the documented undecided class only
+// when every violation is an undecided precision claim.
+TEST(CertifyResultText, PrecisionUndecidedIsRecognisedByItsPrefix) {
+  EXPECT_TRUE(precision_undecided(std::string(kPrecisionUndecided) + "[unimprovable-rule-fails] ..."));
+  EXPECT_FALSE(precision_undecided("[unimprovable-rule-fails] ... can be inserted"));
+  EXPECT_FALSE(precision_undecided(""));
+}
+
 TEST(KnownLoops, BandsAndKeysNameMethodClassAndBand) {
   EXPECT_EQ(band_label(20.7), "10-20.7");
   EXPECT_EQ(band_label(22.2), "20.8-22.2");

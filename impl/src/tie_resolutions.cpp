@@ -8,14 +8,13 @@
 #include <unordered_set>
 #include <vector>
 
+#include "lepp/rounding.h"
 #include "precision_stop.h"
 
 namespace lepp::fast {
 namespace {
 
-// Lepp states (a triangle with one edge taken as its longest) searched per
-// triangle, as the certifier's exemption caps its own search.
-constexpr std::size_t kMaxStates = 4096;
+constexpr std::size_t kMaxStates = kTieSearchStates;  // lepp/rounding.h: the certifier's bound too
 
 // The edges of ti of maximal exact length, the edge order's longest first.
 int tied_longest(const TriMesh& m, int ti, int out[3]) {

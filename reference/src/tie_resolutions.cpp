@@ -6,12 +6,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "lepp/rounding.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
 namespace {
 
-constexpr std::size_t kMaxStates = 4096;  // Lepp states per triangle, as the certifier caps its search
+constexpr std::size_t kMaxStates = kTieSearchStates;  // lepp/rounding.h: the certifier's bound too
 
 class TieSearch {
  public:

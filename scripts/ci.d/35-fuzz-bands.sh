@@ -3,14 +3,14 @@
 # The fuzzers guard the paper's bands (issue 28, docs/FUZZING.md "In CI"): each
 # target in its band, from the committed seeds, for a fixed number of executions
 # with a fixed libFuzzer seed (one process: deterministic for a given commit),
-# built with clang-14, libFuzzer, ASan and UBSan in build-fuzz-ci/. A finding
+# built with clang-14, libFuzzer, ASan and UBSan in build-fuzz/. A finding
 # fails the job with its finding line and the input's path. fuzz_engine audits
 # lepp's own traced runs (build/cli/lepp, which the test job built first).
 #   LEPP_CI_FUZZ_SCALE=N multiplies every count (default 1); LEPP_CI_FUZZ_ONLY=NAME runs one row.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$(pwd)
-build=${LEPP_CI_FUZZ_BUILD:-build-fuzz-ci}
+build=${LEPP_CI_FUZZ_BUILD:-build-fuzz}  # fuzz/run.sh's build too (same configuration)
 scale=${LEPP_CI_FUZZ_SCALE:-1}
 lepp=$root/build/cli/lepp
 [[ -x $lepp ]] || { echo "35-fuzz-bands: $lepp is missing (scripts/build.sh first)" >&2; exit 1; }

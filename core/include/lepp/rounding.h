@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 
 #include "lepp/pslg.h"
 
@@ -31,6 +32,12 @@ inline DoublesAround doubles_around_centroid(double a, double b, double c, doubl
   const double xs[4] = {a, b, c, d};
   return doubles_around_mean(xs, 4);
 }
+
+// The bound of the search of every resolution of exact length ties at the precision
+// limit (ALGORITHM.md section 8b): Lepp states (a triangle with one of its edges taken
+// as its longest) per triangle, the same in both engines and the certifier. Beyond it
+// an engine leaves the triangle and the certifier calls the claim undecided.
+constexpr std::size_t kTieSearchStates = 1024;
 
 namespace detail {
 bool below_precision_floor_exact(const Point& a, const Point& b);

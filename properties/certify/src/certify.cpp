@@ -868,6 +868,7 @@ class Certifier {
             continue;
           }
           // Undecided: the claim cannot be verified, so it is not accepted; the text says which.
+          if (verdict == PrecisionVerdict::Undecided) ++report_.precision_undecided;
           add({Reason::UnimprovableRuleFails,
                verdict == PrecisionVerdict::Insertable
                    ? fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as "

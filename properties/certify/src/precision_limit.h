@@ -43,7 +43,7 @@ bool precision_limited(const PrecisionView& view, std::size_t t, Method method, 
 // inserted, or the search stopped at its bound of kPrecisionSearchStates Lepp states
 // (or met a bad edge) before deciding. Only Limited exempts.
 enum class PrecisionVerdict { Limited, Insertable, Undecided };
-constexpr std::size_t kPrecisionSearchStates = 4096;
+constexpr std::size_t kPrecisionSearchStates = kTieSearchStates;  // lepp/rounding.h, the engines' bound
 PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
 
 }  // namespace lepp::certify

@@ -139,6 +139,10 @@ struct Report {
   // limited by double precision (indices into Mesh::triangles, in order).
   std::vector<int> precision_exempt_triangles;
   std::size_t precision_exempt_count = 0;
+  // Of the unimprovable-rule-fails violations, the claims of double precision whose
+  // search of every tie resolution stopped undecided (CERTIFIER.md section 5c): not
+  // verified, so not accepted, but no insertable point was found either.
+  std::size_t precision_undecided = 0;
   Statistics stats;
   // Not violations: each unused exact duplicate of an input vertex merged into the
   // copy the triangles use (as Triangle's .node keeps an input's repeated vertex).
