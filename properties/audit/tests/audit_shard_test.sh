@@ -50,14 +50,14 @@ single, merged = load("single"), load("merged")
 assert "shard" not in merged, "the merged report still has shard data"
 if single != merged:
     for k in single:
-        if single[k] != merged.get(k): print("JSON differs at", k, ":", single[k], "|", merged.get(k))
+        if single[k] != merged.get(k): print("JSON differs at", k, ":", str(single[k])[:300], "|", str(merged.get(k))[:300])
     sys.exit(1)
 
 def md(which):
     t = paths(open(f"{d}/{name}-{which}.md").read(), which)
     return re.sub(r"[0-9.]+ s with -j (\d+), of which the engine [0-9.]+ s", r"T s with -j \1, of which the engine T s", t)
 if md("single") != md("merged"):
-    print(md("single")); print(md("merged")); sys.exit(1)
+    import difflib; print("".join(difflib.unified_diff(md("single").splitlines(True), md("merged").splitlines(True)))); sys.exit(1)
 
 def junit(which):
     return re.sub(r'time="[0-9.]+"', 'time="T"', paths(open(f"{d}/{name}-{which}.xml").read(), which))
@@ -96,6 +96,15 @@ python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); rows={x["check"]: x
 assert rows["certificate"]["failed"] > 2 and len(rows["certificate"]["counterexamples"]) == 2, rows["certificate"]
 assert rows["conformance"]["failed"] > 2 and len(rows["conformance"]["counterexamples"]) == 2, rows["conformance"]' \
   "$dir/cmd-single.json" || fail "cmd: the program does not fail as this test needs"
+
+# As a CI downloads them: each shard's JSON beside its findings directory, on a
+# machine where the shards' own paths do not exist; merged from there the same.
+for k in 1 2 3; do mkdir -p "ci/shard-$k" && cp "cmd-$k.json" "ci/shard-$k/report.json" && mv "cmd-out-$k" "ci/shard-$k/"; done
+mv cmd-merged cmd-merged-first
+"$lepp" audit merge ci/shard-*/report.json --out cmd-merged --json cmd-merged-ci.json > cmd-merged-ci.md 2> err; s=$?
+[ $s -eq 1 ] && [ ! -s err ] || fail "merge of the downloaded shards: exit $s, $(cat err)"
+diff -r cmd-merged-first cmd-merged > /dev/null || fail "merge of the downloaded shards: other findings"
+diff cmd-merged.md cmd-merged-ci.md > /dev/null || fail "merge of the downloaded shards: another report"
 
 # Refused, exit 2 with a message: shards of another audit (another seed), a shard
 # missing, a shard twice, shards of another split, a report that is no shard's.
