@@ -325,7 +325,8 @@ AuditReport merge_shards(const std::vector<MergeInput>& shards, const std::strin
       auto it = by_dir.find(dir);
       if (it == by_dir.end()) throw UsageError(fmt::format("{}: finding {} is not among its counterexamples", s.path, dir));
       cand.cx = counterexample_of(*it->second.second, it->second.first);
-      // Beside the JSON (a CI's downloaded artifacts), in the directory named like the shard's --out; else where the shard wrote it.
+      // Beside the JSON (a CI's downloaded artifacts), in the directory named like the shard's --out;
+      // else where the shard wrote it (one machine).
       const fs::path rel = fs::path(dir).lexically_normal();
       std::error_code ec;
       for (const fs::path& p : {beside / rel.parent_path().filename() / rel.filename(), fs::path(cand.shard_abs_dir)})

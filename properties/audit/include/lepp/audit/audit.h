@@ -118,7 +118,7 @@ struct ShardData {
   std::array<std::map<std::string, std::size_t>, kRows> deviation_first_run;  // of each deviation_first
   std::vector<std::size_t> nondeterministic_cases;   // case of each nondeterministic_first line
   std::vector<std::size_t> order_termination_cases;  // case of each order_terminations entry
-  // Points added on each case where the run converged: ours, and each comparison's when it finished.
+  // Points added on each case some comparison finished on: ours, and each comparison's (none: it did not finish).
   struct Points {
     std::size_t case_index = 0;
     double ours = 0;

@@ -23,8 +23,8 @@ struct ShardSpec {
 ShardSpec parse_shard(const std::string& text);
 
 // Whether case `case_index` of the whole audit (0-based, in the audit's case
-// order) belongs to shard K of N: dealt in turn, so the shards differ by at
-// most one case and each gets every kind of input.
+// order) belongs to shard K of N: dealt in turn (case i to shard i mod N + 1),
+// so the shards' sizes differ by at most one.
 bool in_shard(std::size_t case_index, std::size_t shard_index, std::size_t shard_count);
 
 // What the shards of one audit must share, as JSON: the program, method,
