@@ -2,6 +2,8 @@
 // `lepp audit (--cmd TEMPLATE | --engine NAME)`: certifies an implementation
 // against the paper's statements on generated and real inputs, shrinks what
 // fails (docs/AUDIT.md). Exit 0 every row holds, 1 findings, 2 bad usage.
+// `lepp audit --shard K/N` runs one slice; `lepp audit merge SHARD.json...`
+// makes the whole report of the slices' JSON reports (lepp/audit/shard.h).
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include "lepp/audit/peer_engines.h"
 #include "lepp/audit/points_cache.h"
 #include "lepp/audit/report.h"
+#include "lepp/audit/shard.h"
 #include "lepp/audit/subprocess.h"
 #include "lepp/fast.h"
 #include "lepp/version.h"
@@ -56,6 +59,13 @@ struct AuditArgs {
   std::size_t repeat = 1;
   std::string cache;     // empty: the default cache directory
   bool no_cache = false;
+  std::string shard;     // K/N; empty: the whole audit
+};
+
+struct MergeArgs {
+  std::vector<std::string> shards;
+  std::string out = "audit-out";
+  std::string junit, json;  // json: the JSON report to this file ("-": on stdout instead of the markdown)
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -71,6 +81,33 @@ void print_progress(const audit::Progress& p) {
   std::fprintf(stderr, "\r\033[K%zu/%zu runs, %zu failing  %.60s", p.done, p.total, p.failed, p.current.c_str());
   if (p.done == p.total && p.current.empty()) std::fprintf(stderr, "\r\033[K");
   std::fflush(stderr);
+}
+
+// The report on stdout (markdown, or JSON), and to the files asked for; the audit's exit status.
+int print_report(const audit::AuditReport& report, bool json, const std::string& json_file, const std::string& junit) {
+  nlohmann::json j = audit::json_report(report);
+  add_version(j);
+  if (json)
+    std::printf("%s\n", j.dump(2).c_str());
+  else
+    std::printf("%s", audit::markdown_report(report).c_str());
+  if (!json_file.empty()) {
+    std::ofstream out(json_file);
+    out << j.dump(2) << "\n";
+    if (!out) {
+      std::fprintf(stderr, "lepp audit: cannot write %s\n", json_file.c_str());
+      return 2;
+    }
+  }
+  if (!junit.empty()) {
+    std::ofstream out(junit);
+    out << audit::junit_report(report);
+    if (!out) {
+      std::fprintf(stderr, "lepp audit: cannot write %s\n", junit.c_str());
+      return 2;
+    }
+  }
+  return audit::exit_status(report);
 }
 
 int run_audit_command(const AuditArgs& args) {
@@ -151,34 +188,45 @@ int run_audit_command(const AuditArgs& args) {
     o.repeat = a.repeat;
     if (a.repeat < 1) throw audit::UsageError("--repeat: at least 1");
     o.points_cache_dir = a.no_cache ? std::string() : !a.cache.empty() ? a.cache : audit::default_points_cache_dir();
+    if (!a.shard.empty()) {
+      const audit::ShardSpec spec = audit::parse_shard(a.shard);
+      o.shard_index = spec.index;
+      o.shard_count = spec.count;
+    }
     if (isatty(STDERR_FILENO)) o.on_progress = print_progress;
 
     audit::AuditReport report = audit::run_audit(engine, o);
-    nlohmann::json j = audit::json_report(report);
-    add_version(j);
-    if (a.json)
-      std::printf("%s\n", j.dump(2).c_str());
-    else
-      std::printf("%s", audit::markdown_report(report).c_str());
-    if (!a.json_file.empty()) {
-      std::ofstream out(a.json_file);
-      out << j.dump(2) << "\n";
-      if (!out) {
-        std::fprintf(stderr, "lepp audit: cannot write %s\n", a.json_file.c_str());
-        return 2;
-      }
-    }
-    if (!a.junit.empty()) {
-      std::ofstream out(a.junit);
-      out << audit::junit_report(report);
-      if (!out) {
-        std::fprintf(stderr, "lepp audit: cannot write %s\n", a.junit.c_str());
-        return 2;
-      }
-    }
-    return audit::exit_status(report);
+    return print_report(report, a.json, a.json_file, a.junit);
   } catch (const audit::UsageError& e) {
     std::fprintf(stderr, "lepp audit: %s\n", e.what());
+    return 2;
+  }
+}
+
+int run_merge_command(const MergeArgs& a) {
+  try {
+    std::vector<audit::MergeInput> shards;
+    for (const std::string& path : a.shards) {
+      if (!a.json.empty() && a.json != "-" && std::filesystem::exists(a.json) && std::filesystem::exists(path) &&
+          std::filesystem::equivalent(a.json, path))
+        throw audit::UsageError("--json " + a.json + " is one of the shard reports: give another file");
+      std::ifstream in(path);
+      if (!in) throw audit::UsageError("cannot read " + path);
+      nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+      if (j.is_discarded()) throw audit::UsageError(path + " is not JSON (a shard's report is lepp audit --shard K/N --json)");
+      shards.push_back({std::move(j), path});
+    }
+    std::vector<std::string> warnings;
+    audit::AuditReport report;
+    try {
+      report = audit::merge_shards(shards, a.out, warnings);
+    } catch (const nlohmann::json::exception& e) {
+      throw audit::UsageError(std::string("a shard report lacks a field or has a wrong one: ") + e.what());
+    }
+    for (const std::string& w : warnings) std::fprintf(stderr, "lepp audit merge: %s\n", w.c_str());
+    return print_report(report, a.json == "-", a.json == "-" ? "" : a.json, a.junit);
+  } catch (const audit::UsageError& e) {
+    std::fprintf(stderr, "lepp audit merge: %s\n", e.what());
     return 2;
   }
 }
@@ -233,9 +281,28 @@ void add_audit_command(CLI::App& app, int& status) {
                   "Directory of the comparison points cache (default: $XDG_CACHE_HOME/lepp/audit-points, else "
                   "~/.cache/lepp/audit-points)");
   cmd->add_flag("--no-cache", a->no_cache, "Run every comparison, read and write no cache");
+  cmd->add_option("--shard", a->shard,
+                  "K/N: run only the K-th of N disjoint slices of the cases (the same on every machine); "
+                  "`lepp audit merge` combines the shards' --json reports");
+
+  auto m = std::make_shared<MergeArgs>();
+  auto* merge = cmd->add_subcommand("merge", "Combine the --json reports of all shards of one audit (--shard K/N) into its report");
+  merge->add_option("shards", m->shards, "The shards' JSON reports (each shard once)")->required();
+  merge->add_option("--out", m->out,
+                    "Directory of the findings: each the whole audit keeps is copied here from its shard's --out (looked for "
+                    "beside the shard's JSON, then where the shard wrote it)")
+      ->default_val("audit-out");
+  merge->add_option("--junit", m->junit, "Also write the rows as JUnit XML to this file");
+  merge->add_option("--json", m->json, "Also write the JSON report to this file (-: on stdout instead of the markdown)");
+  merge->footer("Exit status: the audit's (0, 1, 3) as the whole audit run at once; 2 bad usage, or shards of different "
+                "audits, a shard missing or given twice.");
+  merge->callback([m, &status] { status = run_merge_command(*m); });
   cmd->footer("Exit status: 0 every row holds; 1 a row failed (findings saved under --out); 2 bad usage; 3 the audit's own "
               "verdict code failed on some run (internal-error findings saved; the report is written). docs/AUDIT.md.");
-  cmd->callback([a, &status] { status = run_audit_command(*a); });
+  cmd->callback([a, merge, &status] {
+    if (merge->parsed()) return;  // `lepp audit merge`: its own callback ran
+    status = run_audit_command(*a);
+  });
 }
 
 }  // namespace lepp::cli

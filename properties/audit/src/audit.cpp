@@ -21,6 +21,7 @@
 #include "lepp/audit/finding.h"
 #include "lepp/audit/parallel.h"
 #include "lepp/audit/points_cache.h"
+#include "lepp/audit/shard.h"
 #include "lepp/audit/shrink.h"
 #include "lepp/audit/signature.h"
 #include "lepp/audit/subprocess.h"
@@ -150,6 +151,26 @@ bool AuditReport::holds() const {
   return internal_error_runs == 0;
 }
 
+PointsRatio points_ratio(const std::string& against, const std::vector<std::pair<double, double>>& ours_theirs) {
+  PointsRatio pr;
+  pr.against = against;
+  std::vector<double> v;
+  double ours = 0, theirs = 0;
+  for (const auto& [o, t] : ours_theirs) {
+    ours += o;
+    theirs += t;
+    if (t > 0) v.push_back(o / t);
+  }
+  pr.cases = v.size();
+  if (!v.empty()) {
+    pr.median = median(v);
+    pr.max = *std::max_element(v.begin(), v.end());
+    pr.min = *std::min_element(v.begin(), v.end());
+  }
+  pr.total = theirs > 0 ? ours / theirs : 0;
+  return pr;
+}
+
 int exit_status(const AuditReport& report) {
   if (report.internal_error_runs > 0) return 3;  // the audit itself failed somewhere: some runs are undecided
   return report.holds() ? 0 : 1;
@@ -160,6 +181,9 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   for (double t : opt.thetas)
     if (!(t > 0 && t < 60)) throw UsageError(fmt::format("--theta {}: must be between 0 and 60 degrees", t));
   if (opt.repeat < 1) throw UsageError("--repeat: at least 1");
+  const bool sharded = opt.shard_count > 0;
+  if (sharded && !(opt.shard_index >= 1 && opt.shard_index <= opt.shard_count))
+    throw UsageError(fmt::format("--shard {}/{}: K must be between 1 and N", opt.shard_index, opt.shard_count));
   const auto t_start = Clock::now();
   AuditReport rep;
   rep.engine = opt.engine_name;
@@ -195,15 +219,31 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   };
 
   // The cases, input by input, each at every theta, up to --cases.
+  // With --shard, every shard lists the same cases and keeps its own slice;
+  // `index` is the case's place in the whole audit.
   struct Case {
     std::size_t input;
     double theta;
+    std::size_t index;
   };
   std::vector<Case> cases;
-  for (std::size_t ii = 0; ii < inputs.size() && cases.size() < opt.cases; ++ii)
+  std::size_t all_cases = 0;
+  for (std::size_t ii = 0; ii < inputs.size() && all_cases < opt.cases; ++ii)
     for (double theta : opt.thetas)
-      if (cases.size() < opt.cases) cases.push_back({ii, theta});
+      if (all_cases < opt.cases) {
+        if (!sharded || in_shard(all_cases, opt.shard_index, opt.shard_count)) cases.push_back({ii, theta, all_cases});
+        ++all_cases;
+      }
   const std::size_t total = cases.size();
+  if (sharded) {
+    rep.shard.emplace();
+    rep.shard->index = opt.shard_index;
+    rep.shard->count = opt.shard_count;
+    rep.shard->total_cases = all_cases;
+    rep.shard->config = shard_config(opt, inputs, all_cases);
+    for (const Case& c : cases) rep.shard->cases.push_back(c.index);
+  }
+  auto run_ordinal = [&](const Case& c, std::size_t k) { return c.index * opt.repeat + k; };
 
   std::mutex progress_mutex;
   std::atomic<std::size_t> done{0}, failing{0};
@@ -289,8 +329,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   });
 
   // 2. The counts, in case order (the same report for any -j), and the failures to shrink.
-  std::map<std::string, std::vector<double>> ratios;
-  std::map<std::string, std::pair<double, double>> sums;
+  std::vector<std::vector<std::pair<double, double>>> points(opt.comparisons.size());  // (ours, theirs) per comparison
   std::set<std::pair<int, std::string>> chosen;
   std::vector<FindingJob> finding_jobs;
   std::array<std::size_t, kRows> planned{};
@@ -305,24 +344,29 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     rep.comparison_seconds += out.comparison_seconds;
     rep.comparison_runs += out.comparison_runs;
     rep.comparison_cache_hits += out.cache_hits;
-    if (out.order_termination) rep.order_terminations.push_back(*out.order_termination);
+    if (out.order_termination) {
+      rep.order_terminations.push_back(*out.order_termination);
+      if (sharded) rep.shard->order_termination_cases.push_back(c.index);
+    }
     longest_finished = std::max(longest_finished, out.finished_seconds);
     if (out.finished_seconds >= 0)
       finished_on_input[c.input] = std::max(finished_on_input.count(c.input) ? finished_on_input[c.input] : -1.0, out.finished_seconds);
     if (!out.nondeterminism.empty()) {
       ++rep.nondeterministic_cases;
-      if (rep.nondeterministic_first.size() < 5)
+      if (rep.nondeterministic_first.size() < 5) {
         rep.nondeterministic_first.push_back(fmt::format("{} at theta {}: {}", input.name, theta_text(c.theta), out.nondeterminism));
+        if (sharded) rep.shard->nondeterministic_cases.push_back(c.index);
+      }
     }
     ++rep.cases;
+    const double ours = static_cast<double>(out.results.front().steiner_points);
+    bool compared = false;
     for (std::size_t e = 0; e < opt.comparisons.size(); ++e) {
       if (!out.theirs[e]) continue;
-      const std::string& name = opt.comparisons[e].name;
-      const double ours = static_cast<double>(out.results.front().steiner_points), them = *out.theirs[e];
-      sums[name].first += ours;
-      sums[name].second += them;
-      if (them > 0) ratios[name].push_back(ours / them);
+      points[e].push_back({ours, *out.theirs[e]});
+      compared = true;
     }
+    if (sharded && compared) rep.shard->points.push_back({c.index, ours, out.theirs});
     for (std::size_t k = 0; k < out.results.size(); ++k) {
       const CaseResult& result = out.results[k];
       rep.status_counts[static_cast<int>(out.statuses[k])]++;
@@ -353,9 +397,14 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
           case Verdict::InternalError: ++s.internal_errors; break;
         }
         if (r.verdict != Verdict::Failed && r.verdict != Verdict::Finding) continue;
-        if (s.first_detail.empty()) s.first_detail = fmt::format("{} at theta {}: {}", input.name, c.theta, r.detail);
-        if (r.verdict == Verdict::Failed && !r.deviation.empty() && s.deviations[r.deviation]++ == 0)
+        if (s.first_detail.empty()) {
+          s.first_detail = fmt::format("{} at theta {}: {}", input.name, c.theta, r.detail);
+          if (sharded) rep.shard->first_run[static_cast<std::size_t>(row)] = run_ordinal(c, k);
+        }
+        if (r.verdict == Verdict::Failed && !r.deviation.empty() && s.deviations[r.deviation]++ == 0) {
           s.deviation_first[r.deviation] = fmt::format("step {} of {} at {} degrees", r.step, input.name, theta_text(c.theta));
+          if (sharded) rep.shard->deviation_first_run[static_cast<std::size_t>(row)][r.deviation] = run_ordinal(c, k);
+        }
         if (r.verdict == Verdict::Failed && !r.deviation.empty() && r.consistent_variant) ++s.deviation_consistent[r.deviation];
         const std::size_t ri = static_cast<std::size_t>(row);
         if (planned[ri] >= opt.max_findings_per_row) continue;
@@ -482,6 +531,8 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     } catch (const std::exception& e) {
       cx.detail += fmt::format(" (could not save: {})", e.what());
     }
+    if (sharded)
+      rep.shard->findings.push_back({cx.dir, abs_dir.string(), run_ordinal(c, job.repetition), row, job.internal, input.name});
     (job.internal ? rep.internal_errors : rep[row].counterexamples).push_back(cx);
     rep.shrink_seconds += since(ts);
   }
@@ -490,20 +541,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
                      [](const Counterexample& a, const Counterexample& b) { return a.vertices < b.vertices; });
   if (opt.on_progress) opt.on_progress({total, total, failing.load(), ""});
 
-  for (const NamedEngine& other : opt.comparisons) {
-    PointsRatio pr;
-    pr.against = other.name;
-    const auto& v = ratios[other.name];
-    pr.cases = v.size();
-    if (!v.empty()) {
-      pr.median = median(v);
-      pr.max = *std::max_element(v.begin(), v.end());
-      pr.min = *std::min_element(v.begin(), v.end());
-    }
-    const auto& s = sums[other.name];
-    pr.total = s.second > 0 ? s.first / s.second : 0;
-    rep.ratios.push_back(pr);
-  }
+  for (std::size_t e = 0; e < opt.comparisons.size(); ++e) rep.ratios.push_back(points_ratio(opt.comparisons[e].name, points[e]));
   if (own_work_root) {
     std::error_code ec;
     fs::remove_all(work_root, ec);

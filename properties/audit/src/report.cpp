@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/command_engine.h"
+#include "lepp/audit/shard.h"
 #include "xml_escape.h"
 
 namespace lepp::audit {
@@ -80,6 +81,10 @@ std::string markdown_report(const AuditReport& rep) {
                     to_string(rep.method), thetas_text(rep.thetas), rep.cases, rep.inputs, rep.seed,
                     rep.repeat > 1 ? fmt::format(", each case run {} times", rep.repeat) : "", rep.seconds, rep.jobs,
                     rep.engine_seconds);
+  if (rep.shard)
+    md += fmt::format("Shard {} of {}: {} of the audit's {} cases; `lepp audit merge` makes the whole report of the shards' "
+                      "`--json` reports.\n\n",
+                      rep.shard->index, rep.shard->count, rep.shard->cases.size(), rep.shard->total_cases);
   md += "| # | check | paper | runs | held | failed | verdict | smallest counterexample |\n";
   md += "|---|---|---|---:|---:|---:|---|---|\n";
   for (std::size_t i = 0; i < kRows; ++i) {
@@ -238,38 +243,40 @@ nlohmann::json json_report(const AuditReport& rep) {
     ratios.push_back({{"against", p.against}, {"runs", p.cases}, {"median", p.median}, {"min", p.min}, {"max", p.max}, {"total", p.total}});
   nlohmann::json statuses = nlohmann::json::object();
   for (int s = 0; s < 6; ++s) statuses[to_string(static_cast<RunStatus>(s))] = rep.status_counts[s];
-  return {{"engine", rep.engine},
-          {"method", to_string(rep.method)},
-          {"thetas", rep.thetas},
-          {"seed", rep.seed},
-          {"inputs", rep.inputs},
-          {"runs", rep.cases},
-          {"holds", rep.holds()},
-          {"rows", rows},
-          {"internal_error_runs", rep.internal_error_runs},
-          {"internal_errors", internal},
-          {"centroid", rep.area_centroid ? "area" : "vertex"},
-          {"points_ratio", ratios},
-          {"order_termination", to_json(rep.order_terminations)},
-          {"run_status", statuses},
-          {"exempt_triangles", rep.exempt_triangles},
-          {"runs_with_exempt_triangles", rep.runs_with_exempt},
-          {"precision_exempt_triangles", rep.precision_exempt_triangles},
-          {"runs_with_precision_exempt_triangles", rep.runs_with_precision_exempt},
-          {"skipped_inputs", rep.skipped_inputs},
-          {"jobs", rep.jobs},
-          {"repeat", rep.repeat},
-          {"nondeterministic_cases", rep.nondeterministic_cases},
-          {"nondeterministic_first", rep.nondeterministic_first},
-          {"comparison_runs", rep.comparison_runs},
-          {"comparison_cache_hits", rep.comparison_cache_hits},
-          {"points_cache_dir", rep.points_cache_dir},
-          {"seconds", rep.seconds},
-          {"engine_seconds", rep.engine_seconds},
-          {"comparison_seconds", rep.comparison_seconds},
-          {"shrink_seconds", rep.shrink_seconds},
-          {"overhead_per_run_ms", rep.overhead_per_case_ms},
-          {"out_dir", rep.out_dir}};
+  nlohmann::json j = {{"engine", rep.engine},
+                      {"method", to_string(rep.method)},
+                      {"thetas", rep.thetas},
+                      {"seed", rep.seed},
+                      {"inputs", rep.inputs},
+                      {"runs", rep.cases},
+                      {"holds", rep.holds()},
+                      {"rows", rows},
+                      {"internal_error_runs", rep.internal_error_runs},
+                      {"internal_errors", internal},
+                      {"centroid", rep.area_centroid ? "area" : "vertex"},
+                      {"points_ratio", ratios},
+                      {"order_termination", to_json(rep.order_terminations)},
+                      {"run_status", statuses},
+                      {"exempt_triangles", rep.exempt_triangles},
+                      {"runs_with_exempt_triangles", rep.runs_with_exempt},
+                      {"precision_exempt_triangles", rep.precision_exempt_triangles},
+                      {"runs_with_precision_exempt_triangles", rep.runs_with_precision_exempt},
+                      {"skipped_inputs", rep.skipped_inputs},
+                      {"jobs", rep.jobs},
+                      {"repeat", rep.repeat},
+                      {"nondeterministic_cases", rep.nondeterministic_cases},
+                      {"nondeterministic_first", rep.nondeterministic_first},
+                      {"comparison_runs", rep.comparison_runs},
+                      {"comparison_cache_hits", rep.comparison_cache_hits},
+                      {"points_cache_dir", rep.points_cache_dir},
+                      {"seconds", rep.seconds},
+                      {"engine_seconds", rep.engine_seconds},
+                      {"comparison_seconds", rep.comparison_seconds},
+                      {"shrink_seconds", rep.shrink_seconds},
+                      {"overhead_per_run_ms", rep.overhead_per_case_ms},
+                      {"out_dir", rep.out_dir}};
+  if (rep.shard) j["shard"] = shard_to_json(rep);
+  return j;
 }
 
 std::string junit_report(const AuditReport& rep) {

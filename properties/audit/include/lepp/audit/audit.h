@@ -11,7 +11,10 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "lepp/audit/checks.h"
 #include "lepp/audit/order_termination.h"
@@ -53,6 +56,10 @@ struct AuditOptions {
   std::size_t max_findings_per_row = 3;     // shrunk and saved; further failures are counted
   std::size_t shrink_max_runs = 300;        // engine runs per shrink at most
   double shrink_max_seconds = 60;           // and seconds per shrink
+  // --shard K/N (lepp/audit/shard.h): only the cases whose index in the whole
+  // audit is K-1 modulo N, and the report carries what merge_shards needs.
+  // 0: the whole audit, no shard data.
+  std::size_t shard_index = 0, shard_count = 0;
   std::function<void(const Progress&)> on_progress;
 };
 
@@ -98,6 +105,37 @@ struct PointsRatio {
   double total = 0;                  // sum of ours / sum of theirs
 };
 
+// What one shard's report carries beyond a report, so that merge_shards
+// (lepp/audit/shard.h) gives the whole audit's report: where each first, each
+// listed item and each saved finding stands in the whole audit's order. A run's
+// ordinal is case index x repeat + repetition, the order run_audit sums in.
+struct ShardData {
+  std::size_t index = 1, count = 1;
+  std::size_t total_cases = 0;                  // cases of the whole audit
+  std::vector<std::size_t> cases;               // this shard's, by their index in the whole audit
+  nlohmann::json config;                        // what the shards of one audit share (shard_config)
+  std::array<std::size_t, kRows> first_run{};   // ordinal of the run of each row's first_detail
+  std::array<std::map<std::string, std::size_t>, kRows> deviation_first_run;  // of each deviation_first
+  std::vector<std::size_t> nondeterministic_cases;   // case of each nondeterministic_first line
+  std::vector<std::size_t> order_termination_cases;  // case of each order_terminations entry
+  // Points added on each case some comparison finished on: ours, and each comparison's (none: it did not finish).
+  struct Points {
+    std::size_t case_index = 0;
+    double ours = 0;
+    std::vector<std::optional<double>> theirs;  // in the order of AuditOptions::comparisons
+  };
+  std::vector<Points> points;
+  // Every finding this shard saved: the merge keeps those the whole audit would have saved.
+  struct Finding {
+    std::string dir, dir_absolute;  // Counterexample::dir, and where it was on the shard's machine
+    std::size_t run = 0;            // the run's ordinal
+    Row row = Row::Certificate;
+    bool internal = false;          // an internal error of the audit (OUT/internal-error-N)
+    std::string input;
+  };
+  std::vector<Finding> findings;
+};
+
 struct AuditReport {
   std::string engine;
   Method method = Method::Centroid;
@@ -128,6 +166,7 @@ struct AuditReport {
   // like the others; the audit goes on with the other cases.
   std::size_t internal_error_runs = 0;
   std::vector<Counterexample> internal_errors;
+  std::optional<ShardData> shard;              // --shard K/N: one slice of an audit, to be merged
 
   bool holds() const;                          // no row failed and no run hit an internal error
   RowSummary& operator[](Row r) { return rows[static_cast<std::size_t>(r)]; }
@@ -136,6 +175,11 @@ struct AuditReport {
 
 // Throws UsageError on bad options (no thetas, a missing input directory).
 AuditReport run_audit(const Engine& engine, const AuditOptions& options);
+
+// The ratio row against one comparison from (ours, theirs) per run both
+// finished, in case order: the median, smallest and largest of ours/theirs
+// (where theirs > 0), and the sum of ours over the sum of theirs.
+PointsRatio points_ratio(const std::string& against, const std::vector<std::pair<double, double>>& ours_theirs);
 
 // 3 the audit's own verdict code stopped on some run (internal errors; the
 // report is complete otherwise), else 0 every row holds, 1 some row failed.
