@@ -436,20 +436,26 @@ TEST(PrecisionStop, OtherRoundingsAtTinySegmentsAgree) {
 // it and the strict certificate rejected their claim (stored meshes of that version:
 // properties/tests/certify_cli_test.sh). Now both take the other resolution, agree,
 // and the mesh certifies by the strict rule.
+// notch-second-longest-tie.poly (gen:ulp-notch, shrunk): a terminal triangle whose two
+// other edges tie exactly, where only the other second-longest edge's choice can be
+// inserted; a seeded bug that kept the edge order's second-longest edge in either
+// engine's search survived every other test (mutants *-ties-second-first-only).
 TEST(PrecisionStop, AnotherTieResolutionIsTriedAtTheLimit) {
   struct Case {
     const char* file;
     Method method;
+    double theta;
   };
-  for (const Case& c : {Case{"tie-finding.poly", Method::Centroid}, Case{"tie-finding-subnormal-midpoint.poly", Method::Midpoint}}) {
+  for (const Case& c : {Case{"tie-finding.poly", Method::Centroid, 20}, Case{"tie-finding-subnormal-midpoint.poly", Method::Midpoint, 20},
+                        Case{"notch-second-longest-tie.poly", Method::Centroid, 33}}) {
     const Pslg p = load(c.file);
     RefineOptions o;
-    o.min_angle_deg = 20;
+    o.min_angle_deg = c.theta;
     o.method = c.method;
     const RefineResult r = fast::refine(p, o);
     EXPECT_EQ(difference(r, reference::refine(p, o)), "") << c.file;
     EXPECT_GT(r.tie_resolutions, 0) << c.file << ": no insertion through another tie resolution";
-    const certify::Report rep = certificate(p, r, 20, c.method, true);
+    const certify::Report rep = certificate(p, r, c.theta, c.method, true);
     EXPECT_TRUE(rep.certified()) << c.file << "\n" << certify::format_report(rep);
   }
 }

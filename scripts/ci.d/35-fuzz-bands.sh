@@ -30,13 +30,12 @@ failed=0
 # (centroid 10 to 30 degrees, midpoint 10 to 22), the precision families in the mix.
 rows=(
   "parse fuzz_parse 20000"
-  "cdt fuzz_cdt 3000"
-  "refine-centroid fuzz_refine 1500 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
-  "refine-midpoint fuzz_refine 1500 LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
-  "refine-precision fuzz_refine 800 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
-  "differential fuzz_differential 800"
-  "differential-precision fuzz_differential 500 LEPP_FUZZ_PRECISION=1"
-  "engine-lepp fuzz_engine 300 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
+  "cdt fuzz_cdt 2000"
+  "refine-centroid fuzz_refine 500 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
+  "refine-midpoint fuzz_refine 500 LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
+  "refine-precision fuzz_refine 300 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
+  "differential fuzz_differential 300"
+  "engine-lepp fuzz_engine 200 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
 )
 for row in "${rows[@]}"; do
   read -r name target runs vars <<<"$row"
@@ -57,7 +56,7 @@ for row in "${rows[@]}"; do
   [[ -f fuzz/$target.dict ]] && dict=(-dict="fuzz/$target.dict")
   start=$(date +%s)
   status=0
-  env "${env_vars[@]}" "$build/fuzz/$target" -seed=1 -runs="$runs" -timeout=120 -rss_limit_mb=4096 -malloc_limit_mb=2048 \
+  env "${env_vars[@]}" "$build/fuzz/$target" -seed=1 -runs="$runs" -timeout=300 -rss_limit_mb=4096 -malloc_limit_mb=2048 \
     "${dict[@]}" -artifact_prefix="$work/findings/" "$work/corpus" "$seeds" >"$work/log" 2>&1 || status=$?
   secs=$(( $(date +%s) - start ))
   if [[ $status -ne 0 ]]; then
