@@ -194,6 +194,9 @@ Pslg read_poly(const std::string& path, std::vector<std::string>& warnings) {
     std::string node = node_path_for(path);
     if (!std::ifstream(node)) in.fail(fmt::format("the .poly lists no vertices and {} cannot be opened", node));
     Pslg points = read_node(node, warnings);
+    // Written back, a .poly with no vertices would again point at a .node: refuse the
+    // empty set here, naming both files, rather than accept what cannot be written.
+    if (points.vertices.empty()) in.fail(fmt::format("the .poly lists no vertices and neither does {}", node));
     pslg.vertices = std::move(points.vertices);
     pslg.vertex_markers = std::move(points.vertex_markers);
     pslg.vertex_lines = std::move(points.vertex_lines);
