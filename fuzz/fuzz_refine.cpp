@@ -64,13 +64,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     finding("engine-exception", fmt::format("{}: {}", what, e.what()));
     return 0;
   }
-  const std::vector<std::uint8_t> baked = encode(input);  // kept baked: replays without the environment
+  // A known class (outside the paper's claims, or documented in THEOREMS.md): one example
+  // kept per class and band, baked (method and theta as pinned) so it replays without the
+  // environment, and the run goes on. Encoded only then: not on every execution.
+  auto keep_known = [&](const std::string& cls, const std::string& reason, const std::string& message) {
+    const std::vector<std::uint8_t> baked = encode(input);
+    report_known_finding("fuzz_refine", cls, reason, known_finding_key("fuzz_refine", cls, options.method, options.min_angle_deg),
+                         message, baked.data(), baked.size());
+  };
   if (std::string problems = certify_result(pslg, options, result); !problems.empty()) {
     const std::string message = fmt::format("{} outcome={}: {}", what, lepp::to_string(result.outcome), problems);
-    if (precision_undecided(problems))  // documented (THEOREMS.md): kept once, gone past
-      report_known_finding("fuzz_refine", "precision-undecided", "tie-search-bound",
-                           known_finding_key("fuzz_refine", "precision-undecided", options.method, options.min_angle_deg),
-                           message, baked.data(), baked.size());
+    if (precision_undecided(problems))
+      keep_known("precision-undecided", "tie-search-bound", message);
     else
       finding("not-certified", message);
   }
@@ -82,13 +87,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                             theta_band(options.min_angle_deg), lepp::to_string(result.outcome),
                                             result.steiner_points, result.stuck);
     // Outside the paper's claims, or on an input doubles do not resolve (THEOREMS.md,
-    // "Termination in doubles"): keep one example per class and band, go on.
+    // "Termination in doubles").
     std::string reason = unclaimed_loop_reason(options.method, options.min_angle_deg, cls);
     if (reason.empty()) reason = below_resolution_reason(pslg);
     if (!reason.empty())
-      report_known_finding("fuzz_refine", "loop-" + cls, reason,
-                           known_finding_key("fuzz_refine", "loop-" + cls, options.method, options.min_angle_deg),
-                           message, baked.data(), baked.size());
+      keep_known("loop-" + cls, reason, message);
     else
       finding("loop-" + cls, message);
   }

@@ -14,8 +14,6 @@
 namespace lepp::fast {
 namespace {
 
-constexpr std::size_t kMaxStates = kTieSearchStates;  // lepp/rounding.h: the certifier's bound too
-
 // The edges of ti of maximal exact length, the edge order's longest first.
 int tied_longest(const TriMesh& m, int ti, int out[3]) {
   const EdgeOrder order(m, ti);
@@ -55,7 +53,7 @@ class TieSearch {
  private:
   // The Lepp goes on from ti (path_'s last triangle) with edge e as its longest.
   bool walk(int ti, int e, Lepp& lepp, Choice& c) {
-    if (seen_.size() >= kMaxStates || !seen_.insert(3 * static_cast<std::int64_t>(ti) + e).second) return false;
+    if (seen_.size() >= kTieSearchStates || !seen_.insert(3 * static_cast<std::int64_t>(ti) + e).second) return false;
     const FTri& f = m_.t(ti);
     if (f.seg[e] >= 0 || f.nbr[e] < 0) return terminal(ti, e, -1, -1, lepp, c);  // constrained: one terminal triangle
     const int next = nbr_tri(f.nbr[e]), j = nbr_edge(f.nbr[e]);

@@ -12,8 +12,6 @@
 namespace lepp::reference::detail {
 namespace {
 
-constexpr std::size_t kMaxStates = kTieSearchStates;  // lepp/rounding.h: the certifier's bound too
-
 class TieSearch {
  public:
   TieSearch(const Triangulation& tr, Method method) : tr_(tr), method_(method) {}
@@ -28,7 +26,7 @@ class TieSearch {
  private:
   // The Lepp goes on from f (the last face of path_) with edge i taken as its longest.
   bool walk(FH f, int i, Lepp& lepp, Selection& s) {
-    if (seen_.size() >= kMaxStates || !seen_.insert({ccw_ids(f), i}).second) return false;
+    if (seen_.size() >= kTieSearchStates || !seen_.insert({ccw_ids(f), i}).second) return false;
     if (f->is_constrained(i)) return terminal(f, i, FH(), lepp, s);
     FH n = f->neighbor(i);
     if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <cstring>
 #include <tuple>
 #include <unordered_map>
@@ -854,7 +855,10 @@ class Certifier {
         report_.exempt_angle.push_back(exempt);
       }
       // The precision limit (section 5c), likewise from input and mesh alone.
-      const bool limited = exempt < 0 && opt_.exempt_precision_limited && precision_limited(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids);
+      std::optional<PrecisionVerdict> searched;  // kept for a listed claim below: the search is not run twice
+      if (exempt < 0 && opt_.exempt_precision_limited)
+        searched = precision_verdict(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids);
+      const bool limited = searched == PrecisionVerdict::Limited;
       if (limited) report_.precision_exempt_triangles.push_back(static_cast<int>(t));
       auto it = listed.find(sorted(x));
       if (it != listed.end()) {
@@ -862,7 +866,7 @@ class Certifier {
         found[listed_index] = 1;
         if (opt_.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
           const PrecisionVerdict verdict =
-              limited ? PrecisionVerdict::Limited : precision_verdict(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids);
+              searched ? *searched : precision_verdict(precision_view(), t, opt_.precision_method, opt_.precision_ties_by_ids);
           if (verdict == PrecisionVerdict::Limited) {
             report_.unimprovable_accepted.push_back(opt_.unimprovable[listed_index]);
             continue;
@@ -877,7 +881,7 @@ class Certifier {
                    : fmt::format("{} is listed as limited by double precision but the search of its Lepps under every "
                                  "resolution of exact length ties stopped undecided (more than {} Lepp states, or a bad "
                                  "triangle), so the claim is not verified",
-                                 tri_text(t), kPrecisionSearchStates),
+                                 tri_text(t), kTieSearchStates),
                {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
           continue;
         }

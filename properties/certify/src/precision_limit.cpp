@@ -16,8 +16,6 @@
 namespace lepp::certify {
 namespace {
 
-constexpr std::size_t kMaxStates = kPrecisionSearchStates;  // Lepp states searched per triangle; beyond: no exemption
-
 class Search {
  public:
   Search(const PrecisionView& v, Method method, bool ties_by_ids) : v_(v), method_(method), by_ids_(ties_by_ids) {}
@@ -81,7 +79,7 @@ class Search {
   // soon as one choice can be inserted.
   bool walk(int h) {
     if (!seen_.insert(h).second) return true;
-    if (seen_.size() > kMaxStates) return !(too_big_ = true);
+    if (seen_.size() > kTieSearchStates) return !(too_big_ = true);  // beyond the bound: no exemption
     if (!v_.tri_ok[static_cast<std::size_t>(h / 3)]) return !(undecided_ = true);
     const int g = v_.twin[static_cast<std::size_t>(h)];
     if (g == -2) return !(undecided_ = true);
@@ -220,10 +218,6 @@ class Search {
 PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids) {
   if (!view.tri_ok[t]) return PrecisionVerdict::Undecided;
   return Search(view, method, ties_by_ids).verdict(t);
-}
-
-bool precision_limited(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids) {
-  return precision_verdict(view, t, method, ties_by_ids) == PrecisionVerdict::Limited;
 }
 
 }  // namespace lepp::certify

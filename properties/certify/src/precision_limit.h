@@ -30,20 +30,15 @@ struct PrecisionView {
   const OutsideInput& chains;
 };
 
-// True iff triangle t is precision-limited for `method`: each choice of point
-// is, at every rounding (the engines' formula of ALGORITHM.md section 5 and both
-// directed roundings of each coordinate of the exact point), not insertable in
-// the sense of ALGORITHM.md section 8b. False when the search is too large
-// (more than a few thousand Lepp states) or meets a bad edge: no exemption.
+// Whether triangle t is precision-limited for `method`: Limited when each choice of
+// point is, at every rounding (the engines' formula of ALGORITHM.md section 5 and
+// both directed roundings of each coordinate of the exact point), not insertable in
+// the sense of ALGORITHM.md section 8b; Insertable when one is; Undecided when the
+// search stopped at its bound of lepp::kTieSearchStates Lepp states or met a bad
+// edge before deciding. Only Limited exempts.
 // ties_by_ids: equal lengths decided by vertex ids as lepp's edge order does
-// (Options::precision_ties_by_ids, for checking lepp's own meshes), else every tie.
-bool precision_limited(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
-
-// The same search, its three outcomes: every choice fails (limited), one can be
-// inserted, or the search stopped at its bound of kPrecisionSearchStates Lepp states
-// (or met a bad edge) before deciding. Only Limited exempts.
+// (Options::precision_ties_by_ids, for meshes of older lepp versions), else every tie.
 enum class PrecisionVerdict { Limited, Insertable, Undecided };
-constexpr std::size_t kPrecisionSearchStates = kTieSearchStates;  // lepp/rounding.h, the engines' bound
 PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
 
 }  // namespace lepp::certify
