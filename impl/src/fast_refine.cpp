@@ -170,6 +170,12 @@ class Refiner {
           if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
         });
         if (by_creation) set_creation_ranks(fresh);
+        // A split off its line may keep a triangle beside its sliver: its edge ab is
+        // no longer constrained, so it is judged again, last in creation order.
+        if (const int k = inserter_.kept(); k >= 0 && quality_.processed(mesh_, k)) {
+          fresh.push_back(keyed(mesh_, k));
+          fresh.back().created = static_cast<int>(inserter_.created().size());
+        }
         queue.push(fresh, false);
         if (opt_.on_insertion) {
           Mesh now = mesh_.to_mesh(mem_);

@@ -26,10 +26,13 @@ class Inserter {
     const int p = static_cast<int>(m.pts.size());
     int made[4], count = 0;
     split_segment = -1;
+    kept_ = -1;
     if (choice.edge >= 0) {
       split_segment = segment_of_edge(m, mem, choice.tri, choice.edge);
+      const int keep = kept_side(m, choice.tri, choice.edge, choice.point);
       m.pts.push_back(choice.point);
-      count = m.split_edge(choice.tri, choice.edge, p, 0, made);
+      count = keep == 0 ? m.split_edge(choice.tri, choice.edge, p, 0, made)
+                        : m.split_edge_keeping(choice.tri, choice.edge, p, keep > 0, made, kept_);
     } else {
       int where = choice.tri, edge = -1;
       if (!locate_in(m, where, choice.point, edge) && edge == -2 && choice.other >= 0) {
@@ -66,6 +69,11 @@ class Inserter {
     return made[0];
   }
 
+  // The triangle the last insertion kept beside its sliver (ALGORITHM.md section
+  // 6, "A split off its line"), or -1: not incident to the new point, so not in
+  // its star, yet its edge ab is no longer constrained, so it joins the batch.
+  int kept() const { return kept_; }
+
   // Record the triangles each insertion creates, in creation order (the flip order's batch).
   bool record_creation = false;
   // The last insertion's created triangles (slot and stamp), in creation order;
@@ -76,6 +84,25 @@ class Inserter {
   static int segment_of_edge(const TriMesh& m, const SegmentMembership& mem, int ti, int i) {
     const FTri& f = m.t(ti);
     return mem.segment_of(f.v[next3(i)], f.v[prev3(i)]);
+  }
+
+  // A split of constrained edge i of ti = (c, a, b) at p strictly off the line ab
+  // keeps the triangle on the side p moves away from when p lies strictly outside
+  // its circumcircle (ALGORITHM.md section 6, "A split off its line"): the usual
+  // split would leave the edge from p to that triangle's apex not locally
+  // Delaunay, and no flip opposite p repairs it. 1: keep the neighbour across ab
+  // (p on c's side), -1: keep ti (p beyond ab), 0: the usual split.
+  static int kept_side(const TriMesh& m, int ti, int i, const Point& p) {
+    const FTri& f = m.t(ti);
+    const Point &c = m.p(f.v[i]), &a = m.p(f.v[next3(i)]), &b = m.p(f.v[prev3(i)]);
+    const int side = orient(a, b, p);
+    if (side > 0) {
+      if (f.nbr[i] < 0) return 0;
+      const FTri& g = m.t(nbr_tri(f.nbr[i]));
+      return incircle(m.p(g.v[nbr_edge(f.nbr[i])]), b, a, p) < 0 ? 1 : 0;
+    }
+    if (side < 0) return incircle(c, a, b, p) < 0 ? -1 : 0;
+    return 0;
   }
 
   // Where p lies in the closed triangle ti: edge = -1 strictly inside, 0..2 on
@@ -115,6 +142,7 @@ class Inserter {
 
   std::vector<int> stack_;
   std::vector<Item> created_;
+  int kept_ = -1;
 };
 
 }  // namespace lepp::fast

@@ -122,6 +122,16 @@ struct TriMesh {
   // triangle has p as v[0]. Writes the 2 or 4 ids to out, returns how many.
   int split_edge(int ti, int i, int p, std::int8_t segment, int out[4]);
 
+  // The split of constrained edge i of ti = (c, a, b) at p strictly off the line
+  // ab when the triangle on the side p moves away from stays (ALGORITHM.md
+  // section 6, "A split off its line"): that triangle K keeps its slot, stamp and
+  // vertices, its edge ab becomes unconstrained, and the sliver between ab and
+  // the new constrained edges ap, pb joins K's side. keep_neighbour: K is the
+  // triangle (d, b, a) across edge i (p on c's side), else K is ti (p on the
+  // other side, which may be outside the domain). Writes the new triangles (each
+  // with p at v[0]) to out, returns how many (3, or 1 without a neighbour); k = K.
+  int split_edge_keeping(int ti, int i, int p, bool keep_neighbour, int out[3], int& k);
+
   // Flips edge 0 of ti = (p, a, b) with the triangle (d, b, a) across it: ti
   // becomes (p, a, d) and the neighbour (p, d, b), both with p as v[0]. Returns
   // the neighbour's id.
@@ -217,6 +227,60 @@ inline int TriMesh::split_edge(int ti, int i, int p, std::int8_t segment, int ou
   inherit_region(n0, n1);  // the neighbour's side: its own region across a segment
   out[0] = t0, out[1] = t1, out[2] = n0, out[3] = n1;
   return 4;
+}
+
+inline int TriMesh::split_edge_keeping(int ti, int i, int p, bool keep_neighbour, int out[3], int& k) {
+  const FTri old = t(ti);
+  const int c = old.v[i], a = old.v[next3(i)], b = old.v[prev3(i)];
+  const int across = old.nbr[i];
+  if (keep_neighbour) {
+    // K = (d, b, a) across ab stays; ti's side becomes (p, b, c), (p, c, a) and
+    // the sliver (p, a, b), counter-clockwise as p lies on c's side of ab.
+    const int na = old.nbr[next3(i)], nb = old.nbr[prev3(i)];
+    const std::int8_t sa = old.seg[next3(i)], sb = old.seg[prev3(i)];
+    const int n0 = nbr_tri(across), j = nbr_edge(across);
+    const int t0 = ti, t1 = size(), s = size() + 1;
+    grow(2);
+    put(t0, FTri{{p, b, c}, {na, nbr_code(t1, 2), nbr_code(s, 1)}, {sa, -1, 0}, -1});
+    put(t1, FTri{{p, c, a}, {nb, nbr_code(s, 2), nbr_code(t0, 1)}, {sb, 0, -1}, -1});
+    put(s, FTri{{p, a, b}, {nbr_code(n0, j), nbr_code(t0, 2), nbr_code(t1, 1)}, {-1, 0, 0}, -1});
+    relink(na, nbr_code(t0, 0));
+    relink(nb, nbr_code(t1, 0));
+    t(n0).nbr[j] = nbr_code(s, 0);  // K itself is not rewritten: its stamp stays
+    t(n0).seg[j] = -1;
+    inherit_region(t0, t1);
+    inherit_region(n0, s);  // the sliver lies on K's side of ap, pb
+    k = n0;
+    out[0] = t0, out[1] = t1, out[2] = s;
+    return 3;
+  }
+  // K = ti stays; the sliver (p, b, a) lies beyond ab, counter-clockwise as p
+  // lies on the far side; the neighbour (d, b, a), if any, becomes (p, a, d), (p, d, b).
+  const int s = size();
+  grow(1);
+  t(ti).nbr[i] = nbr_code(s, 0);
+  t(ti).seg[i] = -1;
+  inherit_region(ti, s);
+  k = ti;
+  if (across < 0) {
+    put(s, FTri{{p, b, a}, {nbr_code(ti, i), -1, -1}, {-1, 0, 0}, -1});
+    out[0] = s;
+    return 1;
+  }
+  const int n0 = nbr_tri(across), j = nbr_edge(across), n1 = size();
+  const FTri on = t(n0);
+  const int d = on.v[j];
+  const int mb = on.nbr[next3(j)], ma = on.nbr[prev3(j)];
+  const std::int8_t smb = on.seg[next3(j)], sma = on.seg[prev3(j)];  // edges (a, d), (d, b)
+  grow(1);
+  put(s, FTri{{p, b, a}, {nbr_code(ti, i), nbr_code(n0, 2), nbr_code(n1, 1)}, {-1, 0, 0}, -1});
+  put(n0, FTri{{p, a, d}, {mb, nbr_code(n1, 2), nbr_code(s, 1)}, {smb, -1, 0}, -1});
+  put(n1, FTri{{p, d, b}, {ma, nbr_code(s, 2), nbr_code(n0, 1)}, {sma, 0, -1}, -1});
+  relink(mb, nbr_code(n0, 0));
+  relink(ma, nbr_code(n1, 0));
+  inherit_region(n0, n1);
+  out[0] = s, out[1] = n0, out[2] = n1;
+  return 3;
 }
 
 inline int TriMesh::flip_edge0(int ti) {

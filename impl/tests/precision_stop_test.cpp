@@ -370,6 +370,24 @@ TEST(PrecisionStop, SliverClauseSeesTheChainEdgesAtTheRangesEnds) {
   }
 }
 
+// A midpoint rounded off its constrained edge's line, on the side away from a
+// triangle whose circumcircle it lies outside: the usual split left the edge
+// from it to that triangle's apex not locally Delaunay, in both engines (lepp
+// 0.2 too; ALGORITHM.md section 6, "A split off its line"). Every order.
+TEST(PrecisionStop, SplitOffItsLineKeepsTheTriangleBesideItsSliver) {
+  const Pslg p = load("split-off-line-midpoint-2e40.poly");
+  for (QueueOrder order : {QueueOrder::Fifo, QueueOrder::Lifo, QueueOrder::Flip, QueueOrder::Random, QueueOrder::SmallestAngle}) {
+    RefineOptions o;
+    o.min_angle_deg = 17.899999999999999;
+    o.method = Method::Midpoint;
+    o.order = order;
+    const RefineResult f = fast::refine(p, o), r = reference::refine(p, o);
+    EXPECT_EQ(difference(f, r), "") << to_string(order);
+    const certify::Report rep = certificate(p, f, o.min_angle_deg, o.method, true);
+    EXPECT_TRUE(rep.certified()) << to_string(order) << "\n" << certify::format_report(rep);
+  }
+}
+
 TEST(PrecisionStop, NearDuplicatesLong) {
   if (!long_tests()) GTEST_SKIP() << "LEPP_LONG_TESTS=1 runs the 30000-point set";
   const Pslg p = load("neardup30k.node");

@@ -98,9 +98,10 @@ class Refiner {
         std::string where = describe(t, lepp);  // before the insertion invalidates the faces
         if (options_.trace) result_.trace.push_back(trace_step(t, lepp, s));
 
-        VH v = insert_point(tr_, s, lepp.t1, options_.order == QueueOrder::Flip ? &created_ : nullptr);
+        FH kept;
+        VH v = insert_point(tr_, s, lepp.t1, options_.order == QueueOrder::Flip ? &created_ : nullptr, &kept);
         ++steiner_;
-        enqueue_new_bad(v);
+        enqueue_new_bad(v, kept);
         if (options_.on_insertion) options_.on_insertion(extract_mesh(tr_));
         if (options_.on_progress && steiner_ % 1000 == 0) options_.on_progress(steiner_);
         if (below_edge_floor(v)) outcome = Outcome::EdgeFloor, stuck = where;
@@ -203,7 +204,7 @@ class Refiner {
 
   // The insertion's batch: the processed-bad triangles around v, for the flip
   // order in the order the insertion created them (the created ones that still exist).
-  void enqueue_new_bad(VH v) {
+  void enqueue_new_bad(VH v, FH kept) {
     std::vector<Queued> fresh;
     if (options_.order == QueueOrder::Flip) {
       FH f;
@@ -215,6 +216,9 @@ class Refiner {
         if (!tr_.cdt.is_infinite(fc) && fc->info().in_domain && processed_bad(fc)) fresh.push_back(queued(fc));
       } while (++fc != done);
     }
+    // A split off its line may keep a triangle beside its sliver (section 6): its
+    // edge ab is no longer constrained, so it is judged again, last in creation order.
+    if (kept != FH() && processed_bad(kept)) fresh.push_back(queued(kept));
     queue_.push(fresh, false);
   }
 

@@ -391,12 +391,59 @@ void restore_delaunay(Triangulation& tr, VH v, std::vector<Tri>* created) {
 
 }  // namespace
 
-VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created) {
+namespace {
+
+// A split of constrained edge ab (face f = (c, a, b), c left of a->b) at p
+// strictly off the line ab keeps the triangle on the side p moves away from when
+// p lies strictly outside its circumcircle (ALGORITHM.md section 6, "A split off
+// its line"): the usual split would leave the edge from p to that triangle's apex
+// not locally Delaunay, and no flip opposite p repairs it. Returns that apex (d
+// across ab, p on c's side; c, p beyond ab), or null for the usual split.
+VH kept_apex(const Triangulation& tr, FH f, int i, const CPoint& p) {
+  VH a = f->vertex(Cdt::ccw(i)), b = f->vertex(Cdt::cw(i)), c = f->vertex(i);
+  const CGAL::Orientation side = CGAL::orientation(a->point(), b->point(), p);
+  if (side == CGAL::LEFT_TURN) {
+    FH n = f->neighbor(i);
+    if (tr.cdt.is_infinite(n) || !n->info().in_domain) return VH();
+    VH d = n->vertex(n->index(f));
+    return CGAL::side_of_oriented_circle(d->point(), b->point(), a->point(), p) == CGAL::ON_NEGATIVE_SIDE ? d : VH();
+  }
+  if (side == CGAL::RIGHT_TURN)
+    return CGAL::side_of_oriented_circle(c->point(), a->point(), b->point(), p) == CGAL::ON_NEGATIVE_SIDE ? c : VH();
+  return VH();
+}
+
+// The kept triangle (a, b, x): the usual split made (p, a, x), (p, x, b) or the
+// mirror; flipping px gives (a, b, x) back and the sliver between ab and the
+// constrained edges ap, pb, both on x's side of them (info). Returns the face.
+FH keep_beside_sliver(Triangulation& tr, VH v, VH a, VH b, VH x, const FaceInfo& info) {
+  Cdt& cdt = tr.cdt;
+  FH g;
+  int k;
+  if (!cdt.is_edge(v, x, g, k)) throw std::logic_error("reference: a split off its line lost the edge to the kept apex");
+  cdt.flip(g, k);
+  FH kept, sliver;
+  if (!cdt.is_face(a, b, x, kept) || !cdt.is_face(a, b, v, sliver))
+    throw std::logic_error("reference: a split off its line did not give back the kept triangle");
+  kept->info() = info;
+  sliver->info() = info;
+  set_constrained(cdt, a, b, false);
+  set_constrained(cdt, a, v, true);
+  set_constrained(cdt, v, b, true);
+  return kept;
+}
+
+}  // namespace
+
+VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created, FH* kept) {
   Cdt& cdt = tr.cdt;
   CPoint p(s.point.x, s.point.y);
   VH v;
   std::vector<int> segments;
   bool split = s.split_face != FH();
+  VH kept_x;  // the kept triangle's apex, if any
+  bool kept_left = false;  // on the left side of a->b (the split face's)
+  if (kept) *kept = FH();
   // Domain flags and regions of the two sides of a split constrained edge AB:
   // left of A->B, right; of the face the point falls in otherwise (left).
   FaceInfo left, right;
@@ -419,6 +466,8 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* 
     // ulp off the line: CGAL then keeps both halves constrained, where a
     // located insert would drop the point into a face beside the old constraint.
     // Unless the faces that makes outside the domain would not be counter-clockwise.
+    kept_x = kept_apex(tr, f, i, p);
+    kept_left = kept_x == f->vertex(i);
     const bool outside_anew = !splits_in_edge(tr, f, i, p) && !right.in_domain;
     v = outside_anew ? split_past_outside(tr, f, i, p) : cdt.Cdt::Ctr::insert(p, Cdt::EDGE, f, i);
   } else {
@@ -448,6 +497,10 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* 
       throw std::logic_error("reference: insertion made a triangle that is not counter-clockwise");
   } while (++fc != done);
   set_domain_flags(tr, v, split ? a : VH(), split ? b : VH(), left, right);
+  if (kept_x != VH()) {
+    FH k = keep_beside_sliver(tr, v, a, b, kept_x, kept_left ? left : right);
+    if (kept) *kept = k;
+  }
   restore_delaunay(tr, v, created);
   return v;
 }

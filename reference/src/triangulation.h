@@ -151,6 +151,8 @@ bool other_tie_resolution(const Triangulation& tr, FH t, Method method, Lepp& le
 // ties), sets ids, segment membership and domain flags.
 // created: if not null, set to the domain triangles the insertion made, in creation
 // order (ALGORITHM.md section 7), as keys; some no longer exist at the end.
-VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created = nullptr);
+// kept: if not null, set to the triangle a split off its line kept beside its
+// sliver (ALGORITHM.md section 6), else to null.
+VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created = nullptr, FH* kept = nullptr);
 
 }  // namespace lepp::reference::detail

@@ -455,8 +455,19 @@ class Certifier {
     std::vector<std::size_t> tried{0};
     std::unordered_set<int> dead;
     int stuck = -1;
+    // B ends the chain at once when a listed edge joins it, or any edge where no
+    // listed step leads on; else after the listed steps: a split whose rounded
+    // point lies off its line may keep the triangle beside its sliver (ALGORITHM.md
+    // section 6), so the last chain vertex before B is joined to B by an unlisted
+    // edge too, the sliver's base, and the chain goes round through the point.
+    const auto listed_step = [&](int v, const std::vector<int>& next) {
+      return std::any_of(next.begin(), next.end(), [&](int w) { return listed_.count(edge_key(v, w)) != 0; });
+    };
     while (!chain.empty()) {
-      if (adjacent(chain.back(), b)) {
+      const int v = chain.back();
+      const bool joined = adjacent(v, b);
+      if (joined && (listed_.count(edge_key(v, b)) != 0 || !listed_step(v, options.back()) ||
+                     tried.back() == options.back().size())) {
         chain.push_back(b);
         return chain;
       }
