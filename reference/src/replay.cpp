@@ -240,10 +240,15 @@ struct Replay::Impl {
   template <class T>
   std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l) const {
     std::vector<Candidate> out = paper_candidates(t1, t2, has_t2, l);
-    if (rules.variant != Deviation::Unknown)
+    if (rules.variant != Deviation::Unknown || !allowed_.empty())
       for (Candidate& c : deviation_points(t1, t2, has_t2, l))
-        if (c.deviation == rules.variant) out.push_back(c);
+        if (allows(c.deviation)) out.push_back(c);
     return out;
+  }
+  // The variants whose points are choices too (ReplayRules::variant, allow()).
+  std::vector<Deviation> allowed_;
+  bool allows(Deviation d) const {
+    return d == rules.variant || std::find(allowed_.begin(), allowed_.end(), d) != allowed_.end();
   }
 
   // The quad's centroid under the declared reading, and its scale for the
@@ -318,7 +323,9 @@ struct Replay::Impl {
           const T& star = c1 ? t1 : t2;
           const T& other = c1 ? t2 : t1;
           int inside = inside_status(other, g->point, tolerance(g->scale));
-          if (inside < 0) add(Deviation::Remark10Reversed, *g);  // the paper: the midpoint only
+          // The paper: the midpoint only. Both programs take the centroid here;
+          // Remark10Ignored ranks first, the trace tells them apart (conformance.cpp).
+          if (inside < 0) add(Deviation::Remark10Ignored, *g), add(Deviation::Remark10Reversed, *g);
           if (inside > 0) add(Deviation::Remark10Reversed, midpoint(Rule::SecondLongestMidpoint, star, c1 ? s1 : s2));
         }
       }
@@ -927,6 +934,9 @@ struct Replay::Impl {
       case Deviation::TriangleCentroid: return "the centroid of one terminal triangle of edge " + edge + " (" + lepp + ")";
       case Deviation::TerminalMidpoint: return "the midpoint of terminal edge " + edge + " (" + lepp + ")";
       case Deviation::CentroidNotMidpoint: return "the quad centroid at terminal edge " + edge + ", where the paper asks for a midpoint (" + lepp + ")";
+      case Deviation::Remark10Ignored:
+        return "the quad centroid at terminal edge " + edge + ", outside the triangle across from the constrained second-longest "
+               "edge, where Remark 10 asks for that edge's midpoint (" + lepp + ")";
       case Deviation::Remark10Reversed: return "Remark 10 the wrong way round at terminal edge " + edge + " (" + lepp + ")";
       case Deviation::OtherSecondLongest:
         return "the midpoint of another edge of a terminal triangle of edge " + edge +
@@ -1053,6 +1063,7 @@ const char* to_string(Deviation d) {
     case Deviation::TriangleCentroid: return "triangle-centroid";
     case Deviation::TerminalMidpoint: return "terminal-midpoint";
     case Deviation::CentroidNotMidpoint: return "centroid-not-midpoint";
+    case Deviation::Remark10Ignored: return "remark10-ignored";
     case Deviation::Remark10Reversed: return "remark10-reversed";
     case Deviation::OtherSecondLongest: return "other-second-longest";
     case Deviation::Circumcenter: return "circumcenter";
@@ -1074,6 +1085,9 @@ const char* definition(Deviation d) {
     case Deviation::TerminalMidpoint: return "the terminal edge's midpoint where the paper chooses another point";
     case Deviation::CentroidNotMidpoint:
       return "the quad centroid where the paper asks for a midpoint (both second-longest edges constrained, or the midpoint method)";
+    case Deviation::Remark10Ignored:
+      return "no Remark 10: the quad centroid wherever exactly one second-longest edge is constrained, also where it is not "
+             "inside the other triangle (the paper: the constrained edge's midpoint there)";
     case Deviation::Remark10Reversed:
       return "Remark 10 the wrong way round: the centroid where it is not inside the other triangle, or the constrained "
              "second-longest edge's midpoint where it is";
@@ -1091,7 +1105,8 @@ const char* definition(Deviation d) {
 bool has_variant(Deviation d) {
   switch (d) {
     case Deviation::AreaCentroid: case Deviation::VertexCentroid: case Deviation::TriangleCentroid:
-    case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Reversed:
+    case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Ignored:
+    case Deviation::Remark10Reversed:
     case Deviation::OtherSecondLongest: return true;
     default: return false;
   }
@@ -1101,6 +1116,9 @@ Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_uni
 Replay::~Replay() = default;
 bool Replay::match(const Point& p, ReplayChoice& choice) { return impl_->match(p, choice); }
 void Replay::insert(const Point& p, const ReplayChoice& choice) { impl_->insert(p, choice); }
+void Replay::allow(Deviation variant) {
+  if (has_variant(variant) && !impl_->allows(variant)) impl_->allowed_.push_back(variant);
+}
 std::vector<ReplayChoice> Replay::all_choices(const Point& p, std::size_t limit, std::size_t& total) {
   return impl_->all_choices(p, limit, total);
 }

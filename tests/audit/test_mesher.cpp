@@ -4,7 +4,7 @@
 // program under audit in tests/audit: it never calls lepp's engines. Only lepp's
 // .poly reader and input validation are borrowed (file syntax, not the algorithm).
 //
-//   lepp_test_mesher IN.poly OUTPREFIX THETA METHOD [--bug NAME] [--zero-based]
+//   lepp_test_mesher IN.poly OUTPREFIX THETA METHOD [--bug NAME]... [--zero-based]
 //
 // Writes OUTPREFIX.node, OUTPREFIX.ele (Triangle's formats, 1-based unless
 // --zero-based) and OUTPREFIX.trace (one "x y" line per Steiner point, %.17g).
@@ -20,6 +20,8 @@
 // triangle-centroid, no-remark10, shortest-edge, and one per deviation of the
 // audit's catalogue: area-centroid, terminal-midpoint, centroid-not-midpoint,
 // remark10-reversed, other-second-longest, good-triangle; and no-flips. Each is described at its use.
+// --bug may be given more than once: a program with several deviations at once
+// (area-centroid with other-second-longest: two rules for disjoint configurations).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -76,8 +78,9 @@ struct Options {
   std::string in, out;
   double theta = 0;
   bool centroid = true;
-  Bug bug = Bug::none;
+  std::set<Bug> bugs;  // --bug, given once per bug: two deviations at once
   bool zero_based = false;
+  bool has(Bug b) const { return bugs.count(b) > 0; }
 };
 
 [[noreturn]] void usage(const std::string& why) {
@@ -93,6 +96,7 @@ Bug parse_bug(const std::string& s) {
       {"none", Bug::none}, {"non-delaunay", Bug::non_delaunay}, {"drop-segment", Bug::drop_segment},
       {"skinny", Bug::skinny}, {"loop", Bug::loop}, {"crash", Bug::crash}, {"garbage", Bug::garbage},
       {"triangle-centroid", Bug::triangle_centroid}, {"no-remark10", Bug::no_remark10},
+      {"remark10-ignored", Bug::no_remark10},  // the same bug, by the name the audit gives it
       {"shortest-edge", Bug::shortest_edge}, {"area-centroid", Bug::area_centroid},
       {"terminal-midpoint", Bug::terminal_midpoint}, {"centroid-not-midpoint", Bug::centroid_not_midpoint},
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
@@ -109,7 +113,7 @@ Options parse(int argc, char** argv) {
     std::string a = argv[i];
     if (a == "--bug") {
       if (i + 1 >= argc) usage("--bug needs a name");
-      o.bug = parse_bug(argv[++i]);
+      o.bugs.insert(parse_bug(argv[++i]));
     } else if (a == "--zero-based") {
       o.zero_based = true;
     } else {
@@ -181,7 +185,7 @@ class Mesher {
   std::array<int, 3> edges_sorted(Face f) const;
   // The good-triangle bug: a threshold 3 degrees too high.
   bool bad(Face f) const {
-    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + (opt_.bug == Bug::good_triangle ? 3 : 1e-9);
+    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + (opt_.has(Bug::good_triangle) ? 3 : 1e-9);
   }
   bool skipped(Face f) const;  // small input angle: left as it is
   const P2& p(Face f, int i) const { return f->vertex(i)->point(); }
@@ -337,7 +341,7 @@ Vertex Mesher::insert_point(const P2& q, Face hint) {
     return Vertex();
   if (lt == Cdt::EDGE && loc->is_constrained(li)) return Vertex();
   // The no-flips bug: the plain constrained triangulation's insertion, no Delaunay flips after it.
-  Vertex v = opt_.bug == Bug::no_flips ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
+  Vertex v = opt_.has(Bug::no_flips) ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
   v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
   steiner_.push_back(q);
   vertex_of_id_.push_back(v);
@@ -353,7 +357,7 @@ bool Mesher::process(Face f) {
   // The Lepp: follow longest edges (the shortest-edge bug follows shortest ones).
   auto lepp_edge = [&](Face t) {
     std::array<int, 3> e = edges_sorted(t);
-    return opt_.bug == Bug::shortest_edge ? e[0] : e[2];
+    return opt_.has(Bug::shortest_edge) ? e[0] : e[2];
   };
   Face t1 = f, t2;
   int l = lepp_edge(t1);
@@ -378,7 +382,7 @@ bool Mesher::process(Face f) {
     bool c1 = blocked(t1, s1), c2 = blocked(t2, s2);
     const P2 &A = p(t1, Cdt::ccw(l)), &B = p(t1, Cdt::cw(l)), &C = p(t1, l), &D = p(t2, l2);
     P2 quad((A.x() + B.x() + C.x() + D.x()) / 4, (A.y() + B.y() + C.y() + D.y()) / 4);
-    if (opt_.bug == Bug::area_centroid) {
+    if (opt_.has(Bug::area_centroid)) {
       // The quad's centre of mass: the triangles' centroids weighted by their areas.
       double w1 = std::fabs((B.x() - A.x()) * (C.y() - A.y()) - (B.y() - A.y()) * (C.x() - A.x()));
       double w2 = std::fabs((B.x() - A.x()) * (D.y() - A.y()) - (B.y() - A.y()) * (D.x() - A.x()));
@@ -389,17 +393,17 @@ bool Mesher::process(Face f) {
       // Select Point: midpoint of l, or of the first constrained second-longest edge.
       if (c1) v = split_constrained(t1, s1);
       else if (c2) v = split_constrained(t2, s2);
-      else if (opt_.bug == Bug::centroid_not_midpoint) v = insert_point(quad, t1);  // the centroid in the midpoint method
+      else if (opt_.has(Bug::centroid_not_midpoint)) v = insert_point(quad, t1);  // the centroid in the midpoint method
       else v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
     } else if (!c1 && !c2) {
-      if (opt_.bug == Bug::triangle_centroid)  // the terminal triangle's centroid, not the quad's
+      if (opt_.has(Bug::triangle_centroid))  // the terminal triangle's centroid, not the quad's
         v = insert_point(P2((A.x() + B.x() + C.x()) / 3, (A.y() + B.y() + C.y()) / 3), t1);
-      else if (opt_.bug == Bug::terminal_midpoint)  // Lepp-midpoint's point in the centroid method
+      else if (opt_.has(Bug::terminal_midpoint))  // Lepp-midpoint's point in the centroid method
         v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
       else
         v = insert_point(quad, t1);
     } else if (c1 && c2) {
-      if (opt_.bug == Bug::centroid_not_midpoint) v = insert_point(quad, t1);  // the centroid where a midpoint is asked for
+      if (opt_.has(Bug::centroid_not_midpoint)) v = insert_point(quad, t1);  // the centroid where a midpoint is asked for
       else v = split_constrained(t2, s2);  // "a constrained second longest edge": t2's
     } else {
       // Remark 10: the centroid if it lies strictly inside the other triangle,
@@ -409,10 +413,10 @@ bool Mesher::process(Face f) {
       bool inside = true;
       for (int i = 0; i < 3; ++i)
         if (CGAL::orientation(p(other, Cdt::ccw(i)), p(other, Cdt::cw(i)), quad) != CGAL::LEFT_TURN) inside = false;
-      if (opt_.bug == Bug::remark10_reversed) inside = !inside;  // the centroid when it lies in t*, the midpoint otherwise
-      if (inside || opt_.bug == Bug::no_remark10) {
+      if (opt_.has(Bug::remark10_reversed)) inside = !inside;  // the centroid when it lies in t*, the midpoint otherwise
+      if (inside || opt_.has(Bug::no_remark10)) {
         v = insert_point(quad, other);
-      } else if (opt_.bug == Bug::other_second_longest) {
+      } else if (opt_.has(Bug::other_second_longest)) {
         // The wrong second-longest edge: the other triangle's, not t*'s constrained one.
         int lo = c1 ? s2 : s1;
         const P2 &U = p(other, Cdt::ccw(lo)), &W = p(other, Cdt::cw(lo));
@@ -423,7 +427,7 @@ bool Mesher::process(Face f) {
     }
   }
   if (v == Vertex()) return false;
-  if (opt_.bug == Bug::crash && steiner_.size() >= 2) std::raise(SIGSEGV);  // dies mid-run
+  if (opt_.has(Bug::crash) && steiner_.size() >= 2) std::raise(SIGSEGV);  // dies mid-run
   return true;
 }
 
@@ -435,7 +439,7 @@ void Mesher::collect_bad(std::vector<std::array<int, 3>>& stack) const {
 int Mesher::run(long max_insertions) {
   build();
   mark_domain();
-  if (opt_.bug == Bug::drop_segment) {
+  if (opt_.has(Bug::drop_segment)) {
     // Forgets the constraint of one interior segment once the domain is known.
     for (auto e = cdt_.finite_edges_begin(); e != cdt_.finite_edges_end(); ++e) {
       Face f = e->first;
@@ -508,7 +512,7 @@ void Mesher::write(const std::string& prefix) const {
     for (int i = 0; i < 3; ++i)
       if (f->is_constrained(i)) constrained.insert(key(id(f->vertex(Cdt::ccw(i))), id(f->vertex(Cdt::cw(i)))));
   }
-  if (opt_.bug == Bug::non_delaunay) {
+  if (opt_.has(Bug::non_delaunay)) {
     // Flips one unconstrained edge whose quad is strictly convex and not cocircular:
     // the new edge is not Delaunay.
     std::map<std::pair<int, int>, std::pair<int, int>> owner;  // directed edge -> (triangle, apex)
@@ -535,7 +539,7 @@ void Mesher::write(const std::string& prefix) const {
     std::fprintf(stderr, "lepp_test_mesher: cannot write %s.node/.ele\n", prefix.c_str());
     std::exit(1);
   }
-  if (opt_.bug == Bug::garbage) {
+  if (opt_.has(Bug::garbage)) {
     std::fprintf(node, "this is not a node file\n");
     std::fprintf(ele, "%zu 3 0\n1 2 3\n@@@\n", tris.size() + 7);
   } else {
@@ -564,7 +568,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   int status;
-  if (opt.bug == Bug::skinny) {
+  if (opt.has(Bug::skinny)) {
     // Stops one insertion early: the triangle the last point was for stays bad.
     long total;
     {
@@ -578,7 +582,7 @@ int main(int argc, char** argv) {
   } else {
     Mesher m(pslg, opt);
     status = m.run(1L << 62);
-    if (opt.bug == Bug::loop && m.insertions() > 0)
+    if (opt.has(Bug::loop) && m.insertions() > 0)
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // never ends
     m.write(opt.out);
   }

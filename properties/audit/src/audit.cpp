@@ -401,9 +401,13 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
           s.first_detail = fmt::format("{} at theta {}: {}", input.name, c.theta, r.detail);
           if (sharded) rep.shard->first_run[static_cast<std::size_t>(row)] = run_ordinal(c, k);
         }
-        if (r.verdict == Verdict::Failed && !r.deviation.empty() && s.deviations[r.deviation]++ == 0) {
-          s.deviation_first[r.deviation] = fmt::format("step {} of {} at {} degrees", r.step, input.name, theta_text(c.theta));
-          if (sharded) rep.shard->deviation_first_run[static_cast<std::size_t>(row)][r.deviation] = run_ordinal(c, k);
+        // Every deviation of the run's trace counts, each where it first showed.
+        std::vector<DeviationLink> named = r.deviations;
+        if (named.empty() && !r.deviation.empty()) named.push_back({r.deviation, static_cast<std::size_t>(r.step), 0});
+        for (const DeviationLink& d : named) {
+          if (r.verdict != Verdict::Failed || s.deviations[d.deviation]++ > 0) continue;
+          s.deviation_first[d.deviation] = fmt::format("step {} of {} at {} degrees", d.first_step, input.name, theta_text(c.theta));
+          if (sharded) rep.shard->deviation_first_run[static_cast<std::size_t>(row)][d.deviation] = run_ordinal(c, k);
         }
         if (r.verdict == Verdict::Failed && !r.deviation.empty() && r.consistent_variant) ++s.deviation_consistent[r.deviation];
         const std::size_t ri = static_cast<std::size_t>(row);
@@ -506,6 +510,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     cx.shrink_runs = sh.runs;
     cx.detail = last_result[row].detail;
     cx.deviation = last_result[row].deviation;
+    cx.deviations = last_result[row].deviations;
     // Absolute paths: reproduce.sh works from any directory.
     const fs::path abs_dir = fs::absolute(cx.dir).lexically_normal();
     if (!opt.reproduce_prefix.empty())

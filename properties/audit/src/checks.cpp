@@ -226,7 +226,9 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
       if (conf.failure) {
         r.detail += fmt::format("; deviation {}: {}", conf.failure->deviation, conf.failure->deviation_what);
         r.consistent_variant = conf.failure->consistent_variant;
+        r.deviations = conf.failure->chain;
         if (r.consistent_variant) r.detail += fmt::format(" (every step fits this one variant)");
+        if (r.deviations.size() > 1) r.detail += "; every deviation: " + chain_text(r.deviations);
         if (not_delaunay)
           r.detail += "; the final mesh is not constrained Delaunay: the program's intermediate meshes probably differ "
                       "from the replay's (missing flips are the likely cause)";

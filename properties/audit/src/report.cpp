@@ -37,6 +37,19 @@ std::string smallest_cell(const RowSummary& r) {
 
 }  // namespace
 
+nlohmann::json deviations_json(const std::vector<DeviationLink>& chain) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const DeviationLink& l : chain) out.push_back({{"deviation", l.deviation}, {"from_step", l.first_step}, {"steps", l.steps}});
+  return out;
+}
+
+std::vector<DeviationLink> deviations_of(const nlohmann::json& chain) {
+  std::vector<DeviationLink> out;
+  for (const nlohmann::json& l : chain)
+    out.push_back({l.at("deviation").get<std::string>(), l.at("from_step").get<std::size_t>(), l.at("steps").get<std::size_t>()});
+  return out;
+}
+
 std::string deviations_text(const AuditReport& rep) {
   const RowSummary& r = rep[Row::Conformance];
   std::string md;
@@ -44,7 +57,7 @@ std::string deviations_text(const AuditReport& rep) {
     md += "\nConformance is checked against the declared reading `--centroid area`: the quad centroid is its area "
           "centroid (centre of mass), not the paper's vertex average (A+B+C+D)/4 of Lemma 11.\n";
   if (r.deviations.empty()) return md;
-  md += "\nConformance deviations (the catalogue rule the first failing step of each run is, docs/CONFORMANCE.md):";
+  md += "\nConformance deviations (every catalogue rule each failing run's trace shows, in runs; docs/CONFORMANCE.md):";
   std::size_t named = 0;
   bool first = true;
   for (const auto& [name, runs] : r.deviations) {
@@ -211,6 +224,7 @@ nlohmann::json json_report(const AuditReport& rep) {
                         {"stderr_file", c.stderr_file},
                         {"reproduce", c.reproduce}};
     if (!c.deviation.empty()) j["deviation"] = c.deviation;
+    if (!c.deviations.empty()) j["deviations"] = deviations_json(c.deviations);
     return j;
   };
   nlohmann::json rows = nlohmann::json::array();

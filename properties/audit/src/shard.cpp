@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "lepp/audit/report.h"
 #include "lepp/audit/subprocess.h"
 
 namespace fs = std::filesystem;
@@ -66,6 +67,7 @@ Counterexample counterexample_of(const nlohmann::json& j, Row row) {
   c.signature = j.at("signature").get<std::string>();
   c.detail = j.at("detail").get<std::string>();
   c.deviation = j.value("deviation", std::string());
+  if (j.contains("deviations")) c.deviations = deviations_of(j.at("deviations"));
   c.original_detail = j.at("original_detail").get<std::string>();
   c.original_input = j.at("original_input").get<std::string>();
   c.deterministic = j.at("deterministic").get<bool>();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "lepp/audit/conformance.h"
 #include "lepp/audit/engine.h"
 #include "lepp/certify.h"
 
@@ -52,6 +53,8 @@ struct RowResult {
   std::shared_ptr<const StepDiagnosis> diagnosis;
   // Conformance: every traced step fits the deviation's variant (ConformanceFailure::consistent_variant).
   bool consistent_variant = false;
+  // Conformance: every deviation of the trace (ConformanceFailure::chain); the first is `deviation`.
+  std::vector<DeviationLink> deviations;
   // InternalError: where the verdict code stopped ("certifier", "conformance replay"); detail has the message.
   std::string internal_error;
 };
