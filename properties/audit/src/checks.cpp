@@ -229,6 +229,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
         r.deviations = conf.failure->chain;
         if (r.consistent_variant) r.detail += fmt::format(" (every step fits this one variant)");
         if (r.deviations.size() > 1) r.detail += "; every deviation: " + chain_text(r.deviations);
+        if (const std::string note = remark10_ignored_note(*conf.failure); !note.empty()) r.detail += "; " + note;
         if (not_delaunay)
           r.detail += "; the final mesh is not constrained Delaunay: the program's intermediate meshes probably differ "
                       "from the replay's (missing flips are the likely cause)";

@@ -68,7 +68,10 @@ void follow_chain(reference::Replay& replay, const std::vector<Point>& trace, st
   std::size_t i = first;
   while (i < trace.size()) {
     if (!reference::has_variant(named)) {
-      f.chain_end = fmt::format("step {} is {}'s point, not a rule set the replay can continue with", i + 1, to_string(named));
+      if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
+      f.chain_end = named == reference::Deviation::Unknown
+                        ? fmt::format("step {} is no rule of the catalogue", i + 1)
+                        : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
       return;
     }
     replay.allow(named);

@@ -89,7 +89,7 @@ std::string diagnosis_markdown(const StepDiagnosis& d) {
         "\nEvery one of the {} traced steps is the paper's choice or `{}`'s ({} of them `{}`'s): the program follows one "
         "consistent variant.\n",
         d.steps, f.deviation, f.variant_steps, f.deviation);
-  if (f.chain.size() > 1) {
+  if (f.chain.size() > 1 || !f.chain_end.empty()) {
     md += "\n**Every deviation of the trace**, in the order it shows them (after each, the replay went on with that rule "
           "allowed):";
     for (std::size_t i = 0; i < f.chain.size(); ++i)

@@ -75,7 +75,6 @@ struct DeviationLink {
   std::size_t steps = 0;       // steps the continued replay took as its point (0: it could not continue with it)
 };
 
-
 struct ConformanceFailure {
   std::size_t step = 0;           // 0-based index in the trace
   Point point;                    // the trace's point
@@ -103,7 +102,7 @@ struct ConformanceFailure {
   // remark10-reversed when a later step is only the reversed rule's point).
   std::vector<DeviationLink> chain;
   bool chain_complete = false;  // the replay reached the trace's end with the chain's variants allowed
-  std::string chain_end;        // else where and why it stopped, one line
+  std::string chain_end;        // else where and why it stopped after the first step, one line ("": it did not go on)
   // Steps that took the quad centroid inside the other triangle where one
   // second-longest edge is constrained: the paper's Remark 10, which a
   // reversed program never does (the evidence for remark10-ignored).
