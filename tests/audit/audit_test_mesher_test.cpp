@@ -299,6 +299,47 @@ TEST(AuditEveryDeviation, TwoDeviationsInOneAudit) {
   for (const auto& [name, n] : listed) EXPECT_GE(conf.at("deviations").value(name, 0u), n) << name << ": " << conf.dump(2);
 }
 
+// A program that writes floats, or 6 digits, on an input no float holds (poly2tri's
+// polygon_test_01, tests/audit/arithmetic/): its certificate findings (input vertices
+// moved, the boundary off the domain's) are named by the arithmetic first, in the row's
+// counts and each counterexample, shrunk to an input that shows the same; the
+// program writing exact doubles audits clean there.
+TEST(AuditArithmetic, NamedFirstOnTheCertificate) {
+  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic --method centroid --theta 20,25,30 --max-findings 1";
+  expect_clean(audit("arithmetic-clean", mesher(), args));
+  for (const std::string bug : {"single-precision", "printed-digits"}) {
+    const AuditRun r = audit("arithmetic-" + bug, mesher("--bug " + bug), args);
+    ASSERT_FALSE(r.report.is_discarded()) << r.err;
+    EXPECT_EQ(r.status, 1);
+    for (const char* key : {"certificate", "conformance"}) {
+      const json& rw = row(r.report, key);
+      ASSERT_GE(rw.at("failed").get<std::size_t>(), 1u) << bug << " " << key << ": " << rw.dump(2);
+      EXPECT_EQ(rw.at("deviations").value(bug, 0u), rw.at("failed").get<std::size_t>()) << bug << " " << key << ": " << rw.dump(2);
+      const std::string first = rw.at("first");
+      if (std::string(key) == "certificate") {  // "INPUT at theta T: NAME: ...; what the certifier finds: ..."
+        EXPECT_EQ(first.find(bug), first.find(": ") + 2) << "not named first: " << first;
+        EXPECT_NE(first.find("of the 12 input vertices it moves are in the output at that rounding"), std::string::npos) << first;
+      }
+      else
+        EXPECT_NE(first.find("; deviation " + bug + ": "), std::string::npos) << first;
+      ASSERT_GE(rw.at("counterexamples").size(), 1u);
+      for (const json& cx : rw.at("counterexamples")) {
+        EXPECT_EQ(cx.value("deviation", ""), bug) << cx.dump(2);
+        EXPECT_NE(cx.at("signature").get<std::string>().find(bug), std::string::npos) << cx.dump(2);
+      }
+    }
+  }
+  // On the hand-made inputs (integers and short decimals) no input vertex moves at
+  // 6 digits: the certificate's gap (a segment split off its line) is named from the trace.
+  const AuditRun own = audit("arithmetic-printed-own", mesher("--bug printed-digits"),
+                             kOwnInputs + " --method centroid --theta 20,25,30 --max-findings 1 --no-shrink");
+  ASSERT_FALSE(own.report.is_discarded()) << own.err;
+  const json& cert = row(own.report, "certificate");
+  ASSERT_GE(cert.at("failed").get<std::size_t>(), 1u) << cert.dump(2);
+  EXPECT_EQ(cert.at("deviations").value("printed-digits", 0u), cert.at("failed").get<std::size_t>()) << cert.dump(2);
+  EXPECT_NE(cert.at("first").get<std::string>().find("printed-digits (the trace shows it"), std::string::npos) << cert.at("first");
+}
+
 // --- each seeded bug is caught by its row and shrunk -----------------------
 
 struct BugCase {
@@ -338,7 +379,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BugCase{"remark10-reversed", "conformance", "", "--theta 20,30 --cases 10", true, "remark10-reversed"},
                       BugCase{"remark10-ignored", "conformance", "", "--theta 20,25,30 --cases 15", true, "remark10-ignored"},
                       BugCase{"other-second-longest", "conformance", "", "--theta 20,25,30 --cases 12", true, "other-second-longest"},
-                      BugCase{"good-triangle", "conformance", "", "--theta 25 --cases 5", true, "good-triangle"}),
+                      BugCase{"good-triangle", "conformance", "", "--theta 25 --cases 5", true, "good-triangle"},
+                      // The arithmetic (issue 30): named instead of the near misses it causes.
+                      BugCase{"single-precision", "conformance", "", "--theta 20,25,30 --cases 15", true, "single-precision"},
+                      BugCase{"printed-digits", "conformance", "", "--theta 20,25,30 --cases 15", true, "printed-digits"}),
     [](const ::testing::TestParamInfo<BugCase>& info) {
       std::string name = info.param.bug;
       for (char& ch : name)

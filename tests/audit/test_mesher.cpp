@@ -19,7 +19,10 @@
 // Seeded bugs (--bug): non-delaunay, drop-segment, skinny, loop, crash, garbage,
 // triangle-centroid, no-remark10, shortest-edge, and one per deviation of the
 // audit's catalogue: area-centroid, terminal-midpoint, centroid-not-midpoint,
-// remark10-reversed, other-second-longest, good-triangle; and no-flips. Each is described at its use.
+// remark10-reversed, remark10-ignored (= no-remark10), other-second-longest,
+// good-triangle; no-flips; and the arithmetic ones, single-precision (every
+// coordinate written is the float nearest the computed double) and
+// printed-digits (written with %g's 6 digits). Each is described at its use.
 // --bug may be given more than once: a program with several deviations at once
 // (area-centroid with other-second-longest: two rules for disjoint configurations).
 #include <algorithm>
@@ -71,7 +74,10 @@ enum class Bug {
   triangle_centroid, no_remark10, shortest_edge,
   // The deviation catalogue's rules (docs/CONFORMANCE.md, "Deviations"), one each.
   area_centroid, terminal_midpoint, centroid_not_midpoint, remark10_reversed, other_second_longest, good_triangle,
-  no_flips  // inserts without Delaunay flips (the audit names the non-Delaunay mesh as the likely cause)
+  no_flips,  // inserts without Delaunay flips (the audit names the non-Delaunay mesh as the likely cause)
+  // Arithmetic (docs/CONFORMANCE.md, "Arithmetic"): the coordinates it writes are
+  // floats (its vertices held as float), or written with a stream's 6 digits.
+  single_precision, printed_digits
 };
 
 struct Options {
@@ -100,7 +106,8 @@ Bug parse_bug(const std::string& s) {
       {"shortest-edge", Bug::shortest_edge}, {"area-centroid", Bug::area_centroid},
       {"terminal-midpoint", Bug::terminal_midpoint}, {"centroid-not-midpoint", Bug::centroid_not_midpoint},
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
-      {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips}};
+      {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips},
+      {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -494,11 +501,24 @@ int Mesher::run(long max_insertions) {
   return 0;
 }
 
-void write_trace(const std::string& path, const std::vector<P2>& pts) {
+// One coordinate as written: %.17g, or through the arithmetic bugs (a float
+// held where a double was computed, or a stream's default 6 digits).
+void write_coordinate(FILE* f, double x, const Options& opt) {
+  if (opt.has(Bug::printed_digits)) std::fprintf(f, "%g", x);
+  else if (opt.has(Bug::single_precision)) std::fprintf(f, "%.17g", static_cast<double>(static_cast<float>(x)));
+  else std::fprintf(f, "%.17g", x);
+}
+
+void write_trace(const std::string& path, const std::vector<P2>& pts, const Options& opt) {
   FILE* f = std::fopen(path.c_str(), "w");
   if (!f) return;
   std::fprintf(f, "# lepp_test_mesher: Steiner points in insertion order\n");
-  for (const P2& q : pts) std::fprintf(f, "%.17g %.17g\n", q.x(), q.y());
+  for (const P2& q : pts) {
+    write_coordinate(f, q.x(), opt);
+    std::fputc(' ', f);
+    write_coordinate(f, q.y(), opt);
+    std::fputc('\n', f);
+  }
   std::fclose(f);
 }
 
@@ -544,15 +564,20 @@ void Mesher::write(const std::string& prefix) const {
     std::fprintf(ele, "%zu 3 0\n1 2 3\n@@@\n", tris.size() + 7);
   } else {
     std::fprintf(node, "%zu 2 0 0\n", vertex_of_id_.size());
-    for (std::size_t i = 0; i < vertex_of_id_.size(); ++i)
-      std::fprintf(node, "%zu %.17g %.17g\n", i + base, vertex_of_id_[i]->point().x(), vertex_of_id_[i]->point().y());
+    for (std::size_t i = 0; i < vertex_of_id_.size(); ++i) {
+      std::fprintf(node, "%zu ", i + base);
+      write_coordinate(node, vertex_of_id_[i]->point().x(), opt_);
+      std::fputc(' ', node);
+      write_coordinate(node, vertex_of_id_[i]->point().y(), opt_);
+      std::fputc('\n', node);
+    }
     std::fprintf(ele, "%zu 3 0\n", tris.size());
     for (std::size_t t = 0; t < tris.size(); ++t)
       std::fprintf(ele, "%zu %d %d %d\n", t + base, tris[t][0] + base, tris[t][1] + base, tris[t][2] + base);
   }
   std::fclose(node);
   std::fclose(ele);
-  write_trace(prefix + ".trace", steiner_);
+  write_trace(prefix + ".trace", steiner_, opt_);
 }
 
 }  // namespace

@@ -406,7 +406,9 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
         if (named.empty() && !r.deviation.empty()) named.push_back({r.deviation, static_cast<std::size_t>(r.step), 0});
         for (const DeviationLink& d : named) {
           if (r.verdict != Verdict::Failed || s.deviations[d.deviation]++ > 0) continue;
-          s.deviation_first[d.deviation] = fmt::format("step {} of {} at {} degrees", d.first_step, input.name, theta_text(c.theta));
+          s.deviation_first[d.deviation] =
+              d.first_step > 0 ? fmt::format("step {} of {} at {} degrees", d.first_step, input.name, theta_text(c.theta))
+                               : fmt::format("{} at {} degrees", input.name, theta_text(c.theta));  // a certificate's arithmetic
           if (sharded) rep.shard->deviation_first_run[static_cast<std::size_t>(row)][d.deviation] = run_ordinal(c, k);
         }
         if (r.verdict == Verdict::Failed && !r.deviation.empty() && r.consistent_variant) ++s.deviation_consistent[r.deviation];

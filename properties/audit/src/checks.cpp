@@ -2,9 +2,11 @@
 #include "lepp/audit/checks.h"
 
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "lepp/audit/arithmetic.h"
 #include "lepp/audit/conformance.h"
 #include "lepp/audit/diagnosis.h"
 #include "lepp/gen.h"
@@ -35,6 +37,21 @@ void internal_error(CaseResult& c, std::initializer_list<Row> rows, const char* 
     e.internal_error = stage;
     c[r] = std::move(e);
   }
+}
+
+// The program's arithmetic, named first in a conformance failure: from the
+// final mesh, or, where the catalogue names no rule (unknown, precision), from
+// the failing point against the paper's nearest choice.
+void name_arithmetic(ConformanceFailure& f, const ArithmeticEvidence& from_mesh) {
+  ArithmeticEvidence e = from_mesh;
+  if (e.name.empty() && (f.deviation == "unknown" || f.deviation == "precision")) e = step_arithmetic(f);
+  if (e.name.empty()) return;
+  f.deviation = e.name;
+  f.deviation_what = e.what;
+  f.deviation_definition = arithmetic_definition(e.name);
+  f.consistent_variant = false;
+  if (f.chain.empty()) f.chain.push_back({e.name, f.step + 1, 0});
+  else f.chain.front().deviation = e.name;
 }
 
 }  // namespace
@@ -178,6 +195,20 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     decide(Row::MinAngle, {certify::Check::MinAngle});
     decide(Row::Theorem2, {certify::Check::Theorem2});
   }
+  // A program whose output shows its arithmetic (coordinates at floats, too few
+  // digits written): named first, the certificate's gaps are its consequence.
+  // Read only for a failing row: it converts every coordinate to decimal.
+  std::optional<ArithmeticEvidence> read_arithmetic;
+  auto arithmetic_of_mesh = [&]() -> const ArithmeticEvidence& {
+    if (!read_arithmetic) read_arithmetic = mesh_arithmetic(pslg, run.mesh);
+    return *read_arithmetic;
+  };
+  if (c[Row::Certificate].verdict == Verdict::Failed && !arithmetic_of_mesh().name.empty()) {
+    const ArithmeticEvidence& arithmetic = arithmetic_of_mesh();
+    c[Row::Certificate].deviation = arithmetic.name;
+    c[Row::Certificate].detail =
+        fmt::format("{}: {}; what the certifier finds: {}", arithmetic.name, arithmetic.what, c[Row::Certificate].detail);
+  }
   // A program that exited non-zero but left a mesh: its mesh is judged, its status said.
   if (run.exit_code != 0)
     for (Row r : {Row::Certificate, Row::MinAngle, Row::Theorem2})
@@ -196,7 +227,8 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   co.area_centroid = options.area_centroid;
   const bool not_delaunay = certified && !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
   try {
-    const ConformanceReport conf = check_conformance(pslg, *run.trace, co);
+    ConformanceReport conf = check_conformance(pslg, *run.trace, co);
+    if (conf.failure) name_arithmetic(*conf.failure, arithmetic_of_mesh());
     // Theorem 2 on the terminal pair of every replayed step, reported like a conformance finding.
     if (conf.theorem2_failure && c[Row::Theorem2].verdict == Verdict::Held) {
       const Theorem2StepFailure& f = *conf.theorem2_failure;
@@ -242,6 +274,13 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
         r.violations.push_back(std::move(v));
       }
       c[Row::Conformance] = std::move(r);
+    }
+    // Arithmetic the trace shows (not the mesh: that is named above) names the certificate's gaps too.
+    RowResult& cert = c[Row::Certificate];
+    const std::string& conf_name = c[Row::Conformance].deviation;
+    if (cert.verdict == Verdict::Failed && cert.deviation.empty() && arithmetic_definition(conf_name)[0] != '\0') {
+      cert.deviation = conf_name;
+      cert.detail = fmt::format("{} (the trace shows it: conformance row); what the certifier finds: {}", conf_name, cert.detail);
     }
   } catch (const std::exception& e) {
     // Not the program's failure: the replay (or the step's diagnosis) could not decide.

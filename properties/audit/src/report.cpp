@@ -53,6 +53,19 @@ std::vector<DeviationLink> deviations_of(const nlohmann::json& chain) {
 std::string deviations_text(const AuditReport& rep) {
   const RowSummary& r = rep[Row::Conformance];
   std::string md;
+  // The certificate's failures the program's arithmetic explains (arithmetic.h).
+  const RowSummary& cert = rep[Row::Certificate];
+  if (!cert.deviations.empty()) {
+    md += "\nCertificate failures named by the program's arithmetic (its output's coordinates, docs/CONFORMANCE.md \"Arithmetic\"):";
+    bool first = true;
+    for (const auto& [name, runs] : cert.deviations) {
+      auto it = cert.deviation_first.find(name);
+      md += fmt::format("{} {}: {} run{}{}", first ? "" : ";", name, runs, runs == 1 ? "" : "s",
+                        it != cert.deviation_first.end() ? ", first at " + it->second : "");
+      first = false;
+    }
+    md += ".\n";
+  }
   if (rep.area_centroid)
     md += "\nConformance is checked against the declared reading `--centroid area`: the quad centroid is its area "
           "centroid (centre of mass), not the paper's vertex average (A+B+C+D)/4 of Lemma 11.\n";
