@@ -57,11 +57,36 @@ double approx_len2(const T& f, int i) {
 
 // Compares the lengths of edges i and j of f: filtered, exact when needed.
 template <class T>
-CGAL::Comparison_result compare_len(const T& f, int i, int j) {
+CGAL::Comparison_result compare_len_exact(const T& f, int i, int j) {
   double li = approx_len2(f, i), lj = approx_len2(f, j), m = std::max(li, lj);
   if (std::isfinite(li) && std::isfinite(lj) && m > 1e-280 && std::abs(li - lj) > 16 * DBL_EPSILON * m)
     return li < lj ? CGAL::SMALLER : CGAL::LARGER;
   return CGAL::compare(len2(f, i), len2(f, j));
+}
+
+// Deviation::InexactLength: the Lepp's length comparisons count two squared
+// lengths within 8 DBL_EPSILON (relative, exactly) of each other as a tie, the
+// rounding a double computation of dx*dx + dy*dy may make on each side. Set
+// around the searches that allow it (LengthTiesWithinRounding): the Lepp helpers
+// here are free functions shared by the mesh's faces and the cells' triangles.
+thread_local bool length_ties_within_rounding = false;
+
+struct LengthTiesWithinRounding {
+  bool saved = length_ties_within_rounding;
+  explicit LengthTiesWithinRounding(bool on) { length_ties_within_rounding = on; }
+  ~LengthTiesWithinRounding() { length_ties_within_rounding = saved; }
+  LengthTiesWithinRounding(const LengthTiesWithinRounding&) = delete;
+  LengthTiesWithinRounding& operator=(const LengthTiesWithinRounding&) = delete;
+};
+
+// The comparison the Lepp reads: exact, or with near ties (above) as ties. The
+// filter decides only beyond 16 DBL_EPSILON, outside that band.
+template <class T>
+CGAL::Comparison_result compare_len(const T& f, int i, int j) {
+  const CGAL::Comparison_result r = compare_len_exact(f, i, j);
+  if (r == CGAL::EQUAL || !length_ties_within_rounding) return r;
+  const FT a = len2(f, i), b = len2(f, j);
+  return CGAL::abs(a - b) <= FT(8 * DBL_EPSILON) * CGAL::max(a, b) ? CGAL::EQUAL : r;
 }
 
 template <class T>
@@ -102,7 +127,7 @@ int index_off(const T& g, VH a, VH b) {
 bool skinny(const CellTri& t, const FT& sin2) {
   int i = 0;
   for (int k = 1; k < 3; ++k)
-    if (compare_len(t, k, i) == CGAL::SMALLER) i = k;
+    if (compare_len_exact(t, k, i) == CGAL::SMALLER) i = k;
   const CPoint& o = vtx(t, i)->point();
   K::Vector_2 u = vtx(t, Cdt::ccw(i))->point() - o, v = vtx(t, Cdt::cw(i))->point() - o;
   FT cross = u.x() * v.y() - u.y() * v.x();
@@ -626,7 +651,18 @@ struct Replay::Impl {
   // rule from here on). The search of the cells comes first because it is
   // the cheapest: on a lattice box turned by -90 degrees (conformance_bench),
   // 6 ms for the whole trace against 53 ms with the local flips tried first.
+  // match_paper, and where the lengths' near ties are allowed (InexactLength)
+  // and it fails, again with them as ties: such a choice is tagged InexactLength.
   bool match(const Point& p, ReplayChoice& out) {
+    if (match_paper(p, out)) return true;
+    if (!allows(Deviation::InexactLength)) return false;
+    LengthTiesWithinRounding relaxed(true);
+    if (!match_paper(p, out)) return false;
+    out.deviation = Deviation::InexactLength;
+    return true;
+  }
+
+  bool match_paper(const Point& p, ReplayChoice& out) {
     search_exhausted_ = false;
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
     if (match_here(p, out)) return true;
@@ -902,7 +938,7 @@ struct Replay::Impl {
     out.push_back({Rule::QuadCentroid, cc, scale, {}, {}, Deviation::Circumcenter});
     int e = 0;
     for (int k = 1; k < 3; ++k)
-      if (compare_len(f, k, e) == CGAL::SMALLER) e = k;
+      if (compare_len_exact(f, k, e) == CGAL::SMALLER) e = k;
     const CPoint &p = f->vertex(Cdt::ccw(e))->point(), &q = f->vertex(Cdt::cw(e))->point();
     using LD = long double;
     const LD mx = (LD(CGAL::to_double(p.x())) + LD(CGAL::to_double(q.x()))) / 2;
@@ -944,6 +980,9 @@ struct Replay::Impl {
       case Deviation::Circumcenter: return "the circumcenter of bad triangle " + tri_text(w.bad);
       case Deviation::OffCenter: return "the off-center of bad triangle " + tri_text(w.bad);
       case Deviation::GoodTriangle: return "the paper's choice at terminal edge " + edge + " for " + lepp;
+      case Deviation::InexactLength:
+        return "the paper's choice at terminal edge " + edge + " for " + lepp +
+               ", reached by taking a comparison of two edge lengths within double rounding of each other the other way";
       case Deviation::Precision: return "near the paper's choice at terminal edge " + edge + " (" + lepp + "), beyond the tolerance";
       case Deviation::Unknown: break;
     }
@@ -1005,6 +1044,22 @@ struct Replay::Impl {
           c.deviation = Deviation::Precision;
           consider(c, 1000 * tolerance(c.scale), &t, lepp);
         }
+      }
+    }
+    // The paper's choices again, with the lengths' near ties as ties: only when
+    // no rule before it matched (another walk of every Lepp).
+    if (best_rank > static_cast<int>(Deviation::InexactLength)) {
+      LengthTiesWithinRounding relaxed(true);
+      for (FH f : tr.cdt.finite_face_handles()) {
+        if (!in_domain(f) || !maybe_bad(f)) continue;
+        std::vector<FH> path{f};
+        std::vector<std::pair<std::vector<FH>, Terminal>> ends;
+        lepp_ends(f, -1, path, ends, 64);
+        for (const auto& [lepp, t] : ends)
+          for (Candidate c : paper_candidates(t)) {
+            c.deviation = Deviation::InexactLength;
+            consider(c, tolerance(c.scale), &t, lepp);
+          }
       }
     }
     best.what = what(best);
@@ -1069,6 +1124,7 @@ const char* to_string(Deviation d) {
     case Deviation::Circumcenter: return "circumcenter";
     case Deviation::OffCenter: return "off-center";
     case Deviation::GoodTriangle: return "good-triangle";
+    case Deviation::InexactLength: return "inexact-length";
     case Deviation::Precision: return "precision";
     case Deviation::Unknown: return "unknown";
   }
@@ -1096,6 +1152,9 @@ const char* definition(Deviation d) {
     case Deviation::Circumcenter: return "the circumcenter of a bad triangle (Ruppert, Chew)";
     case Deviation::OffCenter: return "the off-center of a bad triangle (Ungor)";
     case Deviation::GoodTriangle: return "the paper's choice for the Lepp of a triangle that is not bad: a wrong threshold";
+    case Deviation::InexactLength:
+      return "the paper's choice for a Lepp reached by taking a length comparison the other way where the exact squared "
+             "lengths differ by no more than a double computation of them may err (8 DBL_EPSILON relative)";
     case Deviation::Precision: return "within 1000 times the point tolerance of a paper choice: rounding beyond the tolerance";
     case Deviation::Unknown: return "no rule of the catalogue";
   }
@@ -1107,7 +1166,7 @@ bool has_variant(Deviation d) {
     case Deviation::AreaCentroid: case Deviation::VertexCentroid: case Deviation::TriangleCentroid:
     case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Ignored:
     case Deviation::Remark10Reversed:
-    case Deviation::OtherSecondLongest: return true;
+    case Deviation::OtherSecondLongest: case Deviation::InexactLength: return true;
     default: return false;
   }
 }

@@ -340,6 +340,40 @@ TEST(AuditArithmetic, NamedFirstOnTheCertificate) {
   EXPECT_NE(cert.at("first").get<std::string>().find("printed-digits (the trace shows it"), std::string::npos) << cert.at("first");
 }
 
+// A program that compares edge lengths as computed in double takes the other Lepp
+// where two lengths differ by 3e-18 on poly2tri's polygon_test_01: under the
+// default reading (exact) its step fails, named inexact-length, pictured and shrunk
+// to an input that shows the same; under --arithmetic double the audit accepts it
+// and counts the steps as notes. The program comparing exactly, and lepp's engine,
+// audit clean under both readings with no note.
+TEST(AuditArithmetic, InexactLengthUnderBothReadings) {
+  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic --method centroid --theta 20,25,30 --max-findings 1";
+  const AuditRun exact = audit("inexact-length-exact", mesher("--bug inexact-length"), args);
+  expect_caught(exact, "inexact-length", "conformance", "", nullptr, false, "inexact-length");
+  EXPECT_EQ(exact.report.value("arithmetic", ""), "exact");
+  const json& conf = row(exact.report, "conformance");
+  EXPECT_EQ(conf.at("deviations").value("inexact-length", 0u), conf.at("failed").get<std::size_t>()) << conf.dump(2);
+
+  const AuditRun dbl = audit("inexact-length-double", mesher("--bug inexact-length"), args + " --arithmetic double");
+  expect_clean(dbl);
+  EXPECT_EQ(dbl.report.value("arithmetic", ""), "double");
+  const json& noted = row(dbl.report, "conformance");
+  EXPECT_EQ(noted.at("inexact_runs").value("inexact-length", 0u), conf.at("failed").get<std::size_t>()) << noted.dump(2);
+  EXPECT_GE(noted.at("inexact_steps").value("inexact-length", 0u), noted.at("inexact_runs").value("inexact-length", 0u));
+
+  const std::string lepp = kLepp + " refine {in} -o {out} --min-angle {theta} --method {method} --trace -q";
+  for (const std::string reading : {"exact", "double"})
+    for (const std::string& program : {mesher(), lepp}) {
+      const AuditRun clean = audit("inexact-clean-" + reading + (program == lepp ? "-lepp" : "-mesher"), program,
+                                   args + " --arithmetic " + reading);
+      expect_clean(clean);
+      EXPECT_TRUE(row(clean.report, "conformance").at("inexact_steps").empty()) << clean.report.dump(2);
+    }
+  const AuditRun own = audit("inexact-clean-own", mesher(), kOwnInputs + " --method centroid --theta 20,25,30 --cases 15 --arithmetic double");
+  expect_clean(own);
+  EXPECT_TRUE(row(own.report, "conformance").at("inexact_steps").empty()) << own.report.dump(2);
+}
+
 // --- each seeded bug is caught by its row and shrunk -----------------------
 
 struct BugCase {

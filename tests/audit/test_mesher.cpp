@@ -77,7 +77,8 @@ enum class Bug {
   no_flips,  // inserts without Delaunay flips (the audit names the non-Delaunay mesh as the likely cause)
   // Arithmetic (docs/CONFORMANCE.md, "Arithmetic"): the coordinates it writes are
   // floats (its vertices held as float), or written with a stream's 6 digits.
-  single_precision, printed_digits
+  single_precision, printed_digits,
+  inexact_length  // squared edge lengths compared as computed in double, not exactly
 };
 
 struct Options {
@@ -107,7 +108,8 @@ Bug parse_bug(const std::string& s) {
       {"terminal-midpoint", Bug::terminal_midpoint}, {"centroid-not-midpoint", Bug::centroid_not_midpoint},
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
       {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips},
-      {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits}};
+      {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits},
+      {"inexact-length", Bug::inexact_length}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -215,6 +217,11 @@ class Mesher {
 bool Mesher::edge_less(Face f, int i, Face g, int j) const {
   const P2 &a = p(f, Cdt::ccw(i)), &b = p(f, Cdt::cw(i)), &c = p(g, Cdt::ccw(j)), &d = p(g, Cdt::cw(j));
   CGAL::Comparison_result r = K().compare_distance_2_object()(a, b, c, d);
+  if (opt_.has(Bug::inexact_length)) {  // the lengths as a double program computes them
+    const double l1 = (a.x() - b.x()) * (a.x() - b.x()) + (a.y() - b.y()) * (a.y() - b.y());
+    const double l2 = (c.x() - d.x()) * (c.x() - d.x()) + (c.y() - d.y()) * (c.y() - d.y());
+    r = l1 < l2 ? CGAL::SMALLER : l1 > l2 ? CGAL::LARGER : CGAL::EQUAL;
+  }
   if (r != CGAL::EQUAL) return r == CGAL::SMALLER;
   P2 lo1 = std::min(a, b), hi1 = std::max(a, b), lo2 = std::min(c, d), hi2 = std::max(c, d);
   // Ties: the edge with the lexicographically larger endpoints counts as longer.

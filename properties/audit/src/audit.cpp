@@ -195,6 +195,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   rep.repeat = opt.repeat;
   rep.points_cache_dir = opt.points_cache_dir;
   rep.area_centroid = opt.checks.area_centroid;
+  rep.arithmetic_double = opt.checks.arithmetic_double;
   for (std::size_t i = 0; i < kRows; ++i) rep.rows[i].row = kAllRows[i];
   const std::size_t jobs = rep.jobs;
 
@@ -396,6 +397,8 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
           case Verdict::NotChecked: ++s.not_checked; break;
           case Verdict::InternalError: ++s.internal_errors; break;
         }
+        // Steps accepted only under --arithmetic double: notes of a held run.
+        for (const auto& [name, steps] : r.inexact_steps) ++s.inexact_runs[name], s.inexact_steps[name] += steps;
         if (r.verdict != Verdict::Failed && r.verdict != Verdict::Finding) continue;
         if (s.first_detail.empty()) {
           s.first_detail = fmt::format("{} at theta {}: {}", input.name, c.theta, r.detail);

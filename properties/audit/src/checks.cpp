@@ -225,6 +225,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   co.angle_tolerance_deg = options.angle_tolerance_deg;
   co.point_tolerance_ulps = options.point_tolerance_ulps;
   co.area_centroid = options.area_centroid;
+  co.arithmetic_double = options.arithmetic_double;
   const bool not_delaunay = certified && !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
   try {
     ConformanceReport conf = check_conformance(pslg, *run.trace, co);
@@ -247,6 +248,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     }
     if (conf.conforms) {
       c[Row::Conformance] = {Verdict::Held, "", {}};
+      c[Row::Conformance].inexact_steps = conf.inexact_steps;
     } else {
       RowResult r;
       r.verdict = Verdict::Failed;
@@ -266,6 +268,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
           r.detail += "; the final mesh is not constrained Delaunay: the program's intermediate meshes probably differ "
                       "from the replay's (missing flips are the likely cause)";
         if (co.area_centroid) r.detail += " [reading: area centroid]";
+        if (co.arithmetic_double) r.detail += " [reading: arithmetic of doubles]";
         r.diagnosis = std::make_shared<StepDiagnosis>(conformance_diagnosis(conf, req.theta, not_delaunay));
         certify::Violation v;
         v.message = describe(conf, 3);

@@ -150,6 +150,8 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   ConformanceReport report;
   report.steps = trace.size();
   report.area_centroid = options.area_centroid;
+  report.arithmetic_double = options.arithmetic_double;
+  if (options.arithmetic_double) replay.allow(reference::Deviation::InexactLength);
   std::unique_ptr<reference::Replay> before;  // the mesh before a step whose insertion failed
   std::size_t centroid_inside = 0;             // ConformanceFailure::remark10_centroid_inside_steps
   for (std::size_t i = 0; i < trace.size(); ++i) {
@@ -179,6 +181,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         replay.insert(p, choice);
         ++report.steps_checked;
         centroid_inside += remark10_centroid(choice);
+        if (choice.deviation == reference::Deviation::InexactLength) ++report.inexact_steps[reference::to_string(choice.deviation)];
         continue;
       } catch (const std::runtime_error& e) {
         reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());
@@ -262,7 +265,12 @@ std::string remark10_ignored_note(const ConformanceFailure& f) {
 }
 
 std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
-  if (r.conforms) return fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
+  if (r.conforms) {
+    std::string s = fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
+    for (const auto& [name, steps] : r.inexact_steps)
+      s += fmt::format("  {} of them only under the double reading (--arithmetic double): {}\n", steps, name);
+    return s;
+  }
   const ConformanceFailure& f = *r.failure;
   std::string s = fmt::format("step {} of {}: point ({:.17g}, {:.17g}): {}\n", f.step, r.steps, f.point.x, f.point.y, f.reason);
   s += fmt::format("deviation: {}: {}", f.deviation, f.deviation_what);
@@ -291,6 +299,7 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
                      r.theorem2_failure->step, r.theorem2_failure->apex, r.theorem2_failure->terminal_edge[0],
                      r.theorem2_failure->terminal_edge[1], r.theorem2_failure->angle_deg);
   if (r.area_centroid) s += "reading declared: the quad centroid is its area centroid (--centroid area)\n";
+  if (r.arithmetic_double) s += "reading declared: the arithmetic of doubles (--arithmetic double)\n";
   if (r.cocircular_search_exhausted)
     s += "note: the search of the cocircular cells' other triangulations gave up (cocircular_search_budget): "
          "the point may be a choice of a constrained Delaunay mesh it did not reach\n";

@@ -69,6 +69,16 @@ std::string deviations_text(const AuditReport& rep) {
   if (rep.area_centroid)
     md += "\nConformance is checked against the declared reading `--centroid area`: the quad centroid is its area "
           "centroid (centre of mass), not the paper's vertex average (A+B+C+D)/4 of Lemma 11.\n";
+  md += rep.arithmetic_double
+            ? "\nArithmetic reading `--arithmetic double`: a step that is the paper's choice once two edge lengths within "
+              "double rounding of each other count as a tie (inexact-length) is accepted, and counted below as a note.\n"
+            : "\nArithmetic reading `exact` (the default; `--arithmetic double` accepts the paper's choice reached through "
+              "lengths within double rounding of a tie).\n";
+  for (const auto& [name, steps] : r.inexact_steps) {
+    const std::size_t runs = r.inexact_runs.count(name) ? r.inexact_runs.at(name) : 0;
+    md += fmt::format("Notes under `--arithmetic double`: {}: {} step{} in {} run{} that conform.\n", name, steps,
+                      steps == 1 ? "" : "s", runs, runs == 1 ? "" : "s");
+  }
   if (r.deviations.empty()) return md;
   md += "\nConformance deviations (every catalogue rule each failing run's trace shows, in runs; docs/CONFORMANCE.md):";
   std::size_t named = 0;
@@ -258,6 +268,8 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"first", r.first_detail},
                     {"deviations", r.deviations},
                     {"deviations_consistent", r.deviation_consistent},
+                    {"inexact_runs", r.inexact_runs},
+                    {"inexact_steps", r.inexact_steps},
                     {"counterexamples", cx}});
   }
   nlohmann::json internal = nlohmann::json::array();
@@ -281,6 +293,7 @@ nlohmann::json json_report(const AuditReport& rep) {
                       {"internal_error_runs", rep.internal_error_runs},
                       {"internal_errors", internal},
                       {"centroid", rep.area_centroid ? "area" : "vertex"},
+                      {"arithmetic", rep.arithmetic_double ? "double" : "exact"},
                       {"points_ratio", ratios},
                       {"order_termination", to_json(rep.order_terminations)},
                       {"run_status", statuses},

@@ -41,10 +41,14 @@ enum class Deviation {
   Circumcenter,         // the bad triangle's circumcenter
   OffCenter,            // the bad triangle's off-center (Ungor)
   GoodTriangle,         // the paper's choice for the Lepp of a triangle that is not bad
+  // The paper's choice for a Lepp reached by taking length comparisons the
+  // other way where the exact squared lengths differ by no more than a double
+  // computation of them may err (8 DBL_EPSILON relative): a double program's ties.
+  InexactLength,
   Precision,            // within 1000 times the tolerance of a paper choice
   Unknown,              // none of these
 };
-constexpr int kDeviations = 13;
+constexpr int kDeviations = 14;
 const char* to_string(Deviation deviation);   // "area-centroid", ..., "unknown"
 const char* definition(Deviation deviation);  // one sentence, as in docs/CONFORMANCE.md
 
@@ -78,8 +82,9 @@ struct ReplayRules {
   // the paper's where it applies; Unknown: the paper's own rules). Used to ask
   // whether every step of a trace fits one deviation: AreaCentroid (the area
   // reading), TriangleCentroid, TerminalMidpoint, CentroidNotMidpoint,
-  // Remark10Ignored and Remark10Reversed have a variant; the others are not a
-  // rule set. Replay::allow adds more, part way through a trace.
+  // Remark10Ignored, Remark10Reversed and InexactLength (the paper's rules with
+  // near ties of lengths as ties) have a variant; the others are not a rule
+  // set. Replay::allow adds more, part way through a trace.
   Deviation variant = Deviation::Unknown;
 };
 

@@ -97,6 +97,9 @@ struct RowSummary {
   std::map<std::string, std::size_t> deviations;
   std::map<std::string, std::string> deviation_first;
   std::map<std::string, std::size_t> deviation_consistent;  // of those, runs whose every traced step fits that one variant
+  // Conformance under --arithmetic double: runs held with steps accepted only
+  // under that reading, and those steps, by name ("inexact-length").
+  std::map<std::string, std::size_t> inexact_runs, inexact_steps;
   bool holds() const { return failed == 0; }
 };
 
@@ -146,6 +149,7 @@ struct AuditReport {
   std::size_t inputs = 0, cases = 0;
   std::array<RowSummary, kRows> rows;
   bool area_centroid = false;                  // conformance checked against the declared area-centroid reading
+  bool arithmetic_double = false;              // conformance checked against the declared arithmetic of doubles
   std::vector<PointsRatio> ratios;
   std::vector<OrderTermination> order_terminations;  // runs ending where lepp's fifo does not, or the reverse
   std::vector<std::string> skipped_inputs;

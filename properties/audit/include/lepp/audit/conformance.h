@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,11 @@ struct ConformanceOptions {
   bool check_variant = true;
   // Theorem 2 on the terminal pair of every replayed step.
   bool theorem2_every_step = true;
+  // The declared reading of the arithmetic (--arithmetic double): a step that is
+  // the paper's choice once near ties of lengths count as ties (inexact-length)
+  // is accepted, counted in ConformanceReport::inexact_steps; false (exact, the
+  // default): such a step fails, named inexact-length.
+  bool arithmetic_double = false;
 };
 
 // One choice the paper allows, as reported for a failing step.
@@ -131,6 +137,9 @@ struct ConformanceReport {
   std::optional<Theorem2StepFailure> theorem2_failure;  // the first step whose terminal pair breaks Theorem 2
   std::size_t theorem2_pairs_checked = 0;               // unconstrained terminal pairs of the replayed steps
   bool area_centroid = false;                           // the reading checked against
+  bool arithmetic_double = false;                       // the arithmetic reading checked against
+  // arithmetic_double: the steps accepted only under it, by name ("inexact-length").
+  std::map<std::string, std::size_t> inexact_steps;
   double seconds = 0;
 };
 
