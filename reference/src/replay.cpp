@@ -265,7 +265,7 @@ struct Replay::Impl {
   template <class T>
   std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l) const {
     std::vector<Candidate> out = paper_candidates(t1, t2, has_t2, l);
-    if (rules.variant != Deviation::Unknown || !allowed_.empty())
+    if (allows_points())
       for (Candidate& c : deviation_points(t1, t2, has_t2, l))
         if (allows(c.deviation)) out.push_back(c);
     return out;
@@ -274,6 +274,12 @@ struct Replay::Impl {
   std::vector<Deviation> allowed_;
   bool allows(Deviation d) const {
     return d == rules.variant || std::find(allowed_.begin(), allowed_.end(), d) != allowed_.end();
+  }
+  // Some allowed variant has points of its own (InexactLength has none: it changes
+  // the length comparisons), so the catalogue's points are worth computing.
+  bool allows_points() const {
+    auto points = [](Deviation d) { return d != Deviation::Unknown && d != Deviation::InexactLength; };
+    return points(rules.variant) || std::any_of(allowed_.begin(), allowed_.end(), points);
   }
 
   // The quad's centroid under the declared reading, and its scale for the
