@@ -257,8 +257,12 @@ TEST(AuditDeclaredReading, MissingFlipsNamedAsTheLikelyCause) {
   for (const json& cx : conf.at("counterexamples")) {
     const std::string md = slurp(fs::path(cx.at("dir").get<std::string>()) / "finding.md");
     named = named || md.find("missing Delaunay flips after an insertion are the likely cause") != std::string::npos;
+    // A name, not only a remark (issue 30): the finding and the row's counts say missing-flips.
+    EXPECT_EQ(cx.value("deviation", ""), "missing-flips") << cx.dump(2);
+    EXPECT_NE(md.find("**Deviation: `missing-flips`**"), std::string::npos) << md;
   }
   EXPECT_TRUE(named) << conf.dump(2);
+  EXPECT_EQ(conf.at("deviations").value("missing-flips", 0u), conf.at("failed").get<std::size_t>()) << conf.dump(2);
 }
 
 // A program with two deviations (issue 30): one audit names both. The row

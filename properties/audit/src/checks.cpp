@@ -39,20 +39,31 @@ void internal_error(CaseResult& c, std::initializer_list<Row> rows, const char* 
   }
 }
 
+// A name the program's output gives a conformance failure before the catalogue's:
+// the replay's meshes are not the program's, so the catalogue judged steps the
+// program took on other meshes.
+void name_first(ConformanceFailure& f, const std::string& name, const std::string& what, const char* definition) {
+  f.deviation = name;
+  f.deviation_what = what;
+  f.deviation_definition = definition;
+  f.consistent_variant = false;
+  if (f.chain.empty()) f.chain.push_back({name, f.step + 1, 0});
+  else f.chain.front().deviation = name;
+}
+
 // The program's arithmetic, named first in a conformance failure: from the
 // final mesh, or, where the catalogue names no rule (unknown, precision), from
 // the failing point against the paper's nearest choice.
 void name_arithmetic(ConformanceFailure& f, const ArithmeticEvidence& from_mesh) {
   ArithmeticEvidence e = from_mesh;
   if (e.name.empty() && (f.deviation == "unknown" || f.deviation == "precision")) e = step_arithmetic(f);
-  if (e.name.empty()) return;
-  f.deviation = e.name;
-  f.deviation_what = e.what;
-  f.deviation_definition = arithmetic_definition(e.name);
-  f.consistent_variant = false;
-  if (f.chain.empty()) f.chain.push_back({e.name, f.step + 1, 0});
-  else f.chain.front().deviation = e.name;
+  if (!e.name.empty()) name_first(f, e.name, e.what, arithmetic_definition(e.name));
 }
+
+constexpr const char* kMissingFlips = "missing-flips";
+constexpr const char* kMissingFlipsDefinition =
+    "the program's final mesh is not constrained Delaunay: it did not flip (always) after an insertion, so its "
+    "intermediate meshes are not the replay's, and its steps after the first missing flip are judged on meshes it never had";
 
 }  // namespace
 
@@ -230,6 +241,14 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   try {
     ConformanceReport conf = check_conformance(pslg, *run.trace, co);
     if (conf.failure) name_arithmetic(*conf.failure, arithmetic_of_mesh());
+    // The final mesh says the program misses flips (the certificate's Delaunay
+    // check): named first, unless its arithmetic explains the mesh already.
+    if (conf.failure && not_delaunay && arithmetic_definition(conf.failure->deviation)[0] == '\0')
+      name_first(*conf.failure, kMissingFlips,
+                 fmt::format("the final mesh is not constrained Delaunay (certificate row); the replay's catalogue named "
+                             "this step {} on its own mesh",
+                             conf.failure->deviation),
+                 kMissingFlipsDefinition);
     // Theorem 2 on the terminal pair of every replayed step, reported like a conformance finding.
     if (conf.theorem2_failure && c[Row::Theorem2].verdict == Verdict::Held) {
       const Theorem2StepFailure& f = *conf.theorem2_failure;
