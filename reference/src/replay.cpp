@@ -657,8 +657,9 @@ struct Replay::Impl {
   // rule from here on). The search of the cells comes first because it is
   // the cheapest: on a lattice box turned by -90 degrees (conformance_bench),
   // 6 ms for the whole trace against 53 ms with the local flips tried first.
-  // match_paper, and where the lengths' near ties are allowed (InexactLength)
-  // and it fails, again with them as ties: such a choice is tagged InexactLength.
+  // That search is match_paper; where the lengths' near ties are allowed
+  // (InexactLength) and it fails, it runs again with them as ties, and a choice
+  // found so is tagged InexactLength.
   bool match(const Point& p, ReplayChoice& out) {
     if (match_paper(p, out)) return true;
     if (!allows(Deviation::InexactLength)) return false;
