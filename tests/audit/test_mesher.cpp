@@ -20,9 +20,10 @@
 // triangle-centroid, no-remark10, shortest-edge, and one per deviation of the
 // audit's catalogue: area-centroid, terminal-midpoint, centroid-not-midpoint,
 // remark10-reversed, remark10-ignored (= no-remark10), other-second-longest,
-// good-triangle; no-flips; and the arithmetic ones, single-precision (every
-// coordinate written is the float nearest the computed double) and
-// printed-digits (written with %g's 6 digits). Each is described at its use.
+// good-triangle; no-flips (named missing-flips); and the arithmetic ones,
+// single-precision (every coordinate written is the float nearest the computed
+// double), printed-digits (written with %g's 6 digits) and inexact-length (edge
+// lengths compared as computed in double). Each is described at its use.
 // --bug may be given more than once: a program with several deviations at once
 // (area-centroid with other-second-longest: two rules for disjoint configurations).
 #include <algorithm>
@@ -74,7 +75,7 @@ enum class Bug {
   triangle_centroid, no_remark10, shortest_edge,
   // The deviation catalogue's rules (docs/CONFORMANCE.md, "Deviations"), one each.
   area_centroid, terminal_midpoint, centroid_not_midpoint, remark10_reversed, other_second_longest, good_triangle,
-  no_flips,  // inserts without Delaunay flips (the audit names the non-Delaunay mesh as the likely cause)
+  no_flips,  // inserts without Delaunay flips (named missing-flips: the final mesh is not Delaunay)
   // Arithmetic (docs/CONFORMANCE.md, "Arithmetic"): the coordinates it writes are
   // floats (its vertices held as float), or written with a stream's 6 digits.
   single_precision, printed_digits,
