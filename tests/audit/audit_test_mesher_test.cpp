@@ -344,6 +344,28 @@ TEST(AuditArithmetic, NamedFirstOnTheCertificate) {
   EXPECT_NE(cert.at("first").get<std::string>().find("printed-digits (the trace shows it"), std::string::npos) << cert.at("first");
 }
 
+// The new names on the paper's problems and on generated inputs (seed 3): every
+// failing conformance run is named by its bug, and for the arithmetic bugs every
+// failing certificate and min-angle run too (its gaps and flattened triangles).
+TEST(AuditArithmetic, NamedOnThePapersProblemsAndGeneratedInputs) {
+  for (const std::string bug : {"single-precision", "printed-digits", "remark10-ignored"})
+    for (const std::string sources : {"paper", "gen --seed 3"}) {
+      const AuditRun r = audit("names-" + bug + "-" + sources.substr(0, 3), mesher("--bug " + bug),
+                               " --sources " + sources + " --method centroid --theta 25,30 --cases 16 --no-shrink");
+      ASSERT_FALSE(r.report.is_discarded()) << r.err;
+      const json& conf = row(r.report, "conformance");
+      EXPECT_GE(conf.at("failed").get<std::size_t>(), 1u) << bug << " on " << sources;
+      EXPECT_EQ(conf.at("deviations").value(bug, 0u), conf.at("failed").get<std::size_t>()) << bug << " on " << sources
+                                                                                            << ": " << conf.dump(2);
+      if (bug == "remark10-ignored") continue;
+      for (const char* key : {"certificate", "min-angle"}) {
+        const json& rw = row(r.report, key);
+        EXPECT_EQ(rw.at("deviations").value(bug, 0u), rw.at("failed").get<std::size_t>()) << bug << " on " << sources << ", "
+                                                                                          << key << ": " << rw.dump(2);
+      }
+    }
+}
+
 // A program that compares edge lengths as computed in double takes the other Lepp
 // where two lengths differ by 3e-18 on poly2tri's polygon_test_01: under the
 // default reading (exact) its step fails, named inexact-length, pictured and shrunk

@@ -214,11 +214,14 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     if (!read_arithmetic) read_arithmetic = mesh_arithmetic(pslg, run.mesh);
     return *read_arithmetic;
   };
-  if (c[Row::Certificate].verdict == Verdict::Failed && !arithmetic_of_mesh().name.empty()) {
+  // The smallest angles too: coordinates rounded after the program computed them
+  // can flatten a small triangle below theta.
+  for (Row row : {Row::Certificate, Row::MinAngle}) {
+    RowResult& r = c[row];
+    if (r.verdict != Verdict::Failed || arithmetic_of_mesh().name.empty()) continue;
     const ArithmeticEvidence& arithmetic = arithmetic_of_mesh();
-    c[Row::Certificate].deviation = arithmetic.name;
-    c[Row::Certificate].detail =
-        fmt::format("{}: {}; what the certifier finds: {}", arithmetic.name, arithmetic.what, c[Row::Certificate].detail);
+    r.deviation = arithmetic.name;
+    r.detail = fmt::format("{}: {}; what the certifier finds: {}", arithmetic.name, arithmetic.what, r.detail);
   }
   // A program that exited non-zero but left a mesh: its mesh is judged, its status said.
   if (run.exit_code != 0)
@@ -297,12 +300,13 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
       }
       c[Row::Conformance] = std::move(r);
     }
-    // Arithmetic the trace shows (not the mesh: that is named above) names the certificate's gaps too.
-    RowResult& cert = c[Row::Certificate];
+    // Arithmetic the trace shows (not the mesh: that is named above) names the certifier's findings too.
     const std::string& conf_name = c[Row::Conformance].deviation;
-    if (cert.verdict == Verdict::Failed && cert.deviation.empty() && arithmetic_definition(conf_name)[0] != '\0') {
-      cert.deviation = conf_name;
-      cert.detail = fmt::format("{} (the trace shows it: conformance row); what the certifier finds: {}", conf_name, cert.detail);
+    for (Row row : {Row::Certificate, Row::MinAngle}) {
+      RowResult& r = c[row];
+      if (r.verdict != Verdict::Failed || !r.deviation.empty() || arithmetic_definition(conf_name)[0] == '\0') continue;
+      r.deviation = conf_name;
+      r.detail = fmt::format("{} (the trace shows it: conformance row); what the certifier finds: {}", conf_name, r.detail);
     }
   } catch (const std::exception& e) {
     // Not the program's failure: the replay (or the step's diagnosis) could not decide.

@@ -53,15 +53,18 @@ std::vector<DeviationLink> deviations_of(const nlohmann::json& chain) {
 std::string deviations_text(const AuditReport& rep) {
   const RowSummary& r = rep[Row::Conformance];
   std::string md;
-  // The certificate's failures the program's arithmetic explains (arithmetic.h).
-  const RowSummary& cert = rep[Row::Certificate];
-  if (!cert.deviations.empty()) {
-    md += "\nCertificate failures named by the program's arithmetic (its output's coordinates, docs/CONFORMANCE.md \"Arithmetic\"):";
+  // The certifier's failures the program's arithmetic explains (arithmetic.h).
+  for (Row row : {Row::Certificate, Row::MinAngle}) {
+    const RowSummary& named = rep[row];
+    if (named.deviations.empty()) continue;
+    md += fmt::format("\n{} failures named by the program's arithmetic (its output's coordinates, docs/CONFORMANCE.md "
+                      "\"Arithmetic\"):",
+                      row == Row::Certificate ? "Certificate" : "Min-angle");
     bool first = true;
-    for (const auto& [name, runs] : cert.deviations) {
-      auto it = cert.deviation_first.find(name);
+    for (const auto& [name, runs] : named.deviations) {
+      auto it = named.deviation_first.find(name);
       md += fmt::format("{} {}: {} run{}{}", first ? "" : ";", name, runs, runs == 1 ? "" : "s",
-                        it != cert.deviation_first.end() ? ", first at " + it->second : "");
+                        it != named.deviation_first.end() ? ", first at " + it->second : "");
       first = false;
     }
     md += ".\n";

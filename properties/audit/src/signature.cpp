@@ -27,7 +27,7 @@ FailureSignature failure_signature(Row row, const Pslg& input, const EngineRun& 
       else s.kind = to_string(run.status);
       break;
     case Row::MinAngle:
-      s.kind = first_reason();
+      s.kind = result.deviation.empty() ? first_reason() : result.deviation + ", " + first_reason();
       s.well_shaped = gen::min_input_angle_deg(input) >= 60;
       break;
     case Row::Theorem2: s.kind = first_reason(); break;
