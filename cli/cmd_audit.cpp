@@ -50,6 +50,7 @@ struct AuditArgs {
   std::size_t memory = 0;
   double angle_tolerance = 1e-3, point_tolerance = 8;
   std::string centroid = "vertex";
+  std::string arithmetic = "exact";
   std::string out = "audit-out";
   std::string junit, json_file;
   bool json = false, no_shrink = false, no_isolate = false;
@@ -180,6 +181,8 @@ int run_audit_command(const AuditArgs& args) {
     o.checks.point_tolerance_ulps = a.point_tolerance;
     o.checks.area_centroid = a.centroid == "area";
     if (o.checks.area_centroid) o.reproduce_prefix += " --centroid area";
+    o.checks.arithmetic_double = a.arithmetic == "double";
+    if (o.checks.arithmetic_double) o.reproduce_prefix += " --arithmetic double";
     o.out_dir = a.out;
     o.shrink = !a.no_shrink;
     o.max_findings_per_row = a.max_findings;
@@ -266,6 +269,11 @@ void add_audit_command(CLI::App& app, int& status) {
                   "(its centre of mass)")
       ->default_val("vertex")
       ->check(CLI::IsMember({"vertex", "area"}));
+  cmd->add_option("--arithmetic", a->arithmetic,
+                  "Conformance: the declared reading of the arithmetic: exact (every comparison exact) or double (the "
+                  "paper's choice reached through two lengths within double rounding of a tie is accepted, as a note)")
+      ->default_val("exact")
+      ->check(CLI::IsMember({"exact", "double"}));
   cmd->add_option("--out", a->out, "Directory of the findings (ROW-N/: input.poly, out.*, finding.svg, reproduce.sh)")->default_val("audit-out");
   cmd->add_option("--junit", a->junit, "Also write the rows as JUnit XML to this file");
   cmd->add_flag("--json", a->json, "Print the report as JSON instead of markdown");

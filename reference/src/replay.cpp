@@ -57,11 +57,36 @@ double approx_len2(const T& f, int i) {
 
 // Compares the lengths of edges i and j of f: filtered, exact when needed.
 template <class T>
-CGAL::Comparison_result compare_len(const T& f, int i, int j) {
+CGAL::Comparison_result compare_len_exact(const T& f, int i, int j) {
   double li = approx_len2(f, i), lj = approx_len2(f, j), m = std::max(li, lj);
   if (std::isfinite(li) && std::isfinite(lj) && m > 1e-280 && std::abs(li - lj) > 16 * DBL_EPSILON * m)
     return li < lj ? CGAL::SMALLER : CGAL::LARGER;
   return CGAL::compare(len2(f, i), len2(f, j));
+}
+
+// Deviation::InexactLength: the Lepp's length comparisons count two squared
+// lengths within 8 DBL_EPSILON (relative, exactly) of each other as a tie, the
+// rounding a double computation of dx*dx + dy*dy may make on each side. Set
+// around the searches that allow it (LengthTiesWithinRounding): the Lepp helpers
+// here are free functions shared by the mesh's faces and the cells' triangles.
+thread_local bool length_ties_within_rounding = false;
+
+struct LengthTiesWithinRounding {
+  bool saved = length_ties_within_rounding;
+  explicit LengthTiesWithinRounding(bool on) { length_ties_within_rounding = on; }
+  ~LengthTiesWithinRounding() { length_ties_within_rounding = saved; }
+  LengthTiesWithinRounding(const LengthTiesWithinRounding&) = delete;
+  LengthTiesWithinRounding& operator=(const LengthTiesWithinRounding&) = delete;
+};
+
+// The comparison the Lepp reads: exact, or with near ties (above) as ties. The
+// filter decides only beyond 16 DBL_EPSILON, outside that band.
+template <class T>
+CGAL::Comparison_result compare_len(const T& f, int i, int j) {
+  const CGAL::Comparison_result r = compare_len_exact(f, i, j);
+  if (r == CGAL::EQUAL || !length_ties_within_rounding) return r;
+  const FT a = len2(f, i), b = len2(f, j);
+  return CGAL::abs(a - b) <= FT(8 * DBL_EPSILON) * CGAL::max(a, b) ? CGAL::EQUAL : r;
 }
 
 template <class T>
@@ -102,7 +127,7 @@ int index_off(const T& g, VH a, VH b) {
 bool skinny(const CellTri& t, const FT& sin2) {
   int i = 0;
   for (int k = 1; k < 3; ++k)
-    if (compare_len(t, k, i) == CGAL::SMALLER) i = k;
+    if (compare_len_exact(t, k, i) == CGAL::SMALLER) i = k;
   const CPoint& o = vtx(t, i)->point();
   K::Vector_2 u = vtx(t, Cdt::ccw(i))->point() - o, v = vtx(t, Cdt::cw(i))->point() - o;
   FT cross = u.x() * v.y() - u.y() * v.x();
@@ -240,10 +265,21 @@ struct Replay::Impl {
   template <class T>
   std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l) const {
     std::vector<Candidate> out = paper_candidates(t1, t2, has_t2, l);
-    if (rules.variant != Deviation::Unknown)
+    if (allows_points())
       for (Candidate& c : deviation_points(t1, t2, has_t2, l))
-        if (c.deviation == rules.variant) out.push_back(c);
+        if (allows(c.deviation)) out.push_back(c);
     return out;
+  }
+  // The variants whose points are choices too (ReplayRules::variant, allow()).
+  std::vector<Deviation> allowed_;
+  bool allows(Deviation d) const {
+    return d == rules.variant || std::find(allowed_.begin(), allowed_.end(), d) != allowed_.end();
+  }
+  // Some allowed variant has points of its own (InexactLength has none: it changes
+  // the length comparisons), so the catalogue's points are worth computing.
+  bool allows_points() const {
+    auto points = [](Deviation d) { return d != Deviation::Unknown && d != Deviation::InexactLength; };
+    return points(rules.variant) || std::any_of(allowed_.begin(), allowed_.end(), points);
   }
 
   // The quad's centroid under the declared reading, and its scale for the
@@ -318,7 +354,9 @@ struct Replay::Impl {
           const T& star = c1 ? t1 : t2;
           const T& other = c1 ? t2 : t1;
           int inside = inside_status(other, g->point, tolerance(g->scale));
-          if (inside < 0) add(Deviation::Remark10Reversed, *g);  // the paper: the midpoint only
+          // The paper: the midpoint only. Both programs take the centroid here;
+          // Remark10Ignored ranks first, the trace tells them apart (conformance.cpp).
+          if (inside < 0) add(Deviation::Remark10Ignored, *g), add(Deviation::Remark10Reversed, *g);
           if (inside > 0) add(Deviation::Remark10Reversed, midpoint(Rule::SecondLongestMidpoint, star, c1 ? s1 : s2));
         }
       }
@@ -619,7 +657,19 @@ struct Replay::Impl {
   // rule from here on). The search of the cells comes first because it is
   // the cheapest: on a lattice box turned by -90 degrees (conformance_bench),
   // 6 ms for the whole trace against 53 ms with the local flips tried first.
+  // That search is match_paper; where the lengths' near ties are allowed
+  // (InexactLength) and it fails, it runs again with them as ties, and a choice
+  // found so is tagged InexactLength.
   bool match(const Point& p, ReplayChoice& out) {
+    if (match_paper(p, out)) return true;
+    if (!allows(Deviation::InexactLength)) return false;
+    LengthTiesWithinRounding relaxed(true);
+    if (!match_paper(p, out)) return false;
+    out.deviation = Deviation::InexactLength;
+    return true;
+  }
+
+  bool match_paper(const Point& p, ReplayChoice& out) {
     search_exhausted_ = false;
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
     if (match_here(p, out)) return true;
@@ -895,7 +945,7 @@ struct Replay::Impl {
     out.push_back({Rule::QuadCentroid, cc, scale, {}, {}, Deviation::Circumcenter});
     int e = 0;
     for (int k = 1; k < 3; ++k)
-      if (compare_len(f, k, e) == CGAL::SMALLER) e = k;
+      if (compare_len_exact(f, k, e) == CGAL::SMALLER) e = k;
     const CPoint &p = f->vertex(Cdt::ccw(e))->point(), &q = f->vertex(Cdt::cw(e))->point();
     using LD = long double;
     const LD mx = (LD(CGAL::to_double(p.x())) + LD(CGAL::to_double(q.x()))) / 2;
@@ -927,6 +977,9 @@ struct Replay::Impl {
       case Deviation::TriangleCentroid: return "the centroid of one terminal triangle of edge " + edge + " (" + lepp + ")";
       case Deviation::TerminalMidpoint: return "the midpoint of terminal edge " + edge + " (" + lepp + ")";
       case Deviation::CentroidNotMidpoint: return "the quad centroid at terminal edge " + edge + ", where the paper asks for a midpoint (" + lepp + ")";
+      case Deviation::Remark10Ignored:
+        return "the quad centroid at terminal edge " + edge + ", outside the triangle across from the constrained second-longest "
+               "edge, where Remark 10 asks for that edge's midpoint (" + lepp + ")";
       case Deviation::Remark10Reversed: return "Remark 10 the wrong way round at terminal edge " + edge + " (" + lepp + ")";
       case Deviation::OtherSecondLongest:
         return "the midpoint of another edge of a terminal triangle of edge " + edge +
@@ -934,6 +987,9 @@ struct Replay::Impl {
       case Deviation::Circumcenter: return "the circumcenter of bad triangle " + tri_text(w.bad);
       case Deviation::OffCenter: return "the off-center of bad triangle " + tri_text(w.bad);
       case Deviation::GoodTriangle: return "the paper's choice at terminal edge " + edge + " for " + lepp;
+      case Deviation::InexactLength:
+        return "the paper's choice at terminal edge " + edge + " for " + lepp +
+               ", reached by taking a comparison of two edge lengths within double rounding of each other the other way";
       case Deviation::Precision: return "near the paper's choice at terminal edge " + edge + " (" + lepp + "), beyond the tolerance";
       case Deviation::Unknown: break;
     }
@@ -997,6 +1053,22 @@ struct Replay::Impl {
         }
       }
     }
+    // The paper's choices again, with the lengths' near ties as ties: only when
+    // no rule before it matched (another walk of every Lepp).
+    if (best_rank > static_cast<int>(Deviation::InexactLength)) {
+      LengthTiesWithinRounding relaxed(true);
+      for (FH f : tr.cdt.finite_face_handles()) {
+        if (!in_domain(f) || !maybe_bad(f)) continue;
+        std::vector<FH> path{f};
+        std::vector<std::pair<std::vector<FH>, Terminal>> ends;
+        lepp_ends(f, -1, path, ends, 64);
+        for (const auto& [lepp, t] : ends)
+          for (Candidate c : paper_candidates(t)) {
+            c.deviation = Deviation::InexactLength;
+            consider(c, tolerance(c.scale), &t, lepp);
+          }
+      }
+    }
     best.what = what(best);
     return best;
   }
@@ -1053,11 +1125,13 @@ const char* to_string(Deviation d) {
     case Deviation::TriangleCentroid: return "triangle-centroid";
     case Deviation::TerminalMidpoint: return "terminal-midpoint";
     case Deviation::CentroidNotMidpoint: return "centroid-not-midpoint";
+    case Deviation::Remark10Ignored: return "remark10-ignored";
     case Deviation::Remark10Reversed: return "remark10-reversed";
     case Deviation::OtherSecondLongest: return "other-second-longest";
     case Deviation::Circumcenter: return "circumcenter";
     case Deviation::OffCenter: return "off-center";
     case Deviation::GoodTriangle: return "good-triangle";
+    case Deviation::InexactLength: return "inexact-length";
     case Deviation::Precision: return "precision";
     case Deviation::Unknown: return "unknown";
   }
@@ -1074,6 +1148,9 @@ const char* definition(Deviation d) {
     case Deviation::TerminalMidpoint: return "the terminal edge's midpoint where the paper chooses another point";
     case Deviation::CentroidNotMidpoint:
       return "the quad centroid where the paper asks for a midpoint (both second-longest edges constrained, or the midpoint method)";
+    case Deviation::Remark10Ignored:
+      return "no Remark 10: the quad centroid wherever exactly one second-longest edge is constrained, also where it is not "
+             "inside the other triangle (the paper: the constrained edge's midpoint there)";
     case Deviation::Remark10Reversed:
       return "Remark 10 the wrong way round: the centroid where it is not inside the other triangle, or the constrained "
              "second-longest edge's midpoint where it is";
@@ -1082,6 +1159,9 @@ const char* definition(Deviation d) {
     case Deviation::Circumcenter: return "the circumcenter of a bad triangle (Ruppert, Chew)";
     case Deviation::OffCenter: return "the off-center of a bad triangle (Ungor)";
     case Deviation::GoodTriangle: return "the paper's choice for the Lepp of a triangle that is not bad: a wrong threshold";
+    case Deviation::InexactLength:
+      return "the paper's choice for a Lepp reached by taking a length comparison the other way where the exact squared "
+             "lengths differ by no more than a double computation of them may err (8 DBL_EPSILON relative)";
     case Deviation::Precision: return "within 1000 times the point tolerance of a paper choice: rounding beyond the tolerance";
     case Deviation::Unknown: return "no rule of the catalogue";
   }
@@ -1091,8 +1171,9 @@ const char* definition(Deviation d) {
 bool has_variant(Deviation d) {
   switch (d) {
     case Deviation::AreaCentroid: case Deviation::VertexCentroid: case Deviation::TriangleCentroid:
-    case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Reversed:
-    case Deviation::OtherSecondLongest: return true;
+    case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Ignored:
+    case Deviation::Remark10Reversed:
+    case Deviation::OtherSecondLongest: case Deviation::InexactLength: return true;
     default: return false;
   }
 }
@@ -1101,6 +1182,9 @@ Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_uni
 Replay::~Replay() = default;
 bool Replay::match(const Point& p, ReplayChoice& choice) { return impl_->match(p, choice); }
 void Replay::insert(const Point& p, const ReplayChoice& choice) { impl_->insert(p, choice); }
+void Replay::allow(Deviation variant) {
+  if (has_variant(variant) && !impl_->allows(variant)) impl_->allowed_.push_back(variant);
+}
 std::vector<ReplayChoice> Replay::all_choices(const Point& p, std::size_t limit, std::size_t& total) {
   return impl_->all_choices(p, limit, total);
 }

@@ -4,7 +4,7 @@
 // program under audit in tests/audit: it never calls lepp's engines. Only lepp's
 // .poly reader and input validation are borrowed (file syntax, not the algorithm).
 //
-//   lepp_test_mesher IN.poly OUTPREFIX THETA METHOD [--bug NAME] [--zero-based]
+//   lepp_test_mesher IN.poly OUTPREFIX THETA METHOD [--bug NAME]... [--zero-based]
 //
 // Writes OUTPREFIX.node, OUTPREFIX.ele (Triangle's formats, 1-based unless
 // --zero-based) and OUTPREFIX.trace (one "x y" line per Steiner point, %.17g).
@@ -19,7 +19,13 @@
 // Seeded bugs (--bug): non-delaunay, drop-segment, skinny, loop, crash, garbage,
 // triangle-centroid, no-remark10, shortest-edge, and one per deviation of the
 // audit's catalogue: area-centroid, terminal-midpoint, centroid-not-midpoint,
-// remark10-reversed, other-second-longest, good-triangle; and no-flips. Each is described at its use.
+// remark10-reversed, remark10-ignored (= no-remark10), other-second-longest,
+// good-triangle; no-flips (named missing-flips); and the arithmetic ones,
+// single-precision (every coordinate written is the float nearest the computed
+// double), printed-digits (written with %g's 6 digits) and inexact-length (edge
+// lengths compared as computed in double). Each is described at its use.
+// --bug may be given more than once: a program with several deviations at once
+// (area-centroid with other-second-longest: two rules for disjoint configurations).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -69,15 +75,20 @@ enum class Bug {
   triangle_centroid, no_remark10, shortest_edge,
   // The deviation catalogue's rules (docs/CONFORMANCE.md, "Deviations"), one each.
   area_centroid, terminal_midpoint, centroid_not_midpoint, remark10_reversed, other_second_longest, good_triangle,
-  no_flips  // inserts without Delaunay flips (the audit names the non-Delaunay mesh as the likely cause)
+  no_flips,  // inserts without Delaunay flips (named missing-flips: the final mesh is not Delaunay)
+  // Arithmetic (docs/CONFORMANCE.md, "Arithmetic"): the coordinates it writes are
+  // floats (its vertices held as float), or written with a stream's 6 digits.
+  single_precision, printed_digits,
+  inexact_length  // squared edge lengths compared as computed in double, not exactly
 };
 
 struct Options {
   std::string in, out;
   double theta = 0;
   bool centroid = true;
-  Bug bug = Bug::none;
+  std::set<Bug> bugs;  // --bug, given once per bug: two deviations at once
   bool zero_based = false;
+  bool has(Bug b) const { return bugs.count(b) > 0; }
 };
 
 [[noreturn]] void usage(const std::string& why) {
@@ -93,10 +104,13 @@ Bug parse_bug(const std::string& s) {
       {"none", Bug::none}, {"non-delaunay", Bug::non_delaunay}, {"drop-segment", Bug::drop_segment},
       {"skinny", Bug::skinny}, {"loop", Bug::loop}, {"crash", Bug::crash}, {"garbage", Bug::garbage},
       {"triangle-centroid", Bug::triangle_centroid}, {"no-remark10", Bug::no_remark10},
+      {"remark10-ignored", Bug::no_remark10},  // the same bug, by the name the audit gives it
       {"shortest-edge", Bug::shortest_edge}, {"area-centroid", Bug::area_centroid},
       {"terminal-midpoint", Bug::terminal_midpoint}, {"centroid-not-midpoint", Bug::centroid_not_midpoint},
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
-      {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips}};
+      {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips},
+      {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits},
+      {"inexact-length", Bug::inexact_length}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -109,7 +123,7 @@ Options parse(int argc, char** argv) {
     std::string a = argv[i];
     if (a == "--bug") {
       if (i + 1 >= argc) usage("--bug needs a name");
-      o.bug = parse_bug(argv[++i]);
+      o.bugs.insert(parse_bug(argv[++i]));
     } else if (a == "--zero-based") {
       o.zero_based = true;
     } else {
@@ -181,7 +195,7 @@ class Mesher {
   std::array<int, 3> edges_sorted(Face f) const;
   // The good-triangle bug: a threshold 3 degrees too high.
   bool bad(Face f) const {
-    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + (opt_.bug == Bug::good_triangle ? 3 : 1e-9);
+    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + (opt_.has(Bug::good_triangle) ? 3 : 1e-9);
   }
   bool skipped(Face f) const;  // small input angle: left as it is
   const P2& p(Face f, int i) const { return f->vertex(i)->point(); }
@@ -204,6 +218,11 @@ class Mesher {
 bool Mesher::edge_less(Face f, int i, Face g, int j) const {
   const P2 &a = p(f, Cdt::ccw(i)), &b = p(f, Cdt::cw(i)), &c = p(g, Cdt::ccw(j)), &d = p(g, Cdt::cw(j));
   CGAL::Comparison_result r = K().compare_distance_2_object()(a, b, c, d);
+  if (opt_.has(Bug::inexact_length)) {  // the lengths as a double program computes them
+    const double l1 = (a.x() - b.x()) * (a.x() - b.x()) + (a.y() - b.y()) * (a.y() - b.y());
+    const double l2 = (c.x() - d.x()) * (c.x() - d.x()) + (c.y() - d.y()) * (c.y() - d.y());
+    r = l1 < l2 ? CGAL::SMALLER : l1 > l2 ? CGAL::LARGER : CGAL::EQUAL;
+  }
   if (r != CGAL::EQUAL) return r == CGAL::SMALLER;
   P2 lo1 = std::min(a, b), hi1 = std::max(a, b), lo2 = std::min(c, d), hi2 = std::max(c, d);
   // Ties: the edge with the lexicographically larger endpoints counts as longer.
@@ -337,7 +356,7 @@ Vertex Mesher::insert_point(const P2& q, Face hint) {
     return Vertex();
   if (lt == Cdt::EDGE && loc->is_constrained(li)) return Vertex();
   // The no-flips bug: the plain constrained triangulation's insertion, no Delaunay flips after it.
-  Vertex v = opt_.bug == Bug::no_flips ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
+  Vertex v = opt_.has(Bug::no_flips) ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
   v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
   steiner_.push_back(q);
   vertex_of_id_.push_back(v);
@@ -353,7 +372,7 @@ bool Mesher::process(Face f) {
   // The Lepp: follow longest edges (the shortest-edge bug follows shortest ones).
   auto lepp_edge = [&](Face t) {
     std::array<int, 3> e = edges_sorted(t);
-    return opt_.bug == Bug::shortest_edge ? e[0] : e[2];
+    return opt_.has(Bug::shortest_edge) ? e[0] : e[2];
   };
   Face t1 = f, t2;
   int l = lepp_edge(t1);
@@ -378,7 +397,7 @@ bool Mesher::process(Face f) {
     bool c1 = blocked(t1, s1), c2 = blocked(t2, s2);
     const P2 &A = p(t1, Cdt::ccw(l)), &B = p(t1, Cdt::cw(l)), &C = p(t1, l), &D = p(t2, l2);
     P2 quad((A.x() + B.x() + C.x() + D.x()) / 4, (A.y() + B.y() + C.y() + D.y()) / 4);
-    if (opt_.bug == Bug::area_centroid) {
+    if (opt_.has(Bug::area_centroid)) {
       // The quad's centre of mass: the triangles' centroids weighted by their areas.
       double w1 = std::fabs((B.x() - A.x()) * (C.y() - A.y()) - (B.y() - A.y()) * (C.x() - A.x()));
       double w2 = std::fabs((B.x() - A.x()) * (D.y() - A.y()) - (B.y() - A.y()) * (D.x() - A.x()));
@@ -389,17 +408,17 @@ bool Mesher::process(Face f) {
       // Select Point: midpoint of l, or of the first constrained second-longest edge.
       if (c1) v = split_constrained(t1, s1);
       else if (c2) v = split_constrained(t2, s2);
-      else if (opt_.bug == Bug::centroid_not_midpoint) v = insert_point(quad, t1);  // the centroid in the midpoint method
+      else if (opt_.has(Bug::centroid_not_midpoint)) v = insert_point(quad, t1);  // the centroid in the midpoint method
       else v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
     } else if (!c1 && !c2) {
-      if (opt_.bug == Bug::triangle_centroid)  // the terminal triangle's centroid, not the quad's
+      if (opt_.has(Bug::triangle_centroid))  // the terminal triangle's centroid, not the quad's
         v = insert_point(P2((A.x() + B.x() + C.x()) / 3, (A.y() + B.y() + C.y()) / 3), t1);
-      else if (opt_.bug == Bug::terminal_midpoint)  // Lepp-midpoint's point in the centroid method
+      else if (opt_.has(Bug::terminal_midpoint))  // Lepp-midpoint's point in the centroid method
         v = insert_point(P2((A.x() + B.x()) / 2, (A.y() + B.y()) / 2), t1);
       else
         v = insert_point(quad, t1);
     } else if (c1 && c2) {
-      if (opt_.bug == Bug::centroid_not_midpoint) v = insert_point(quad, t1);  // the centroid where a midpoint is asked for
+      if (opt_.has(Bug::centroid_not_midpoint)) v = insert_point(quad, t1);  // the centroid where a midpoint is asked for
       else v = split_constrained(t2, s2);  // "a constrained second longest edge": t2's
     } else {
       // Remark 10: the centroid if it lies strictly inside the other triangle,
@@ -409,10 +428,10 @@ bool Mesher::process(Face f) {
       bool inside = true;
       for (int i = 0; i < 3; ++i)
         if (CGAL::orientation(p(other, Cdt::ccw(i)), p(other, Cdt::cw(i)), quad) != CGAL::LEFT_TURN) inside = false;
-      if (opt_.bug == Bug::remark10_reversed) inside = !inside;  // the centroid when it lies in t*, the midpoint otherwise
-      if (inside || opt_.bug == Bug::no_remark10) {
+      if (opt_.has(Bug::remark10_reversed)) inside = !inside;  // the centroid when it lies in t*, the midpoint otherwise
+      if (inside || opt_.has(Bug::no_remark10)) {
         v = insert_point(quad, other);
-      } else if (opt_.bug == Bug::other_second_longest) {
+      } else if (opt_.has(Bug::other_second_longest)) {
         // The wrong second-longest edge: the other triangle's, not t*'s constrained one.
         int lo = c1 ? s2 : s1;
         const P2 &U = p(other, Cdt::ccw(lo)), &W = p(other, Cdt::cw(lo));
@@ -423,7 +442,7 @@ bool Mesher::process(Face f) {
     }
   }
   if (v == Vertex()) return false;
-  if (opt_.bug == Bug::crash && steiner_.size() >= 2) std::raise(SIGSEGV);  // dies mid-run
+  if (opt_.has(Bug::crash) && steiner_.size() >= 2) std::raise(SIGSEGV);  // dies mid-run
   return true;
 }
 
@@ -435,7 +454,7 @@ void Mesher::collect_bad(std::vector<std::array<int, 3>>& stack) const {
 int Mesher::run(long max_insertions) {
   build();
   mark_domain();
-  if (opt_.bug == Bug::drop_segment) {
+  if (opt_.has(Bug::drop_segment)) {
     // Forgets the constraint of one interior segment once the domain is known.
     for (auto e = cdt_.finite_edges_begin(); e != cdt_.finite_edges_end(); ++e) {
       Face f = e->first;
@@ -490,11 +509,24 @@ int Mesher::run(long max_insertions) {
   return 0;
 }
 
-void write_trace(const std::string& path, const std::vector<P2>& pts) {
+// One coordinate as written: %.17g, or through the arithmetic bugs (a float
+// held where a double was computed, or a stream's default 6 digits).
+void write_coordinate(FILE* f, double x, const Options& opt) {
+  if (opt.has(Bug::printed_digits)) std::fprintf(f, "%g", x);
+  else if (opt.has(Bug::single_precision)) std::fprintf(f, "%.17g", static_cast<double>(static_cast<float>(x)));
+  else std::fprintf(f, "%.17g", x);
+}
+
+void write_trace(const std::string& path, const std::vector<P2>& pts, const Options& opt) {
   FILE* f = std::fopen(path.c_str(), "w");
   if (!f) return;
   std::fprintf(f, "# lepp_test_mesher: Steiner points in insertion order\n");
-  for (const P2& q : pts) std::fprintf(f, "%.17g %.17g\n", q.x(), q.y());
+  for (const P2& q : pts) {
+    write_coordinate(f, q.x(), opt);
+    std::fputc(' ', f);
+    write_coordinate(f, q.y(), opt);
+    std::fputc('\n', f);
+  }
   std::fclose(f);
 }
 
@@ -508,7 +540,7 @@ void Mesher::write(const std::string& prefix) const {
     for (int i = 0; i < 3; ++i)
       if (f->is_constrained(i)) constrained.insert(key(id(f->vertex(Cdt::ccw(i))), id(f->vertex(Cdt::cw(i)))));
   }
-  if (opt_.bug == Bug::non_delaunay) {
+  if (opt_.has(Bug::non_delaunay)) {
     // Flips one unconstrained edge whose quad is strictly convex and not cocircular:
     // the new edge is not Delaunay.
     std::map<std::pair<int, int>, std::pair<int, int>> owner;  // directed edge -> (triangle, apex)
@@ -535,20 +567,25 @@ void Mesher::write(const std::string& prefix) const {
     std::fprintf(stderr, "lepp_test_mesher: cannot write %s.node/.ele\n", prefix.c_str());
     std::exit(1);
   }
-  if (opt_.bug == Bug::garbage) {
+  if (opt_.has(Bug::garbage)) {
     std::fprintf(node, "this is not a node file\n");
     std::fprintf(ele, "%zu 3 0\n1 2 3\n@@@\n", tris.size() + 7);
   } else {
     std::fprintf(node, "%zu 2 0 0\n", vertex_of_id_.size());
-    for (std::size_t i = 0; i < vertex_of_id_.size(); ++i)
-      std::fprintf(node, "%zu %.17g %.17g\n", i + base, vertex_of_id_[i]->point().x(), vertex_of_id_[i]->point().y());
+    for (std::size_t i = 0; i < vertex_of_id_.size(); ++i) {
+      std::fprintf(node, "%zu ", i + base);
+      write_coordinate(node, vertex_of_id_[i]->point().x(), opt_);
+      std::fputc(' ', node);
+      write_coordinate(node, vertex_of_id_[i]->point().y(), opt_);
+      std::fputc('\n', node);
+    }
     std::fprintf(ele, "%zu 3 0\n", tris.size());
     for (std::size_t t = 0; t < tris.size(); ++t)
       std::fprintf(ele, "%zu %d %d %d\n", t + base, tris[t][0] + base, tris[t][1] + base, tris[t][2] + base);
   }
   std::fclose(node);
   std::fclose(ele);
-  write_trace(prefix + ".trace", steiner_);
+  write_trace(prefix + ".trace", steiner_, opt_);
 }
 
 }  // namespace
@@ -564,7 +601,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   int status;
-  if (opt.bug == Bug::skinny) {
+  if (opt.has(Bug::skinny)) {
     // Stops one insertion early: the triangle the last point was for stays bad.
     long total;
     {
@@ -578,7 +615,7 @@ int main(int argc, char** argv) {
   } else {
     Mesher m(pslg, opt);
     status = m.run(1L << 62);
-    if (opt.bug == Bug::loop && m.insertions() > 0)
+    if (opt.has(Bug::loop) && m.insertions() > 0)
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // never ends
     m.write(opt.out);
   }

@@ -14,6 +14,7 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,17 @@ std::vector<Case> cases(std::vector<double> thetas = {20, 25, 30}, const std::st
         if (m == lepp::Method::Centroid || t <= 22) out.push_back({f, t, m});
   return out;
 }
+
+// The paper's four problems (corpus/paper), centroid at 20, 25 and 30 degrees:
+// large enough for a program's two deviations to meet in one trace.
+std::vector<Case> paper_cases() {
+  std::vector<Case> out;
+  for (const Case& c : cases({20, 25, 30}, LEPP_PAPER_INPUTS))
+    if (c.method == lepp::Method::Centroid) out.push_back(c);
+  return out;
+}
+
+std::string fmt_step(const lepp::audit::DeviationLink& l) { return l.deviation + " from step " + std::to_string(l.first_step); }
 
 std::string name(const Case& c) {
   return fs::path(c.input).filename().string() + " theta " + std::to_string(c.theta) +
@@ -166,7 +178,7 @@ class DeviationNamed : public ::testing::TestWithParam<DeviationBug> {};
 
 TEST_P(DeviationNamed, EveryFailureNamed) {
   const DeviationBug& d = GetParam();
-  std::size_t failed = 0, consistent = 0;
+  std::size_t failed = 0, consistent = 0, undecided_remark10 = 0;
   for (const Case& c : cases()) {
     if (c.method != lepp::Method::Centroid) continue;
     const MesherRun r = run_mesher(c, "--bug " + d.bug);
@@ -175,7 +187,24 @@ TEST_P(DeviationNamed, EveryFailureNamed) {
     if (conf.conforms) continue;
     ++failed;
     ASSERT_TRUE(conf.failure);
+    // A Remark 10 reversed program whose trace never has the centroid inside the
+    // other triangle shows only points an ignoring one takes too: named
+    // remark10-ignored, and said that remark10-reversed fits as well.
+    if (d.deviation == "remark10-reversed" && conf.failure->deviation == "remark10-ignored" &&
+        conf.failure->remark10_centroid_inside_steps == 0) {
+      ++undecided_remark10;
+      EXPECT_NE(lepp::audit::describe(conf).find("remark10-reversed fits the trace as well"), std::string::npos);
+      continue;
+    }
     EXPECT_EQ(conf.failure->deviation, d.deviation) << name(c) << "\n" << lepp::audit::describe(conf);
+    // One bug, one name: the continued replay finds no second deviation.
+    ASSERT_FALSE(conf.failure->chain.empty()) << name(c);
+    EXPECT_EQ(conf.failure->chain.front().deviation, conf.failure->deviation) << name(c);
+    if (conf.failure->consistent_variant) {
+      EXPECT_EQ(conf.failure->chain.size(), 1u) << name(c) << "\n" << lepp::audit::describe(conf);
+      EXPECT_TRUE(conf.failure->chain_complete) << name(c);
+      EXPECT_EQ(conf.failure->chain.front().steps, conf.failure->variant_steps) << name(c);
+    }
     EXPECT_FALSE(conf.failure->mesh.triangles.empty()) << name(c);
     if (conf.failure->deviation == d.deviation) {
       ASSERT_TRUE(conf.failure->deviation_at) << name(c);
@@ -185,6 +214,7 @@ TEST_P(DeviationNamed, EveryFailureNamed) {
     consistent += conf.failure->consistent_variant;
   }
   EXPECT_GT(failed, 0u) << "--bug " << d.bug << " never caught";
+  EXPECT_LT(undecided_remark10, failed) << "--bug " << d.bug << ": no run named " << d.deviation;
   if (d.deviation != "good-triangle") EXPECT_GT(consistent, 0u) << "--bug " << d.bug << ": no run fits one variant";
   std::cout << "--bug " << d.bug << ": " << failed << " failing runs named " << d.deviation << ", " << consistent
             << " fit one consistent variant\n";
@@ -196,7 +226,7 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, DeviationNamed,
                                            DeviationBug{"terminal-midpoint", "terminal-midpoint"},
                                            DeviationBug{"centroid-not-midpoint", "centroid-not-midpoint"},
                                            DeviationBug{"remark10-reversed", "remark10-reversed"},
-                                           DeviationBug{"no-remark10", "remark10-reversed"},
+                                           DeviationBug{"no-remark10", "remark10-ignored"},
                                            DeviationBug{"other-second-longest", "other-second-longest"},
                                            DeviationBug{"good-triangle", "good-triangle"}),
                          [](const ::testing::TestParamInfo<DeviationBug>& info) {
@@ -205,6 +235,84 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, DeviationNamed,
                              if (ch == '-') ch = '_';
                            return n;
                          });
+
+// A program that ignores Remark 10 is told from one that reverses it by its
+// trace: some run of the ignoring program took the centroid inside the other
+// triangle (which a reversed program never does), and none of its runs is named
+// remark10-reversed; some run of the reversed program took a midpoint where the
+// centroid is inside (which an ignoring program never does).
+TEST(TestMesherSelfCheck, Remark10IgnoredToldFromReversed) {
+  std::size_t ignored_evidence = 0, reversed_named = 0, reversed_from_shared_step = 0;
+  for (const Case& c : paper_cases()) {
+    for (const char* bug : {"no-remark10", "remark10-reversed"}) {
+      const MesherRun r = run_mesher(c, std::string("--bug ") + bug);
+      ASSERT_EQ(r.status, 0);
+      const lepp::audit::ConformanceReport conf = conformance(c, r);
+      if (conf.conforms) continue;
+      const std::string named = conf.failure->deviation;
+      if (std::string(bug) == "no-remark10") {
+        EXPECT_EQ(named, "remark10-ignored") << name(c) << "\n" << lepp::audit::describe(conf);
+        if (conf.failure->remark10_centroid_inside_steps > 0) {
+          ++ignored_evidence;
+          EXPECT_NE(lepp::audit::describe(conf).find("remark10-ignored, not remark10-reversed"), std::string::npos);
+        }
+      } else {
+        reversed_named += named == "remark10-reversed";
+        EXPECT_TRUE(named == "remark10-reversed" || named == "remark10-ignored") << name(c);
+        // A first step both programs take (the centroid outside the other
+        // triangle), then one only reversing takes: remark10-reversed from the first.
+        bool both_in_chain = false;
+        for (const auto& l : conf.failure->chain) both_in_chain = both_in_chain || l.deviation == "remark10-ignored";
+        EXPECT_FALSE(both_in_chain && named == "remark10-reversed") << name(c) << "\n" << lepp::audit::describe(conf);
+        reversed_from_shared_step += named == "remark10-reversed" &&
+                                     conf.failure->deviation_what.find("outside the triangle across") != std::string::npos;
+      }
+    }
+  }
+  EXPECT_GT(ignored_evidence, 0u);
+  EXPECT_GT(reversed_named, 0u);
+  EXPECT_GT(reversed_from_shared_step, 0u) << "no run of the reversed program began with a step the ignoring one takes too";
+}
+
+// Two deviations at once (--bug given twice: the area centroid, and another
+// edge's midpoint where Remark 10 asks for the constrained one's): one check
+// names both, in the order the trace shows them, and the trace does not fit
+// either one variant. Each bug alone gives a chain of its one name.
+TEST(TestMesherSelfCheck, TwoDeviationsNamedInOneCheck) {
+  std::size_t both = 0;
+  for (const Case& c : paper_cases()) {
+    const MesherRun r = run_mesher(c, "--bug area-centroid --bug other-second-longest");
+    ASSERT_EQ(r.status, 0);
+    const lepp::audit::ConformanceReport conf = conformance(c, r);
+    ASSERT_FALSE(conf.conforms) << name(c);
+    const lepp::audit::ConformanceFailure& f = *conf.failure;
+    ASSERT_FALSE(f.chain.empty());
+    EXPECT_EQ(f.chain.front().deviation, f.deviation);
+    EXPECT_EQ(f.chain.front().first_step, f.step + 1);
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < f.chain.size(); ++i) {
+      names.insert(f.chain[i].deviation);
+      EXPECT_GE(f.chain[i].steps, 1u) << name(c) << "\n" << lepp::audit::describe(conf);
+      if (i) EXPECT_GT(f.chain[i].first_step, f.chain[i - 1].first_step) << name(c);
+    }
+    EXPECT_EQ(names.size(), f.chain.size()) << "a name twice: " << name(c);
+    for (const std::string& n : names) EXPECT_TRUE(n == "area-centroid" || n == "other-second-longest") << n << " " << name(c);
+    if (names.size() < 2) continue;
+    ++both;
+    EXPECT_TRUE(f.chain_complete) << name(c) << "\n" << lepp::audit::describe(conf);
+    EXPECT_FALSE(f.consistent_variant) << name(c);
+    const std::string text = lepp::audit::describe(conf);
+    EXPECT_NE(text.find(lepp::audit::chain_text(f.chain)), std::string::npos) << text;
+    EXPECT_NE(text.find(fmt_step(f.chain[0]) + "; then " + fmt_step(f.chain[1])), std::string::npos) << text;
+    for (const char* bug : {"area-centroid", "other-second-longest"}) {
+      const lepp::audit::ConformanceReport alone = conformance(c, run_mesher(c, std::string("--bug ") + bug));
+      if (alone.conforms) continue;
+      EXPECT_EQ(alone.failure->chain.size(), 1u) << bug << " " << name(c) << "\n" << lepp::audit::describe(alone);
+      EXPECT_EQ(alone.failure->deviation, bug) << name(c);
+    }
+  }
+  EXPECT_GT(both, 0u) << "no run showed both deviations";
+}
 
 // The midpoint method: a quad centroid anywhere is centroid-not-midpoint.
 TEST(TestMesherSelfCheck, MidpointMethodCentroidNamed) {

@@ -195,6 +195,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
   rep.repeat = opt.repeat;
   rep.points_cache_dir = opt.points_cache_dir;
   rep.area_centroid = opt.checks.area_centroid;
+  rep.arithmetic_double = opt.checks.arithmetic_double;
   for (std::size_t i = 0; i < kRows; ++i) rep.rows[i].row = kAllRows[i];
   const std::size_t jobs = rep.jobs;
 
@@ -396,14 +397,22 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
           case Verdict::NotChecked: ++s.not_checked; break;
           case Verdict::InternalError: ++s.internal_errors; break;
         }
+        // Steps accepted only under --arithmetic double: notes of a held run.
+        for (const auto& [name, steps] : r.inexact_steps) ++s.inexact_runs[name], s.inexact_steps[name] += steps;
         if (r.verdict != Verdict::Failed && r.verdict != Verdict::Finding) continue;
         if (s.first_detail.empty()) {
           s.first_detail = fmt::format("{} at theta {}: {}", input.name, c.theta, r.detail);
           if (sharded) rep.shard->first_run[static_cast<std::size_t>(row)] = run_ordinal(c, k);
         }
-        if (r.verdict == Verdict::Failed && !r.deviation.empty() && s.deviations[r.deviation]++ == 0) {
-          s.deviation_first[r.deviation] = fmt::format("step {} of {} at {} degrees", r.step, input.name, theta_text(c.theta));
-          if (sharded) rep.shard->deviation_first_run[static_cast<std::size_t>(row)][r.deviation] = run_ordinal(c, k);
+        // Every deviation of the run's trace counts, each where it first showed.
+        std::vector<DeviationLink> named = r.deviations;
+        if (named.empty() && !r.deviation.empty()) named.push_back({r.deviation, static_cast<std::size_t>(r.step), 0});
+        for (const DeviationLink& d : named) {
+          if (r.verdict != Verdict::Failed || s.deviations[d.deviation]++ > 0) continue;
+          s.deviation_first[d.deviation] =
+              d.first_step > 0 ? fmt::format("step {} of {} at {} degrees", d.first_step, input.name, theta_text(c.theta))
+                               : fmt::format("{} at {} degrees", input.name, theta_text(c.theta));  // a certificate's arithmetic
+          if (sharded) rep.shard->deviation_first_run[static_cast<std::size_t>(row)][d.deviation] = run_ordinal(c, k);
         }
         if (r.verdict == Verdict::Failed && !r.deviation.empty() && r.consistent_variant) ++s.deviation_consistent[r.deviation];
         const std::size_t ri = static_cast<std::size_t>(row);
@@ -506,6 +515,7 @@ AuditReport run_audit(const Engine& engine, const AuditOptions& opt) {
     cx.shrink_runs = sh.runs;
     cx.detail = last_result[row].detail;
     cx.deviation = last_result[row].deviation;
+    cx.deviations = last_result[row].deviations;
     // Absolute paths: reproduce.sh works from any directory.
     const fs::path abs_dir = fs::absolute(cx.dir).lexically_normal();
     if (!opt.reproduce_prefix.empty())

@@ -2,9 +2,11 @@
 #include "lepp/audit/checks.h"
 
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "lepp/audit/arithmetic.h"
 #include "lepp/audit/conformance.h"
 #include "lepp/audit/diagnosis.h"
 #include "lepp/gen.h"
@@ -36,6 +38,32 @@ void internal_error(CaseResult& c, std::initializer_list<Row> rows, const char* 
     c[r] = std::move(e);
   }
 }
+
+// A name the program's output gives a conformance failure before the catalogue's:
+// the replay's meshes are not the program's, so the catalogue judged steps the
+// program took on other meshes.
+void name_first(ConformanceFailure& f, const std::string& name, const std::string& what, const char* definition) {
+  f.deviation = name;
+  f.deviation_what = what;
+  f.deviation_definition = definition;
+  f.consistent_variant = false;
+  if (f.chain.empty()) f.chain.push_back({name, f.step + 1, 0});
+  else f.chain.front().deviation = name;
+}
+
+// The program's arithmetic, named first in a conformance failure: from the
+// final mesh, or, where the catalogue names no rule (unknown, precision), from
+// the failing point against the paper's nearest choice.
+void name_arithmetic(ConformanceFailure& f, const ArithmeticEvidence& from_mesh) {
+  ArithmeticEvidence e = from_mesh;
+  if (e.name.empty() && (f.deviation == "unknown" || f.deviation == "precision")) e = step_arithmetic(f);
+  if (!e.name.empty()) name_first(f, e.name, e.what, arithmetic_definition(e.name));
+}
+
+constexpr const char* kMissingFlips = "missing-flips";
+constexpr const char* kMissingFlipsDefinition =
+    "the program's final mesh is not constrained Delaunay: it did not flip (always) after an insertion, so its "
+    "intermediate meshes are not the replay's, and its steps after the first missing flip are judged on meshes it never had";
 
 }  // namespace
 
@@ -178,6 +206,23 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     decide(Row::MinAngle, {certify::Check::MinAngle});
     decide(Row::Theorem2, {certify::Check::Theorem2});
   }
+  // A program whose output shows its arithmetic (coordinates at floats, too few
+  // digits written): named first, the certificate's gaps are its consequence.
+  // Read only for a failing row: it converts every coordinate to decimal.
+  std::optional<ArithmeticEvidence> read_arithmetic;
+  auto arithmetic_of_mesh = [&]() -> const ArithmeticEvidence& {
+    if (!read_arithmetic) read_arithmetic = mesh_arithmetic(pslg, run.mesh);
+    return *read_arithmetic;
+  };
+  // The smallest angles too: coordinates rounded after the program computed them
+  // can flatten a small triangle below theta.
+  for (Row row : {Row::Certificate, Row::MinAngle}) {
+    RowResult& r = c[row];
+    if (r.verdict != Verdict::Failed || arithmetic_of_mesh().name.empty()) continue;
+    const ArithmeticEvidence& arithmetic = arithmetic_of_mesh();
+    r.deviation = arithmetic.name;
+    r.detail = fmt::format("{}: {}; what the certifier finds: {}", arithmetic.name, arithmetic.what, r.detail);
+  }
   // A program that exited non-zero but left a mesh: its mesh is judged, its status said.
   if (run.exit_code != 0)
     for (Row r : {Row::Certificate, Row::MinAngle, Row::Theorem2})
@@ -194,9 +239,19 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   co.angle_tolerance_deg = options.angle_tolerance_deg;
   co.point_tolerance_ulps = options.point_tolerance_ulps;
   co.area_centroid = options.area_centroid;
+  co.arithmetic_double = options.arithmetic_double;
   const bool not_delaunay = certified && !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
   try {
-    const ConformanceReport conf = check_conformance(pslg, *run.trace, co);
+    ConformanceReport conf = check_conformance(pslg, *run.trace, co);
+    if (conf.failure) name_arithmetic(*conf.failure, arithmetic_of_mesh());
+    // The final mesh says the program misses flips (the certificate's Delaunay
+    // check): named first, unless its arithmetic explains the mesh already.
+    if (conf.failure && not_delaunay && arithmetic_definition(conf.failure->deviation)[0] == '\0')
+      name_first(*conf.failure, kMissingFlips,
+                 fmt::format("the final mesh is not constrained Delaunay (certificate row); the replay's catalogue named "
+                             "this step {} on its own mesh",
+                             conf.failure->deviation),
+                 kMissingFlipsDefinition);
     // Theorem 2 on the terminal pair of every replayed step, reported like a conformance finding.
     if (conf.theorem2_failure && c[Row::Theorem2].verdict == Verdict::Held) {
       const Theorem2StepFailure& f = *conf.theorem2_failure;
@@ -215,6 +270,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     }
     if (conf.conforms) {
       c[Row::Conformance] = {Verdict::Held, "", {}};
+      c[Row::Conformance].inexact_steps = conf.inexact_steps;
     } else {
       RowResult r;
       r.verdict = Verdict::Failed;
@@ -226,11 +282,15 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
       if (conf.failure) {
         r.detail += fmt::format("; deviation {}: {}", conf.failure->deviation, conf.failure->deviation_what);
         r.consistent_variant = conf.failure->consistent_variant;
+        r.deviations = conf.failure->chain;
         if (r.consistent_variant) r.detail += fmt::format(" (every step fits this one variant)");
+        if (r.deviations.size() > 1) r.detail += "; every deviation: " + chain_text(r.deviations);
+        if (const std::string note = remark10_ignored_note(*conf.failure); !note.empty()) r.detail += "; " + note;
         if (not_delaunay)
           r.detail += "; the final mesh is not constrained Delaunay: the program's intermediate meshes probably differ "
                       "from the replay's (missing flips are the likely cause)";
         if (co.area_centroid) r.detail += " [reading: area centroid]";
+        if (co.arithmetic_double) r.detail += " [reading: arithmetic of doubles]";
         r.diagnosis = std::make_shared<StepDiagnosis>(conformance_diagnosis(conf, req.theta, not_delaunay));
         certify::Violation v;
         v.message = describe(conf, 3);
@@ -239,6 +299,14 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
         r.violations.push_back(std::move(v));
       }
       c[Row::Conformance] = std::move(r);
+    }
+    // Arithmetic the trace shows (not the mesh: that is named above) names the certifier's findings too.
+    const std::string& conf_name = c[Row::Conformance].deviation;
+    for (Row row : {Row::Certificate, Row::MinAngle}) {
+      RowResult& r = c[row];
+      if (r.verdict != Verdict::Failed || !r.deviation.empty() || arithmetic_definition(conf_name)[0] == '\0') continue;
+      r.deviation = conf_name;
+      r.detail = fmt::format("{} (the trace shows it: conformance row); what the certifier finds: {}", conf_name, r.detail);
     }
   } catch (const std::exception& e) {
     // Not the program's failure: the replay (or the step's diagnosis) could not decide.

@@ -2,6 +2,7 @@
 // The conformance check: the trace replayed on lepp::reference::Replay.
 #include "lepp/audit/conformance.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -45,25 +46,82 @@ reference::ReplayRules rules_of(const ConformanceOptions& options) {
   return rules;
 }
 
-// The whole trace again with one catalogue rule allowed wherever it applies:
-// true when every step is the paper's choice or the variant's; variant_steps
-// counts the variant's.
-bool fits_variant(const Pslg& validated, const std::vector<Point>& trace, reference::ReplayRules rules,
-                  reference::Deviation variant, std::size_t& variant_steps) {
-  rules.variant = variant;
-  reference::Replay replay(validated, rules);
-  variant_steps = 0;
-  for (const Point& p : trace) {
+reference::Deviation deviation_named(const std::string& name) {
+  for (int k = 0; k < reference::kDeviations; ++k)
+    if (name == reference::to_string(static_cast<reference::Deviation>(k))) return static_cast<reference::Deviation>(k);
+  return reference::Deviation::Unknown;
+}
+
+// A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
+bool remark10_centroid(const reference::ReplayChoice& choice) {
+  return choice.rule == Rule::CentroidInOther && choice.deviation == reference::Deviation::Unknown;
+}
+
+// From the first named step on: the replay goes on with each named variant
+// allowed (Replay::allow) and names the next deviation where a step fits none,
+// until the trace ends or a step is no variant's point (unknown, a single
+// point rule like circumcenter, a name it already allows) or cannot be inserted.
+void follow_chain(reference::Replay& replay, const std::vector<Point>& trace, std::size_t first, ConformanceFailure& f,
+                  std::size_t& centroid_inside) {
+  f.chain = {{f.deviation, first + 1, 0}};
+  reference::Deviation named = deviation_named(f.deviation);
+  std::size_t i = first;
+  while (i < trace.size()) {
+    if (!reference::has_variant(named)) {
+      if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
+      f.chain_end = named == reference::Deviation::Unknown
+                        ? fmt::format("step {} is no rule of the catalogue", i + 1)
+                        : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
+      return;
+    }
+    replay.allow(named);
+    const Point& p = trace[i];
     reference::ReplayChoice choice;
-    if (!replay.match(p, choice)) return false;
+    if (!replay.match(p, choice)) {
+      const reference::Deviation next = replay.diagnose(p).deviation;
+      const std::string name = reference::to_string(next);
+      for (const DeviationLink& l : f.chain)
+        if (l.deviation == name) {
+          f.chain_end = fmt::format("step {} is {}'s point at a configuration the replay cannot reach with it", i + 1, name);
+          return;
+        }
+      f.chain.push_back({name, i + 1, 0});
+      named = next;
+      continue;  // the same step again, with the new name allowed
+    }
     try {
       replay.insert(p, choice);
-    } catch (const std::runtime_error&) {
-      return false;
+    } catch (const std::runtime_error& e) {
+      f.chain_end = fmt::format("step {} cannot be inserted: {}", i + 1, e.what());
+      return;
     }
-    variant_steps += choice.deviation == variant;
+    if (choice.deviation != reference::Deviation::Unknown)
+      for (DeviationLink& l : f.chain) l.steps += l.deviation == reference::to_string(choice.deviation);
+    centroid_inside += remark10_centroid(choice);
+    ++i;
   }
-  return true;
+  f.chain_complete = true;
+}
+
+// remark10-ignored's points are remark10-reversed's too (a centroid outside
+// the other triangle): a trace that also shows a point only the reversed rule
+// has (the midpoint where the centroid is inside) is remark10-reversed from
+// the ignored one's first step on.
+void merge_remark10(ConformanceFailure& f) {
+  const std::string ignored = reference::to_string(reference::Deviation::Remark10Ignored);
+  const std::string reversed = reference::to_string(reference::Deviation::Remark10Reversed);
+  auto find = [&](const std::string& n) {
+    return std::find_if(f.chain.begin(), f.chain.end(), [&](const DeviationLink& l) { return l.deviation == n; });
+  };
+  auto ig = find(ignored), re = find(reversed);
+  if (ig == f.chain.end() || re == f.chain.end()) return;
+  ig->deviation = reversed;
+  ig->steps += re->steps;
+  f.chain.erase(re);
+  if (f.deviation == ignored) {
+    f.deviation = reversed;
+    f.deviation_definition = reference::definition(reference::Deviation::Remark10Reversed);
+  }
 }
 
 std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
@@ -92,7 +150,10 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   ConformanceReport report;
   report.steps = trace.size();
   report.area_centroid = options.area_centroid;
+  report.arithmetic_double = options.arithmetic_double;
+  if (options.arithmetic_double) replay.allow(reference::Deviation::InexactLength);
   std::unique_ptr<reference::Replay> before;  // the mesh before a step whose insertion failed
+  std::size_t centroid_inside = 0;             // ConformanceFailure::remark10_centroid_inside_steps
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const Point& p = trace[i];
     reference::ReplayChoice choice;
@@ -119,6 +180,8 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
       try {
         replay.insert(p, choice);
         ++report.steps_checked;
+        centroid_inside += remark10_centroid(choice);
+        if (choice.deviation == reference::Deviation::InexactLength) ++report.inexact_steps[reference::to_string(choice.deviation)];
         continue;
       } catch (const std::runtime_error& e) {
         reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());
@@ -162,15 +225,19 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     report.failure = std::move(failure);
     break;
   }
-  if (report.failure && options.check_variant) {
-    const reference::Deviation d = [&] {
-      for (int k = 0; k < reference::kDeviations; ++k)
-        if (report.failure->deviation == reference::to_string(static_cast<reference::Deviation>(k)))
-          return static_cast<reference::Deviation>(k);
-      return reference::Deviation::Unknown;
-    }();
-    if (reference::has_variant(d))
-      report.failure->consistent_variant = fits_variant(validated, trace, rules, d, report.failure->variant_steps);
+  // Every deviation of the trace: the same replay goes on from the failing step
+  // (not after a choice that could not be inserted: that replay is broken).
+  if (report.failure && options.check_variant && !before) {
+    ConformanceFailure& f = *report.failure;
+    follow_chain(replay, trace, f.step, f, centroid_inside);
+    merge_remark10(f);
+    f.consistent_variant = f.chain_complete && f.chain.size() == 1 && reference::has_variant(deviation_named(f.deviation));
+    if (f.consistent_variant) f.variant_steps = f.chain.front().steps;
+  }
+  if (report.failure) {
+    ConformanceFailure& f = *report.failure;
+    if (f.chain.empty()) f.chain = {{f.deviation, f.step + 1, 0}};
+    f.remark10_centroid_inside_steps = centroid_inside;
   }
   report.cocircular_ties = replay.cocircular_ties();
   report.cocircular_flips = replay.cocircular_flips();
@@ -178,8 +245,32 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   return report;
 }
 
+std::string chain_text(const std::vector<DeviationLink>& chain) {
+  std::string s;
+  for (const DeviationLink& l : chain) s += fmt::format("{}{} from step {}", s.empty() ? "" : "; then ", l.deviation, l.first_step);
+  return s;
+}
+
+std::string remark10_ignored_note(const ConformanceFailure& f) {
+  const std::string ignored = reference::to_string(reference::Deviation::Remark10Ignored);
+  bool named = false;
+  for (const DeviationLink& l : f.chain) named = named || l.deviation == ignored;
+  if (!named) return "";
+  if (f.remark10_centroid_inside_steps > 0)
+    return fmt::format("remark10-ignored, not remark10-reversed: {} steps took the quad centroid inside the other triangle "
+                       "(the paper's Remark 10, which a reversed program never does)",
+                       f.remark10_centroid_inside_steps);
+  return "remark10-reversed fits the trace as well: no step had the quad centroid inside the other triangle with one "
+         "second-longest edge constrained, where the two tell apart";
+}
+
 std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
-  if (r.conforms) return fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
+  if (r.conforms) {
+    std::string s = fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
+    for (const auto& [name, steps] : r.inexact_steps)
+      s += fmt::format("  {} of them only under the double reading (--arithmetic double): {}\n", steps, name);
+    return s;
+  }
   const ConformanceFailure& f = *r.failure;
   std::string s = fmt::format("step {} of {}: point ({:.17g}, {:.17g}): {}\n", f.step, r.steps, f.point.x, f.point.y, f.reason);
   s += fmt::format("deviation: {}: {}", f.deviation, f.deviation_what);
@@ -190,6 +281,10 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
   if (f.consistent_variant)
     s += fmt::format("every one of the {} steps is the paper's choice or {}'s ({} of them {}'s): one consistent variant\n", r.steps,
                      f.deviation, f.variant_steps, f.deviation);
+  if (f.chain.size() > 1 || !f.chain_end.empty())
+    s += fmt::format("every deviation of the trace: {}{}\n", chain_text(f.chain),
+                     f.chain_complete ? " (to the trace's end)" : "; the replay stopped: " + f.chain_end);
+  if (const std::string note = remark10_ignored_note(f); !note.empty()) s += note + "\n";
   std::size_t n = std::min(max_candidates, f.candidates.size());
   if (n) s += fmt::format("nearest of {} choices at this step:\n", f.candidates_total);
   for (std::size_t i = 0; i < n; ++i) {
@@ -204,6 +299,7 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
                      r.theorem2_failure->step, r.theorem2_failure->apex, r.theorem2_failure->terminal_edge[0],
                      r.theorem2_failure->terminal_edge[1], r.theorem2_failure->angle_deg);
   if (r.area_centroid) s += "reading declared: the quad centroid is its area centroid (--centroid area)\n";
+  if (r.arithmetic_double) s += "reading declared: the arithmetic of doubles (--arithmetic double)\n";
   if (r.cocircular_search_exhausted)
     s += "note: the search of the cocircular cells' other triangulations gave up (cocircular_search_budget): "
          "the point may be a choice of a constrained Delaunay mesh it did not reach\n";

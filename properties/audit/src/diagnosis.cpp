@@ -83,12 +83,23 @@ std::string diagnosis_markdown(const StepDiagnosis& d) {
                       f.deviation_at->euclidean, f.deviation_at->tolerance);
     for (const ConformanceCandidate& c : f.deviation_paper)
       md += fmt::format("- the paper's choice there: {} ({}), {:.3g} from the program's point\n", pt(c.point), to_string(c.rule), c.euclidean);
+  } else if (f.deviation != "unknown" && !f.deviation_what.empty()) {
+    md += fmt::format("What the program's output shows: {}.\n", f.deviation_what);  // its arithmetic (arithmetic.h)
   }
   if (f.consistent_variant)
     md += fmt::format(
         "\nEvery one of the {} traced steps is the paper's choice or `{}`'s ({} of them `{}`'s): the program follows one "
         "consistent variant.\n",
         d.steps, f.deviation, f.variant_steps, f.deviation);
+  if (f.chain.size() > 1 || !f.chain_end.empty()) {
+    md += "\n**Every deviation of the trace**, in the order it shows them (after each, the replay went on with that rule "
+          "allowed):";
+    for (std::size_t i = 0; i < f.chain.size(); ++i)
+      md += fmt::format("{} `{}` from step {}{}", i ? "; then" : "", f.chain[i].deviation, f.chain[i].first_step,
+                        f.chain[i].steps ? fmt::format(" ({} steps)", f.chain[i].steps) : "");
+    md += f.chain_complete ? ", to the trace's end.\n" : fmt::format(". The replay stopped: {}.\n", f.chain_end);
+  }
+  if (const std::string note = remark10_ignored_note(f); !note.empty()) md += "\n" + note + ".\n";
   if (d.final_not_delaunay)
     md += "\nThe final mesh is not constrained Delaunay (certificate row): the program's intermediate meshes probably "
           "differ from the replay's, and missing Delaunay flips after an insertion are the likely cause; the steps after "

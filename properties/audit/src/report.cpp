@@ -37,14 +37,53 @@ std::string smallest_cell(const RowSummary& r) {
 
 }  // namespace
 
+nlohmann::json deviations_json(const std::vector<DeviationLink>& chain) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const DeviationLink& l : chain) out.push_back({{"deviation", l.deviation}, {"from_step", l.first_step}, {"steps", l.steps}});
+  return out;
+}
+
+std::vector<DeviationLink> deviations_of(const nlohmann::json& chain) {
+  std::vector<DeviationLink> out;
+  for (const nlohmann::json& l : chain)
+    out.push_back({l.at("deviation").get<std::string>(), l.at("from_step").get<std::size_t>(), l.at("steps").get<std::size_t>()});
+  return out;
+}
+
 std::string deviations_text(const AuditReport& rep) {
   const RowSummary& r = rep[Row::Conformance];
   std::string md;
+  // The certifier's failures the program's arithmetic explains (arithmetic.h).
+  for (Row row : {Row::Certificate, Row::MinAngle}) {
+    const RowSummary& named = rep[row];
+    if (named.deviations.empty()) continue;
+    md += fmt::format("\n{} failures named by the program's arithmetic (its output's coordinates, docs/CONFORMANCE.md "
+                      "\"Arithmetic\"):",
+                      row == Row::Certificate ? "Certificate" : "Min-angle");
+    bool first = true;
+    for (const auto& [name, runs] : named.deviations) {
+      auto it = named.deviation_first.find(name);
+      md += fmt::format("{} {}: {} run{}{}", first ? "" : ";", name, runs, runs == 1 ? "" : "s",
+                        it != named.deviation_first.end() ? ", first at " + it->second : "");
+      first = false;
+    }
+    md += ".\n";
+  }
   if (rep.area_centroid)
     md += "\nConformance is checked against the declared reading `--centroid area`: the quad centroid is its area "
           "centroid (centre of mass), not the paper's vertex average (A+B+C+D)/4 of Lemma 11.\n";
+  md += rep.arithmetic_double
+            ? "\nArithmetic reading `--arithmetic double`: a step that is the paper's choice once two edge lengths within "
+              "double rounding of each other count as a tie (inexact-length) is accepted, and counted below as a note.\n"
+            : "\nArithmetic reading `exact` (the default; `--arithmetic double` accepts the paper's choice reached through "
+              "lengths within double rounding of a tie).\n";
+  for (const auto& [name, steps] : r.inexact_steps) {
+    const std::size_t runs = r.inexact_runs.count(name) ? r.inexact_runs.at(name) : 0;
+    md += fmt::format("Notes under `--arithmetic double`: {}: {} step{} in {} run{} that conform.\n", name, steps,
+                      steps == 1 ? "" : "s", runs, runs == 1 ? "" : "s");
+  }
   if (r.deviations.empty()) return md;
-  md += "\nConformance deviations (the catalogue rule the first failing step of each run is, docs/CONFORMANCE.md):";
+  md += "\nConformance deviations (every catalogue rule each failing run's trace shows, in runs; docs/CONFORMANCE.md):";
   std::size_t named = 0;
   bool first = true;
   for (const auto& [name, runs] : r.deviations) {
@@ -211,6 +250,7 @@ nlohmann::json json_report(const AuditReport& rep) {
                         {"stderr_file", c.stderr_file},
                         {"reproduce", c.reproduce}};
     if (!c.deviation.empty()) j["deviation"] = c.deviation;
+    if (!c.deviations.empty()) j["deviations"] = deviations_json(c.deviations);
     return j;
   };
   nlohmann::json rows = nlohmann::json::array();
@@ -231,6 +271,8 @@ nlohmann::json json_report(const AuditReport& rep) {
                     {"first", r.first_detail},
                     {"deviations", r.deviations},
                     {"deviations_consistent", r.deviation_consistent},
+                    {"inexact_runs", r.inexact_runs},
+                    {"inexact_steps", r.inexact_steps},
                     {"counterexamples", cx}});
   }
   nlohmann::json internal = nlohmann::json::array();
@@ -254,6 +296,7 @@ nlohmann::json json_report(const AuditReport& rep) {
                       {"internal_error_runs", rep.internal_error_runs},
                       {"internal_errors", internal},
                       {"centroid", rep.area_centroid ? "area" : "vertex"},
+                      {"arithmetic", rep.arithmetic_double ? "double" : "exact"},
                       {"points_ratio", ratios},
                       {"order_termination", to_json(rep.order_terminations)},
                       {"run_status", statuses},

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "lepp/audit/report.h"
 #include "lepp/audit/subprocess.h"
 
 namespace fs = std::filesystem;
@@ -66,6 +67,7 @@ Counterexample counterexample_of(const nlohmann::json& j, Row row) {
   c.signature = j.at("signature").get<std::string>();
   c.detail = j.at("detail").get<std::string>();
   c.deviation = j.value("deviation", std::string());
+  if (j.contains("deviations")) c.deviations = deviations_of(j.at("deviations"));
   c.original_detail = j.at("original_detail").get<std::string>();
   c.original_input = j.at("original_input").get<std::string>();
   c.deterministic = j.at("deterministic").get<bool>();
@@ -147,6 +149,7 @@ nlohmann::json shard_config(const AuditOptions& o, const std::vector<AuditInput>
           {"angle_tolerance", o.checks.angle_tolerance_deg},
           {"point_tolerance", o.checks.point_tolerance_ulps},
           {"centroid", o.checks.area_centroid ? "area" : "vertex"},
+          {"arithmetic", o.checks.arithmetic_double ? "double" : "exact"},
           {"shrink", o.shrink},
           {"max_findings", o.max_findings_per_row},
           {"shrink_max_runs", o.shrink_max_runs},
@@ -244,6 +247,7 @@ AuditReport merge_shards(const std::vector<MergeInput>& shards, const std::strin
   rep.inputs = first["inputs"].get<std::size_t>();
   rep.skipped_inputs = first["skipped_inputs"].get<std::vector<std::string>>();
   rep.area_centroid = first["centroid"].get<std::string>() == "area";
+  rep.arithmetic_double = first.value("arithmetic", "exact") == "double";
   rep.jobs = first["jobs"].get<std::size_t>();
   rep.repeat = first["repeat"].get<std::size_t>();
   rep.points_cache_dir = first["points_cache_dir"].get<std::string>();
@@ -287,6 +291,11 @@ AuditReport merge_shards(const std::vector<MergeInput>& shards, const std::strin
       sum.internal_errors += r["internal_errors"].get<std::size_t>();
       for (const auto& [name, runs] : r["deviations"].items()) sum.deviations[name] += runs.get<std::size_t>();
       for (const auto& [name, runs] : r["deviations_consistent"].items()) sum.deviation_consistent[name] += runs.get<std::size_t>();
+      // Named copies: a range-for over items() of a temporary would read a destroyed object.
+      const nlohmann::json inexact_runs = r.value("inexact_runs", nlohmann::json::object());
+      const nlohmann::json inexact_steps = r.value("inexact_steps", nlohmann::json::object());
+      for (const auto& [name, runs] : inexact_runs.items()) sum.inexact_runs[name] += runs.get<std::size_t>();
+      for (const auto& [name, steps] : inexact_steps.items()) sum.inexact_steps[name] += steps.get<std::size_t>();
       // Each first is the one of the earliest run in the whole audit's order.
       const std::string f = r["first"].get<std::string>();
       const std::size_t at = d["first_run"][row_key(row)].get<std::size_t>();

@@ -20,13 +20,14 @@ FailureSignature failure_signature(Row row, const Pslg& input, const EngineRun& 
   auto first_reason = [&] { return result.violations.empty() ? std::string() : certify::to_string(result.violations.front().reason); };
   switch (row) {
     case Row::Certificate:
-      if (run.status == RunStatus::Ok) s.kind = first_reason();
+      // The program's arithmetic named first (arithmetic.h): a shrunk input must show it too.
+      if (run.status == RunStatus::Ok) s.kind = result.deviation.empty() ? first_reason() : result.deviation + ", " + first_reason();
       else if (run.status == RunStatus::Crashed) s.kind = run.signal ? fmt::format("crashed: signal {}", run.signal) : "crashed";
       else if (run.status == RunStatus::ExitCode) s.kind = fmt::format("exit status {}", run.exit_code);
       else s.kind = to_string(run.status);
       break;
     case Row::MinAngle:
-      s.kind = first_reason();
+      s.kind = result.deviation.empty() ? first_reason() : result.deviation + ", " + first_reason();
       s.well_shaped = gen::min_input_angle_deg(input) >= 60;
       break;
     case Row::Theorem2: s.kind = first_reason(); break;

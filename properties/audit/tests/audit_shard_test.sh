@@ -99,6 +99,23 @@ assert rows["certificate"]["failed"] > 2 and len(rows["certificate"]["counterexa
 assert rows["conformance"]["failed"] > 2 and len(rows["conformance"]["counterexamples"]) == 2, rows["conformance"]' \
   "$dir/cmd-single.json" || fail "cmd: the program does not fail as this test needs"
 
+# A program with two deviations (issue 30): every deviation of each run is in the
+# row's counts and each counterexample's list; the merge must carry both.
+split_and_compare chain --cmd "$mesher {in} {out} {theta} {method} --bug area-centroid --bug other-second-longest" \
+  --inputs "$src/corpus/paper" --theta 20,25,30 --max-findings 3 --no-shrink --compare none -j 2
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); conf=[x for x in r["rows"] if x["check"]=="conformance"][0]
+assert set(conf["deviations"]) >= {"area-centroid", "other-second-longest"}, conf["deviations"]
+assert any(len(c.get("deviations", [])) >= 2 for c in conf["counterexamples"]), conf["counterexamples"]' \
+  "$dir/chain-single.json" || fail "chain: no counterexample with two deviations, as this test needs"
+
+# The declared arithmetic of doubles (--arithmetic double): the notes it counts
+# (steps accepted as inexact-length) summed like the other counts.
+split_and_compare arithmetic --cmd "$mesher {in} {out} {theta} {method} --bug inexact-length" \
+  --inputs "$src/tests/audit/arithmetic" --theta 20,25,30 --arithmetic double --compare none -j 2
+python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); conf=[x for x in r["rows"] if x["check"]=="conformance"][0]
+assert r["arithmetic"] == "double" and conf["inexact_steps"].get("inexact-length", 0) >= 3, conf' \
+  "$dir/arithmetic-single.json" || fail "arithmetic: no inexact-length notes, as this test needs"
+
 # As a CI downloads them: each shard's JSON beside its findings directory, on a
 # machine where the shards' own paths do not exist; merged from there the same.
 for k in 1 2 3; do mkdir -p "ci/shard-$k" && cp "cmd-$k.json" "ci/shard-$k/report.json" && mv "cmd-out-$k" "ci/shard-$k/"; done

@@ -45,7 +45,7 @@ TEST(DeviationCatalogue, NamesAreTheContract) {
     names.insert(lepp::reference::to_string(d));
     EXPECT_GT(std::string(lepp::reference::definition(d)).size(), 10u);
   }
-  for (const char* n : {"area-centroid", "triangle-centroid", "terminal-midpoint", "centroid-not-midpoint", "remark10-reversed",
+  for (const char* n : {"area-centroid", "triangle-centroid", "terminal-midpoint", "centroid-not-midpoint", "remark10-ignored", "remark10-reversed", "inexact-length",
                         "other-second-longest", "good-triangle", "circumcenter", "off-center", "precision", "unknown"})
     EXPECT_TRUE(names.count(n)) << n;
   EXPECT_EQ(names.size(), static_cast<std::size_t>(lepp::reference::kDeviations));

@@ -32,15 +32,23 @@ enum class Deviation {
   TriangleCentroid,     // the centroid of one terminal triangle
   TerminalMidpoint,     // the terminal edge's midpoint where the paper chooses otherwise
   CentroidNotMidpoint,  // the quad centroid where the paper asks for a midpoint (not Remark 10's case)
+  // Before Remark10Reversed: a centroid outside the other triangle is both
+  // programs' point; only a midpoint where the centroid is inside tells
+  // reversed (the conformance check merges the two then: docs/CONFORMANCE.md).
+  Remark10Ignored,      // the quad centroid wherever exactly one second-longest edge is constrained
   Remark10Reversed,     // Remark 10 the wrong way round
   OtherSecondLongest,   // the midpoint of another edge of a terminal triangle
   Circumcenter,         // the bad triangle's circumcenter
   OffCenter,            // the bad triangle's off-center (Ungor)
   GoodTriangle,         // the paper's choice for the Lepp of a triangle that is not bad
+  // The paper's choice for a Lepp reached by taking length comparisons the
+  // other way where the exact squared lengths differ by no more than a double
+  // computation of them may err (8 DBL_EPSILON relative): a double program's ties.
+  InexactLength,
   Precision,            // within 1000 times the tolerance of a paper choice
   Unknown,              // none of these
 };
-constexpr int kDeviations = 12;
+constexpr int kDeviations = 14;
 const char* to_string(Deviation deviation);   // "area-centroid", ..., "unknown"
 const char* definition(Deviation deviation);  // one sentence, as in docs/CONFORMANCE.md
 
@@ -73,8 +81,10 @@ struct ReplayRules {
   // A consistent variant of the algorithm (a catalogue rule put in place of
   // the paper's where it applies; Unknown: the paper's own rules). Used to ask
   // whether every step of a trace fits one deviation: AreaCentroid (the area
-  // reading), TriangleCentroid, TerminalMidpoint, CentroidNotMidpoint and
-  // Remark10Reversed have a variant; the others are not a rule set.
+  // reading), TriangleCentroid, TerminalMidpoint, CentroidNotMidpoint,
+  // Remark10Ignored, Remark10Reversed and InexactLength (the paper's rules with
+  // near ties of lengths as ties) have a variant; the others are not a rule
+  // set. Replay::allow adds more, part way through a trace.
   Deviation variant = Deviation::Unknown;
 };
 
@@ -131,6 +141,10 @@ class Replay {
   // Throws std::runtime_error when p cannot be inserted (a vertex already, or
   // outside the domain).
   void insert(const Point& p, const ReplayChoice& choice);
+  // From now on match() also takes this variant's points (has_variant), as
+  // ReplayRules::variant does from the start: the conformance check continues
+  // a trace past a named deviation to name the next.
+  void allow(Deviation variant);
 
   // For reports (slow: walks the Lepp of every bad triangle): every choice of
   // the current mesh, nearest to p first, at most limit; total gets how many.

@@ -76,6 +76,7 @@ struct Counterexample {
   std::string signature;    // what every kept shrink step failed with, as the original (signature.h)
   std::string detail;       // the row's one line on the shrunk input
   std::string deviation;    // conformance: the named deviation on the shrunk input (RowResult::deviation)
+  std::vector<DeviationLink> deviations;  // conformance: every deviation of its trace (RowResult::deviations)
   std::string original_detail;  // the row's line on the input as found
   std::string original_input;   // DIR/original.poly, the input as found (when shrunk)
   bool deterministic = true;    // a second run on the input as found gave the same output
@@ -90,11 +91,15 @@ struct RowSummary {
   std::size_t internal_errors = 0;  // runs this row's verdict code stopped on (undecided; Verdict::InternalError)
   std::vector<Counterexample> counterexamples;  // saved ones, smallest first
   std::string first_detail;                     // the first failure or finding seen, before shrinking
-  // Conformance: failed runs by named deviation, and where each was first seen
+  // Conformance: failed runs by named deviation (every name of each run's
+  // chain, RowResult::deviations), and where each was first seen
   // ("step 2 of corpus/paper/square400.poly at theta 25").
   std::map<std::string, std::size_t> deviations;
   std::map<std::string, std::string> deviation_first;
   std::map<std::string, std::size_t> deviation_consistent;  // of those, runs whose every traced step fits that one variant
+  // Conformance under --arithmetic double: runs held with steps accepted only
+  // under that reading, and those steps, by name ("inexact-length").
+  std::map<std::string, std::size_t> inexact_runs, inexact_steps;
   bool holds() const { return failed == 0; }
 };
 
@@ -144,6 +149,7 @@ struct AuditReport {
   std::size_t inputs = 0, cases = 0;
   std::array<RowSummary, kRows> rows;
   bool area_centroid = false;                  // conformance checked against the declared area-centroid reading
+  bool arithmetic_double = false;              // conformance checked against the declared arithmetic of doubles
   std::vector<PointsRatio> ratios;
   std::vector<OrderTermination> order_terminations;  // runs ending where lepp's fifo does not, or the reverse
   std::vector<std::string> skipped_inputs;

@@ -6,10 +6,12 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "lepp/audit/conformance.h"
 #include "lepp/audit/engine.h"
 #include "lepp/certify.h"
 
@@ -52,6 +54,10 @@ struct RowResult {
   std::shared_ptr<const StepDiagnosis> diagnosis;
   // Conformance: every traced step fits the deviation's variant (ConformanceFailure::consistent_variant).
   bool consistent_variant = false;
+  // Conformance: every deviation of the trace (ConformanceFailure::chain); the first is `deviation`.
+  std::vector<DeviationLink> deviations;
+  // Conformance under --arithmetic double: steps accepted only under that reading, by name.
+  std::map<std::string, std::size_t> inexact_steps;
   // InternalError: where the verdict code stopped ("certifier", "conformance replay"); detail has the message.
   std::string internal_error;
 };
@@ -61,6 +67,7 @@ struct CheckOptions {
   double angle_tolerance_deg = 1e-3;  // a triangle this close above theta may count as bad or good
   double point_tolerance_ulps = 8;    // how far a point may be from the exact choice, DBL_EPSILON x |coordinate| units
   bool area_centroid = false;         // the declared reading: the quad centroid is its area centroid (--centroid area)
+  bool arithmetic_double = false;     // the declared reading of the arithmetic (--arithmetic double): inexact-* steps are notes
 };
 
 struct CaseResult {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,11 +45,19 @@ struct ConformanceOptions {
   bool area_centroid = false;
   // At a failing step whose deviation is a whole rule set (area-centroid,
   // triangle-centroid, terminal-midpoint, centroid-not-midpoint,
-  // remark10-reversed, other-second-longest), replay the trace again with that
-  // rule allowed wherever it applies: does every step fit that one variant?
+  // remark10-ignored, remark10-reversed, other-second-longest), the replay
+  // continues with that rule allowed wherever it applies and names the next
+  // deviation, until the trace ends (every deviation of the program in one
+  // check: ConformanceFailure::chain) or a step fits no rule it can continue
+  // with. One name that takes the trace to its end is one consistent variant.
   bool check_variant = true;
   // Theorem 2 on the terminal pair of every replayed step.
   bool theorem2_every_step = true;
+  // The declared reading of the arithmetic (--arithmetic double): a step that is
+  // the paper's choice once near ties of lengths count as ties (inexact-length)
+  // is accepted, counted in ConformanceReport::inexact_steps; false (exact, the
+  // default): such a step fails, named inexact-length.
+  bool arithmetic_double = false;
 };
 
 // One choice the paper allows, as reported for a failing step.
@@ -63,6 +72,13 @@ struct ConformanceCandidate {
   double euclidean = 0;           // the Euclidean distance to the trace's point, for reports
   Tri t1{{-1, -1, -1}}, t2{{-1, -1, -1}};  // the terminal pair (t2 -1s: constrained terminal edge)
   std::array<int, 2> split_edge{{-1, -1}};  // a midpoint's edge
+};
+
+// One deviation of a trace (ConformanceFailure::chain).
+struct DeviationLink {
+  std::string deviation;       // the catalogue's name
+  std::size_t first_step = 0;  // the first step that is its point, 1-based as the reports number steps
+  std::size_t steps = 0;       // steps the continued replay took as its point (0: it could not continue with it)
 };
 
 struct ConformanceFailure {
@@ -87,6 +103,16 @@ struct ConformanceFailure {
   // deviation's, and variant_steps of them are the deviation's.
   bool consistent_variant = false;
   std::size_t variant_steps = 0;
+  // check_variant: every deviation of the trace, in the order the trace shows
+  // them; chain[0] is `deviation` (a step's remark10-ignored becomes
+  // remark10-reversed when a later step is only the reversed rule's point).
+  std::vector<DeviationLink> chain;
+  bool chain_complete = false;  // the replay reached the trace's end with the chain's variants allowed
+  std::string chain_end;        // else where and why it stopped after the first step, one line ("": it did not go on)
+  // Steps that took the quad centroid inside the other triangle where one
+  // second-longest edge is constrained: the paper's Remark 10, which a
+  // reversed program never does (the evidence for remark10-ignored).
+  std::size_t remark10_centroid_inside_steps = 0;
 };
 
 // Theorem 2 failing on the terminal pair of a replayed step.
@@ -111,6 +137,9 @@ struct ConformanceReport {
   std::optional<Theorem2StepFailure> theorem2_failure;  // the first step whose terminal pair breaks Theorem 2
   std::size_t theorem2_pairs_checked = 0;               // unconstrained terminal pairs of the replayed steps
   bool area_centroid = false;                           // the reading checked against
+  bool arithmetic_double = false;                       // the arithmetic reading checked against
+  // arithmetic_double: the steps accepted only under it, by name ("inexact-length").
+  std::map<std::string, std::size_t> inexact_steps;
   double seconds = 0;
 };
 
@@ -119,6 +148,12 @@ struct ConformanceReport {
 // implementation numbers its vertices does not matter.
 ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
                                     const ConformanceOptions& options);
+
+// "area-centroid from step 1; then remark10-reversed from step 41"
+std::string chain_text(const std::vector<DeviationLink>& chain);
+// A remark10-ignored in the failure's chain: which evidence of the trace names
+// it, or that remark10-reversed fits as well (docs/CONFORMANCE.md). "" otherwise.
+std::string remark10_ignored_note(const ConformanceFailure& failure);
 
 // A few lines for a person: conforms, or the failing step with its nearest candidates.
 std::string describe(const ConformanceReport& report, std::size_t max_candidates = 5);

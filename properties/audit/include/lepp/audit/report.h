@@ -19,6 +19,11 @@ std::string junit_report(const AuditReport& report);
 // paragraph of the markdown report under the table.
 std::string deviations_text(const AuditReport& report);
 
+// A counterexample's chain of deviations in the JSON ("deviations": [{"deviation",
+// "from_step", "steps"}, ...]), and back (lepp audit merge reads shards' reports).
+nlohmann::json deviations_json(const std::vector<DeviationLink>& chain);
+std::vector<DeviationLink> deviations_of(const nlohmann::json& chain);
+
 // A markdown table cell: pipes escaped, one line, at most 200 characters.
 std::string md_cell(const std::string& text);
 
