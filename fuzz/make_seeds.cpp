@@ -120,9 +120,11 @@ int poly(const char* in_path, const char* out_path) {
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--bake") return bake(argv[2], argv[3]);
   if (argc == 4 && std::string(argv[1]) == "--poly") return poly(argv[2], argv[3]);
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: fuzz_make_seeds OUT_DIR\n");
-    return 2;
+  // An option it does not know (--help) is no directory to fill.
+  if (argc != 2 || argv[1][0] == '-') {
+    std::fprintf(stderr,
+                 "usage: fuzz_make_seeds OUT_DIR | --bake IN OUT | --poly FUZZ_INPUT OUT.poly\n");
+    return argc == 2 && std::string(argv[1]) == "--help" ? 0 : 2;
   }
   const std::filesystem::path out = argv[1];
   std::filesystem::create_directories(out);
