@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Two lepp binaries, byte for byte the same outputs: every file `lepp refine` writes
-# (.node/.ele/.poly/.unimprovable, .vtu, ASCII .msh) and what it prints (the text
-# statistics and --json, without the "seconds" line the clock writes), on the paper's
-# four problems at several angles, with and without a size bound, and on the hostile
-# corpus (coordinates near 1e300, 1e-300, subnormal) at 20 and 30 degrees, and Square400 at
-# --max-area 0.015 (about 10^6 triangles).
+# (.node/.ele/.poly/.unimprovable, .vtu, ASCII .msh of formats 2.2 and 4.1) and what it
+# prints (the text statistics and --json, without the "seconds" line the clock writes),
+# on the paper's four problems at several angles, with and without a size bound, on the
+# hostile corpus (coordinates near 1e300, 1e-300, subnormal) at 20 and 30 degrees, and
+# on Square400 at --max-area 0.015 (about 10^6 triangles).
 # A speed-up of the writers or the statistics must leave every byte as it was.
 # usage: bench/same_outputs.sh OLD_LEPP NEW_LEPP [THETAS]   (default "20 25 28 30 33")
 # Prints one line per run and a summary; exits 1 when anything differs.
@@ -32,7 +32,7 @@ compare() {  # label input [refine options...]
     "$bin" refine "$input" -o "$work/run/m" -q --format triangle,vtu,msh2 "$@" 2> "$work/run/err" |
       grep -v '^seconds' > "$work/run/text"
     echo "${PIPESTATUS[0]}" > "$work/run/rc"
-    "$bin" refine "$input" -o "$work/run/j" -q --json "$@" 2> /dev/null | grep -v '"seconds"' > "$work/run/json"
+    "$bin" refine "$input" -o "$work/run/j" -q --json --format msh4 "$@" 2> /dev/null | grep -v '"seconds"' > "$work/run/json"
     mv "$work/run" "$work/$side"
   done
   runs=$((runs + 1))
@@ -48,7 +48,7 @@ compare() {  # label input [refine options...]
       echo "DIFFER $label:$bad"
       differ=$((differ + 1))
     else
-      echo "same   $label ($(cat "$work/old/rc"), $(cat "$work"/old/m.* 2> /dev/null | wc -c) bytes of mesh files)"
+      echo "same   $label ($(cat "$work/old/rc"), $(cat "$work"/old/[mj].* 2> /dev/null | wc -c) bytes of mesh files)"
     fi
   fi
   rm -rf "$work/old" "$work/new"
