@@ -7,10 +7,6 @@
 #include <tuple>
 #include <utility>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 namespace lepp::fast {
 
 SegmentMembership make_membership(const Pslg& pslg) {
@@ -34,30 +30,11 @@ SegmentMembership make_membership(const Pslg& pslg) {
   return m;
 }
 
-namespace {
-template <class T>
-void advise_huge_pages(const std::vector<T>& v) {
-#ifdef __linux__
-  const std::uintptr_t huge = std::uintptr_t{1} << 21;
-  auto begin = reinterpret_cast<std::uintptr_t>(v.data());
-  auto end = begin + v.capacity() * sizeof(T);
-  begin = (begin + huge - 1) & ~(huge - 1);
-  end &= ~(huge - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-  (void)v;
-#endif
-}
-}  // namespace
-
 void TriMesh::reserve(std::size_t vertices, std::size_t triangles) {
   pts.reserve(vertices);
   tris.reserve(triangles);
   stamp.reserve(triangles);
   if (!region.empty()) region.reserve(triangles);
-  advise_huge_pages(pts);
-  advise_huge_pages(tris);
-  advise_huge_pages(stamp);
 }
 
 Mesh TriMesh::to_mesh(const SegmentMembership& membership) const {
