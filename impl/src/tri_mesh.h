@@ -90,8 +90,8 @@ struct TriMesh {
 
   // Reserves room for a refinement of this size. Untouched capacity costs no
   // memory. No huge pages (madvise): on the project machine (a VM) the kernel's
-  // zeroing of each new 2 MiB page cost 2.5 s of system time at 10^7 triangles,
-  // more than the 3.3 s of the whole refinement, and saved no measurable user
+  // zeroing of each new 2 MiB page cost up to 2.5 s of system time at 10^7
+  // triangles, near the run's 3.3 s of user time, and saved no measurable user
   // time (docs/BENCHMARKS.md, issue 31).
   void reserve(std::size_t vertices, std::size_t triangles);
 
