@@ -4,8 +4,9 @@
 # (.node/.ele/.poly/.unimprovable, .vtu, ASCII .msh of formats 2.2 and 4.1) and what it
 # prints (the text statistics and --json, without the "seconds" line the clock writes),
 # on the paper's four problems at several angles, with and without a size bound, on the
-# hostile corpus (coordinates near 1e300, 1e-300, subnormal) at 20 and 30 degrees, and
-# on Square400 at --max-area 0.015 (about 10^6 triangles).
+# hostile corpus (coordinates near 1e300, 1e-300, subnormal) at 20 and 30 degrees, on
+# Square400 at --max-area 0.015 (about 10^6 triangles), and on the inputs at the limit
+# of double precision (corpus/regressions/precision) at 25 and 30 degrees.
 # A speed-up of the writers or the statistics must leave every byte as it was.
 # usage: bench/same_outputs.sh OLD_LEPP NEW_LEPP [THETAS]   (default "20 25 28 30 33")
 # Prints one line per run and a summary; exits 1 when anything differs.
@@ -65,6 +66,12 @@ compare "square400 30 a=0.015" corpus/paper/square400.poly --min-angle 30 --max-
 for theta in 20 30; do
   for f in corpus/hostile/*.poly; do
     compare "$(basename "$f" .poly) $theta" "$f" --min-angle "$theta" --max-steiner 20000
+  done
+done
+# At the limit of double precision: precision stops and triangles left (ALGORITHM.md 8b).
+for theta in 25 30; do
+  for f in corpus/regressions/precision/*.node corpus/regressions/precision/*.poly; do
+    compare "$(basename "$f") $theta" "$f" --min-angle "$theta" --max-steiner 20000
   done
 done
 echo "$runs cases, $differ differ"

@@ -62,6 +62,9 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   const std::size_t nv = pts.size();
   mesh.vertices = std::move(pts);
   pts = {};
+  // Freed before the output's arrays are made: the peak memory is here.
+  stamp = {};
+  region = {};
   auto rotated = [](const FTri& f) {
     Tri t{f.v[0], f.v[1], f.v[2]};
     while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
@@ -87,8 +90,6 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
     }
   }
   tris = {};
-  stamp = {};
-  region = {};
   for (std::size_t v = 0; v < nv; ++v)
     std::sort(mesh.triangles.begin() + start[v], mesh.triangles.begin() + start[v + 1]);
   // Constrained edges: few; a plain sort in canonicalize's order.
