@@ -137,7 +137,8 @@ struct TriMesh {
   // Domain triangles as a Mesh (vertices in id order, not canonicalized).
   Mesh to_mesh(const SegmentMembership& membership) const;
   // The mesh in lepp::canonicalize's order (a bucket sort: linear time), taking
-  // the arrays' memory as it goes: this TriMesh is empty afterwards.
+  // the arrays' memory as it goes (the triangles packed in place first, so the
+  // peak stays that of the refinement): this TriMesh is empty afterwards.
   Mesh take_canonical_mesh(const SegmentMembership& membership);
 };
 
