@@ -6,7 +6,7 @@
 # shared machine; with the share of the statistics and of the writers), then RUNS rounds
 # in which every binary runs once, in turn (interleaved, so a change in the machine's
 # load falls on all alike): medians of wall time, CPU time (user + system), system time
-# and peak resident memory. Prints a markdown table.
+# and peak resident memory (also per output triangle). Prints a markdown table.
 # usage: bench/one_core.sh LEPP... (environment: AREA=0.015 RUNS=7 CALLGRIND=1 OUT=/tmp)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -35,7 +35,7 @@ fi
 # Interleaved timed runs: wall, user + system, peak resident set (GNU time).
 for ((r = 0; r < runs; ++r)); do
   for i in "${!bins[@]}"; do
-    /usr/bin/time -f "%e %U %S %M" -o "$out_dir/time.$i.$r" "${bins[$i]}" "${args[@]}" -o "$out_dir/m" > /dev/null
+    /usr/bin/time -f "%e %U %S %M" -o "$out_dir/time.$i.$r" "${bins[$i]}" "${args[@]}" -o "$out_dir/m" > "$out_dir/stdout.$i"
   done
 done
 
@@ -46,15 +46,17 @@ def millions(n):
     return f"{int(n) / 1e6:,.0f} M"
 print(f"Square400, theta = 30, --max-area {area}; medians of {runs} interleaved runs, one core each")
 print()
-print("| binary | instructions | of which statistics | of which writing | wall s | CPU s | of which system | peak MB |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|")
+print("| binary | triangles | instructions | of which statistics | of which writing | wall s | CPU s | of which system | peak MiB | peak bytes / triangle |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 for i, b in enumerate(bins):
     rows = [open(f"{out}/time.{i}.{r}").read().split()[-4:] for r in range(runs)]
     wall = statistics.median(float(x[0]) for x in rows)
     cpu = statistics.median(float(x[1]) + float(x[2]) for x in rows)
     system = statistics.median(float(x[2]) for x in rows)
-    peak = statistics.median(int(x[3]) for x in rows) / 1024
+    peak_kib = statistics.median(int(x[3]) for x in rows)
+    triangles = next(int(l.split()[1]) for l in open(f"{out}/stdout.{i}") if l.startswith("triangles "))
     counts = open(f"{out}/instr.{i}").read().split() if os.path.exists(f"{out}/instr.{i}") else ["0"] * 3
     total, stats, writing = (millions(c) if c != "0" else "" for c in counts)
-    print(f"| {b} | {total} | {stats} | {writing} | {wall:.3f} | {cpu:.3f} | {system:.3f} | {peak:.0f} |")
+    print(f"| {b} | {triangles:,} | {total} | {stats} | {writing} | {wall:.3f} | {cpu:.3f} | {system:.3f} | "
+          f"{peak_kib / 1024:.0f} | {peak_kib * 1024 / triangles:.1f} |")
 PY
