@@ -9,11 +9,13 @@
 #include <fmt/os.h>
 
 #include "lepp/io.h"
+#include "block_file.h"
 #include "line_reader.h"
 
 namespace lepp {
 namespace {
 
+using detail::BlockFile;
 using detail::LineReader;
 using Tokens = std::vector<std::string_view>;
 
@@ -89,29 +91,32 @@ Mesh read_mesh(const std::string& prefix) {
 void write_mesh(const std::string& prefix, const Mesh& mesh) {
   try {
     {
-      auto out = fmt::output_file(prefix + ".node");
+      BlockFile out(prefix + ".node");
       out.print("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n");
       out.print("{} 2 0 1\n", mesh.vertices.size());
       for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-        out.print("{} {} {} {}\n", i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
+        out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
+      out.close();
     }
     {
-      auto out = fmt::output_file(prefix + ".ele");
+      BlockFile out(prefix + ".ele");
       out.print("{} 3 0\n", mesh.triangles.size());
       for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         const Tri& t = mesh.triangles[i];
-        out.print("{} {} {} {}\n", i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
+        out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
       }
+      out.close();
     }
     {
-      auto out = fmt::output_file(prefix + ".poly");
+      BlockFile out(prefix + ".poly");
       out.print("# lepp mesh: constrained edges; marker = input segment number (1-based), 0 if unknown\n");
       out.print("0 2 0 1\n{} 1\n", mesh.constrained_edges.size());
       for (std::size_t i = 0; i < mesh.constrained_edges.size(); ++i) {
         const ConstrainedEdge& e = mesh.constrained_edges[i];
-        out.print("{} {} {} {}\n", i + 1, e.a + 1, e.b + 1, e.segment + 1);
+        out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, e.a + 1, e.b + 1, e.segment + 1);
       }
       out.print("0\n");
+      out.close();
     }
   } catch (const std::system_error& e) {
     throw InputError(prefix, 0, fmt::format("cannot write mesh: {}", e.what()));

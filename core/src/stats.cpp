@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lepp/stats.h"
 
+#include "lepp/angle_args.h"
 #include "lepp/refine.h"
 
 #include <algorithm>
@@ -15,29 +16,49 @@ double average_lepp_size(const RefineResult& result) {
 
 namespace {
 double len(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double squared_length(const Point& a, const Point& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return dx * dx + dy * dy;
+}
+// Twice the area of abc: one expression for every measure, so they see the same double.
+double doubled_area(const Point& a, const Point& b, const Point& c) {
+  return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
 
-// p - o scaled by a power of two so that its larger component is in [1, 2): the
-// direction is kept and neither the difference nor the products after it over- or
-// underflow. A difference that overflows is taken of the halves (exact at that size).
-Point scaled_direction(const Point& o, const Point& p) {
-  double dx = p.x - o.x, dy = p.y - o.y;
-  if (!std::isfinite(dx) || !std::isfinite(dy)) dx = p.x / 2 - o.x / 2, dy = p.y / 2 - o.y / 2;
-  const double m = std::max(std::abs(dx), std::abs(dy));
-  if (!(m > 0) || !std::isfinite(m)) return {dx, dy};
-  const int e = std::ilogb(m);
-  return {std::ldexp(dx, -e), std::ldexp(dy, -e)};
+// mesh_stats skips hypot for a triangle whose squares show it cannot hold a new
+// minimum (almost all of them). Squares in [2^-900, 2^900] neither underflow nor
+// overflow, so each is within a few 2^-53 of the truth, as hypot is; a triangle is
+// skipped only when it clears the minimum by 2^-40, far beyond those roundings.
+constexpr double kTiny = 0x1p-900, kHuge = 0x1p900;
+constexpr double kClear = 1 + 0x1p-40;
+constexpr double kNone = std::numeric_limits<double>::infinity();  // skip nothing
+bool safe_square(double v) { return v >= kTiny && v <= kHuge; }
+
+// A triangle whose shortest squared edge is above this has no edge below `shortest`.
+double shortest_edge_bound(double shortest) {
+  return shortest >= 0x1p-400 && shortest <= 0x1p400 ? shortest * shortest * kClear : kNone;
+}
+// area_quality is (2 / sqrt 3) area2 / longest^2: a triangle whose area2 / longest
+// square is above this has a quality above `min_q`.
+double area_quality_bound(double min_q) {
+  return min_q >= 0x1p-800 && min_q <= 4 ? min_q * (std::sqrt(3.0) / 2) * kClear : kNone;
 }
 }  // namespace
 
-double signed_angle_deg(const Point& o, const Point& p, const Point& q) {
-  const Point u = scaled_direction(o, p), v = scaled_direction(o, q);
-  return std::atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y) * 180.0 / M_PI;
-}
+double signed_angle_deg(const Point& o, const Point& p, const Point& q) { return signed_degrees(angle_args(o, p, q)); }
 
 double angle_deg(const Point& o, const Point& p, const Point& q) { return std::abs(signed_angle_deg(o, p, q)); }
 
 double min_angle_deg(const Point& a, const Point& b, const Point& c) {
-  return std::min({angle_deg(a, b, c), angle_deg(b, c, a), angle_deg(c, a, b)});
+  const std::array<AngleArgs, 3> at = triangle_angle_args(a, b, c);
+  // The angle no other is clearly below, then one atan2 if it is clearly below both
+  // others; otherwise (a tie within 2^-40 radians, a degenerate triangle) all three,
+  // as the minimum of the three was always taken.
+  int k = clearly_smaller(at[1], at[0]) ? 1 : 0;
+  if (clearly_smaller(at[2], at[k])) k = 2;
+  if (clearly_smaller(at[k], at[(k + 1) % 3]) && clearly_smaller(at[k], at[(k + 2) % 3]))
+    return std::abs(signed_degrees(at[k]));
+  return std::min({std::abs(signed_degrees(at[0])), std::abs(signed_degrees(at[1])), std::abs(signed_degrees(at[2]))});
 }
 
 double max_angle_deg(const Point& a, const Point& b, const Point& c) {
@@ -46,7 +67,7 @@ double max_angle_deg(const Point& a, const Point& b, const Point& c) {
 
 double radius_ratio(const Point& a, const Point& b, const Point& c) {
   // 2 r / R = 16 area^2 / (|ab| |bc| |ca| (|ab| + |bc| + |ca|)).
-  const double area2 = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  const double area2 = doubled_area(a, b, c);
   const double ab = len(a, b), bc = len(b, c), ca = len(c, a);
   const double den = ab * bc * ca * (ab + bc + ca);
   return den > 0 ? 4.0 * area2 * area2 / den : 0.0;
@@ -59,7 +80,7 @@ double edge_ratio(const Point& a, const Point& b, const Point& c) {
 }
 
 double area_quality(const Point& a, const Point& b, const Point& c) {
-  double area2 = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  const double area2 = doubled_area(a, b, c);
   double l = std::max({len(a, b), len(b, c), len(c, a)});
   return l > 0 ? (2.0 / std::sqrt(3.0)) * area2 / (l * l) : 0.0;
 }
@@ -70,14 +91,25 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
   s.triangles = mesh.triangles.size();
   double min_angle = 180, sum = 0, min_q = std::numeric_limits<double>::infinity();
   double shortest = std::numeric_limits<double>::infinity();
+  double shortest_bound = kNone, quality_bound = kNone;
   for (const Tri& t : mesh.triangles) {
     const Point &a = mesh.vertices[static_cast<std::size_t>(t[0])], &b = mesh.vertices[static_cast<std::size_t>(t[1])],
                 &c = mesh.vertices[static_cast<std::size_t>(t[2])];
     double m = min_angle_deg(a, b, c);
     min_angle = std::min(min_angle, m);
     sum += m;
-    min_q = std::min(min_q, area_quality(a, b, c));
-    shortest = std::min({shortest, len(a, b), len(b, c), len(c, a)});
+    const double ab = squared_length(a, b), bc = squared_length(b, c), ca = squared_length(c, a);
+    const bool well_scaled = safe_square(ab) && safe_square(bc) && safe_square(ca);  // false for a NaN too
+    const double lo = std::min({ab, bc, ca}), hi = std::max({ab, bc, ca});
+    if (!(well_scaled && lo > shortest_bound)) {
+      shortest = std::min({shortest, len(a, b), len(b, c), len(c, a)});
+      shortest_bound = shortest_edge_bound(shortest);
+    }
+    const double area2 = doubled_area(a, b, c);
+    if (!(well_scaled && area2 >= kTiny && area2 / hi > quality_bound)) {
+      min_q = std::min(min_q, area_quality(a, b, c));
+      quality_bound = area_quality_bound(min_q);
+    }
   }
   double input_shortest = std::numeric_limits<double>::infinity();
   for (const Segment& seg : input.segments)

@@ -41,7 +41,7 @@ void write_msh2(const std::string& path, const Mesh& mesh, const MeshLabels& lab
       out.raw(id);
       out.bytes(xyz, sizeof xyz);
     } else {
-      out.print("{} {} {} 0\n", v + 1, p.x, p.y);
+      out.print(FMT_COMPILE("{} {} {} 0\n"), v + 1, p.x, p.y);
     }
   }
   out.print("{}$EndNodes\n", binary ? "\n" : "");
@@ -58,9 +58,9 @@ void write_msh2(const std::string& path, const Mesh& mesh, const MeshLabels& lab
       for (int k = 0; k < count; ++k) record[3 + k] = vertices[k] + 1;
       out.bytes(record, sizeof(int) * static_cast<std::size_t>(3 + count));
     } else if (count == 3) {
-      out.print("{} {} 2 {} {} {} {} {}\n", id, type, e.physical, e.tag, vertices[0] + 1, vertices[1] + 1, vertices[2] + 1);
+      out.print(FMT_COMPILE("{} {} 2 {} {} {} {} {}\n"), id, type, e.physical, e.tag, vertices[0] + 1, vertices[1] + 1, vertices[2] + 1);
     } else {
-      out.print("{} {} 2 {} {} {} {}\n", id, type, e.physical, e.tag, vertices[0] + 1, vertices[1] + 1);
+      out.print(FMT_COMPILE("{} {} 2 {} {} {} {}\n"), id, type, e.physical, e.tag, vertices[0] + 1, vertices[1] + 1);
     }
   };
   if (binary && m > 0) {

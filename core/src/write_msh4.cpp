@@ -93,14 +93,14 @@ void write_msh4(const std::string& path, const Mesh& mesh, const MeshLabels& lab
       if (binary)
         out.raw(static_cast<std::uint64_t>(v + 1));
       else
-        out.print("{}\n", v + 1);
+        out.print(FMT_COMPILE("{}\n"), v + 1);
     }
     for (const Point& p : mesh.vertices) {
       if (binary) {
         const double xyz[3] = {p.x, p.y, 0.0};
         out.bytes(xyz, sizeof xyz);
       } else {
-        out.print("{} {} 0\n", p.x, p.y);
+        out.print(FMT_COMPILE("{} {} 0\n"), p.x, p.y);
       }
     }
   }
@@ -123,7 +123,7 @@ void write_msh4(const std::string& path, const Mesh& mesh, const MeshLabels& lab
         const std::uint64_t record[3] = {id, a, b};
         out.bytes(record, sizeof record);
       } else {
-        out.print("{} {} {}\n", id, a, b);
+        out.print(FMT_COMPILE("{} {} {}\n"), id, a, b);
       }
     }
   }
@@ -137,7 +137,7 @@ void write_msh4(const std::string& path, const Mesh& mesh, const MeshLabels& lab
       if (binary)
         out.bytes(record, sizeof record);
       else
-        out.print("{} {} {} {}\n", record[0], record[1], record[2], record[3]);
+        out.print(FMT_COMPILE("{} {} {} {}\n"), record[0], record[1], record[2], record[3]);
     }
   }
   out.print("{}$EndElements\n", nl);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <fmt/format.h>
@@ -195,19 +196,26 @@ class Refiner {
     // then the precision-stopped triangles still there (section 8b: the last look
     // at each found no insertable point), once each, unless section 8 lists them.
     std::vector<Keyed> left;
-    std::vector<const Stopped*> stopped_at(static_cast<std::size_t>(mesh_.size()), nullptr);
+    // By slot, the few stopped triangles still there: a map, not a pointer per
+    // triangle (8 bytes each, alive when the output mesh is made: issue 31).
+    std::unordered_map<int, const Stopped*> stopped_at;
     for (const Stopped& s : stopped_)
-      if (still_there(mesh_, s.item)) stopped_at[static_cast<std::size_t>(s.item.tri)] = &s;
+      if (still_there(mesh_, s.item)) stopped_at[s.item.tri] = &s;
+    auto stopped_in = [&stopped_at](int ti) -> const Stopped* {
+      if (stopped_at.empty()) return nullptr;
+      const auto it = stopped_at.find(ti);
+      return it == stopped_at.end() ? nullptr : it->second;
+    };
     for (int ti = 0; ti < mesh_.size(); ++ti) {
       const bool angle_rule =
           quality_.judge(mesh_, ti).skinny && quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr);
-      if (angle_rule) stopped_at[static_cast<std::size_t>(ti)] = nullptr;
-      if (angle_rule || stopped_at[static_cast<std::size_t>(ti)]) left.push_back(keyed(mesh_, ti));
+      if (angle_rule) stopped_at.erase(ti);
+      if (angle_rule || stopped_in(ti)) left.push_back(keyed(mesh_, ti));
     }
     std::sort(left.begin(), left.end(), key_less);
     for (const Keyed& k : left) {
       UnimprovableTriangle u;
-      if (const Stopped* s = stopped_at[static_cast<std::size_t>(k.item.tri)]) {
+      if (const Stopped* s = stopped_in(k.item.tri)) {
         u.reason = LeftReason::DoublePrecision;
         u.rule = s->rule;
         u.point = s->point;

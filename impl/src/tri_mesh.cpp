@@ -4,14 +4,34 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #ifdef __linux__
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace lepp::fast {
+namespace {
+
+// Returns the whole pages within [begin, end) to the system (their contents are
+// no longer needed); elsewhere than on Linux, nothing.
+void release_pages(unsigned char* begin, unsigned char* end) {
+#ifdef __linux__
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) & ~(page - 1);
+  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(page - 1);
+  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+  (void)begin;
+  (void)end;
+#endif
+}
+
+}  // namespace
 
 SegmentMembership make_membership(const Pslg& pslg) {
   SegmentMembership m;
@@ -34,30 +54,11 @@ SegmentMembership make_membership(const Pslg& pslg) {
   return m;
 }
 
-namespace {
-template <class T>
-void advise_huge_pages(const std::vector<T>& v) {
-#ifdef __linux__
-  const std::uintptr_t huge = std::uintptr_t{1} << 21;
-  auto begin = reinterpret_cast<std::uintptr_t>(v.data());
-  auto end = begin + v.capacity() * sizeof(T);
-  begin = (begin + huge - 1) & ~(huge - 1);
-  end &= ~(huge - 1);
-  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-  (void)v;
-#endif
-}
-}  // namespace
-
 void TriMesh::reserve(std::size_t vertices, std::size_t triangles) {
   pts.reserve(vertices);
   tris.reserve(triangles);
   stamp.reserve(triangles);
   if (!region.empty()) region.reserve(triangles);
-  advise_huge_pages(pts);
-  advise_huge_pages(tris);
-  advise_huge_pages(stamp);
 }
 
 Mesh TriMesh::to_mesh(const SegmentMembership& membership) const {
@@ -82,38 +83,51 @@ Mesh TriMesh::to_mesh(const SegmentMembership& membership) const {
 Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   Mesh mesh;
   mesh.input_vertices = static_cast<std::size_t>(membership.input_vertices);
-  const std::size_t nv = pts.size();
+  const std::size_t nv = pts.size(), nt = tris.size();
   mesh.vertices = std::move(pts);
   pts = {};
+  // Freed before the output's arrays are made: the peak memory is here.
+  stamp = {};
+  region = {};
   auto rotated = [](const FTri& f) {
     Tri t{f.v[0], f.v[1], f.v[2]};
     while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
     return t;
   };
-  // Triangles: bucket by the smallest id (counting sort), then order each small bucket.
+  // First pass: each triangle rotated to start at its smallest id, written as a
+  // 12-byte Tri at the front of the engine's own array, over the 28-byte triangles
+  // already read (Tri i ends at byte 12 i + 12, before triangle i + 1 begins), and
+  // its constrained edges; the bucket sizes counted.
+  static_assert(sizeof(Tri) <= sizeof(FTri) && std::is_trivially_copyable_v<FTri> && std::is_trivially_copyable_v<Tri>);
+  unsigned char* packed = reinterpret_cast<unsigned char*>(tris.data());
   std::vector<std::uint32_t> start(nv + 1, 0);
-  for (const FTri& f : tris) ++start[static_cast<std::size_t>(std::min({f.v[0], f.v[1], f.v[2]})) + 1];
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  mesh.triangles.resize(tris.size());
   std::vector<ConstrainedEdge> edges;
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (int ti = 0; ti < size(); ++ti) {
-      const FTri& f = t(ti);
-      Tri r = rotated(f);
-      mesh.triangles[fill[static_cast<std::size_t>(r[0])]++] = r;
-      for (int i = 0; i < 3; ++i) {
-        if (f.seg[i] < 0 || (f.nbr[i] >= 0 && nbr_tri(f.nbr[i]) < ti)) continue;
-        int a = f.v[next3(i)], b = f.v[prev3(i)];
-        edges.push_back({std::min(a, b), std::max(a, b), membership.segment_of(a, b)});
-      }
+  for (std::size_t ti = 0; ti < nt; ++ti) {
+    const FTri f = tris[ti];
+    const Tri r = rotated(f);
+    ++start[static_cast<std::size_t>(r[0]) + 1];
+    for (int i = 0; i < 3; ++i) {
+      if (f.seg[i] < 0 || (f.nbr[i] >= 0 && static_cast<std::size_t>(nbr_tri(f.nbr[i])) < ti)) continue;
+      int a = f.v[next3(i)], b = f.v[prev3(i)];
+      edges.push_back({std::min(a, b), std::max(a, b), membership.segment_of(a, b)});
     }
+    std::memcpy(packed + ti * sizeof(Tri), &r, sizeof r);
+  }
+  // The rest of the array is given back before the output's triangles are made,
+  // so the two never hold 28 + 12 bytes per triangle at once.
+  release_pages(packed + nt * sizeof(Tri), packed + nt * sizeof(FTri));
+  // Second pass: a counting sort by the smallest id into the output; start[v] is
+  // bucket v's next free place, so afterwards bucket v ends at start[v].
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  mesh.triangles.resize(nt);
+  for (std::size_t ti = 0; ti < nt; ++ti) {
+    Tri r;
+    std::memcpy(&r, packed + ti * sizeof(Tri), sizeof r);
+    mesh.triangles[start[static_cast<std::size_t>(r[0])]++] = r;
   }
   tris = {};
-  stamp = {};
-  region = {};
   for (std::size_t v = 0; v < nv; ++v)
-    std::sort(mesh.triangles.begin() + start[v], mesh.triangles.begin() + start[v + 1]);
+    std::sort(mesh.triangles.begin() + (v ? start[v - 1] : 0), mesh.triangles.begin() + start[v]);
   // Constrained edges: few; a plain sort in canonicalize's order.
   std::sort(edges.begin(), edges.end(), [](const ConstrainedEdge& x, const ConstrainedEdge& y) {
     return std::tie(x.a, x.b, x.segment) < std::tie(y.a, y.b, y.segment);

@@ -88,9 +88,11 @@ struct TriMesh {
   const FTri& t(int i) const { return tris[static_cast<std::size_t>(i)]; }
   int size() const { return static_cast<int>(tris.size()); }
 
-  // Reserves room for a refinement of this size, asking for huge pages: the
-  // Lawson flips and the fifo queue touch triangles all over the arrays, and
-  // 2 MiB pages spare most TLB misses. Untouched capacity costs no memory.
+  // Reserves room for a refinement of this size. Untouched capacity costs no
+  // memory. No huge pages (madvise): on the project machine (a VM) the kernel's
+  // zeroing of each new 2 MiB page cost up to 2.5 s of system time at 10^7
+  // triangles, near the run's 3.3 s of user time, and saved no measurable user
+  // time (docs/BENCHMARKS.md, issue 31).
   void reserve(std::size_t vertices, std::size_t triangles);
 
   void put(int ti, const FTri& f) {
@@ -145,7 +147,8 @@ struct TriMesh {
   // Domain triangles as a Mesh (vertices in id order, not canonicalized).
   Mesh to_mesh(const SegmentMembership& membership) const;
   // The mesh in lepp::canonicalize's order (a bucket sort: linear time), taking
-  // the arrays' memory as it goes: this TriMesh is empty afterwards.
+  // the arrays' memory as it goes (the triangles packed in place first, so the
+  // peak stays that of the refinement): this TriMesh is empty afterwards.
   Mesh take_canonical_mesh(const SegmentMembership& membership);
 };
 
