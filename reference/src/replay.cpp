@@ -438,8 +438,10 @@ struct Replay::Impl {
 
   // The domain triangles around p: those incident to a vertex of the
   // triangle(s) containing it (a point within tolerance of a choice lies in
-  // or next to the choice's terminal triangles).
-  std::vector<FH> faces_near(const Point& p, bool& at_vertex) {
+  // or next to the choice's terminal triangles). wide: one ring more, for a
+  // midpoint rounded half an ulp beyond its constrained edge, past a sliver
+  // there into a triangle that shares no vertex with the terminal pair.
+  std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false) {
     Cdt::Locate_type lt;
     int li;
     FH f = tr.cdt.locate(CPoint(p.x, p.y), lt, li, hint());
@@ -457,6 +459,18 @@ struct Replay::Impl {
         if (in_domain(fc) && seen.insert(fc).second) out.push_back(fc);
       } while (++fc != done);
     }
+    if (!wide) return out;
+    std::set<VH> ring(around.begin(), around.end());
+    const std::size_t inner = out.size();
+    for (std::size_t k = 0; k < inner; ++k)
+      for (int i = 0; i < 3; ++i) {
+        VH v = out[k]->vertex(i);
+        if (!ring.insert(v).second) continue;
+        Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+        do {
+          if (in_domain(fc) && seen.insert(fc).second) out.push_back(fc);
+        } while (++fc != done);
+      }
     return out;
   }
 
@@ -556,9 +570,9 @@ struct Replay::Impl {
   // At the precision limit several choices lie within the tolerance of p (a
   // midpoint a few ulps off its edge is also near the midpoint of the next
   // one): the first that can be inserted at p is taken, else the first.
-  bool match_here(const Point& p, ReplayChoice& out) {
+  bool match_here(const Point& p, ReplayChoice& out, bool wide = false) {
     bool at_vertex = false, found = false;
-    std::vector<FH> faces = faces_near(p, at_vertex);
+    std::vector<FH> faces = faces_near(p, at_vertex, wide);
     if (at_vertex) return false;
     for (const Terminal& t : terminals(faces)) {
       std::vector<Candidate> cands = candidates(t);
@@ -672,7 +686,7 @@ struct Replay::Impl {
   bool match_paper(const Point& p, ReplayChoice& out) {
     search_exhausted_ = false;
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
-    if (match_here(p, out)) return true;
+    if (match_here(p, out) || match_here(p, out, true)) return true;
     if (!rules.follow_cocircular_flips) return false;
     if (match_any_triangulation(p, out)) return true;
     // Only when the search of the cells ran out of budget, or at a point that
