@@ -6,18 +6,34 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "double_lengths.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
 
 namespace {
 
-FT squared_length(VH a, VH b) { return CGAL::squared_distance(a->point(), b->point()); }
+// The double coordinates of v's point in p; false if they are not doubles
+// (never for a vertex: every one is made from doubles, its interval a point).
+bool double_coords(VH v, Point& p) {
+  const auto& q = CGAL::approx(v->point());
+  p = {q.x().inf(), q.y().inf()};
+  return q.x().is_point() && q.y().is_point();
+}
+
+// sign(|ab|^2 - |cd|^2), exactly: on the doubles (double_lengths.h), not in lazy Epeck.
+int compare_edge_lengths(VH a, VH b, VH c, VH d) {
+  Point pa, pb, pc, pd;
+  if (double_coords(a, pa) && double_coords(b, pb) && double_coords(c, pc) && double_coords(d, pd))
+    return compare_squared_lengths(pa, pb, pc, pd);
+  return static_cast<int>(CGAL::compare(CGAL::squared_distance(a->point(), b->point()),
+                                        CGAL::squared_distance(c->point(), d->point())));
+}
 
 // Edge order key (squared length, -min id, -max id): true iff ab > cd.
 bool edge_greater(VH a, VH b, VH c, VH d) {
-  CGAL::Comparison_result r = CGAL::compare(squared_length(a, b), squared_length(c, d));
-  if (r != CGAL::EQUAL) return r == CGAL::LARGER;
+  const int r = compare_edge_lengths(a, b, c, d);
+  if (r != 0) return r > 0;
   int ab_min = std::min(id(a), id(b)), ab_max = std::max(id(a), id(b));
   int cd_min = std::min(id(c), id(d)), cd_max = std::max(id(c), id(d));
   if (ab_min != cd_min) return ab_min < cd_min;  // older vertices win ties
@@ -33,7 +49,7 @@ std::array<int, 3> edges_ascending(FH f) {
 
 // Edges i and j of f have exactly the same length.
 bool same_length(FH f, int i, int j) {
-  return squared_length(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i))) == squared_length(f->vertex(Cdt::ccw(j)), f->vertex(Cdt::cw(j)));
+  return compare_edge_lengths(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i)), f->vertex(Cdt::ccw(j)), f->vertex(Cdt::cw(j))) == 0;
 }
 
 }  // namespace
