@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "double_lengths.h"
+#include "double_predicates.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
@@ -21,7 +21,7 @@ bool double_coords(VH v, Point& p) {
   return q.x().is_point() && q.y().is_point();
 }
 
-// sign(|ab|^2 - |cd|^2), exactly: on the doubles (double_lengths.h), not in lazy Epeck.
+// sign(|ab|^2 - |cd|^2), exactly: on the doubles (double_predicates.h), not in lazy Epeck.
 int compare_edge_lengths(VH a, VH b, VH c, VH d) {
   Point pa, pb, pc, pd;
   if (double_coords(a, pa) && double_coords(b, pb) && double_coords(c, pc) && double_coords(d, pd))
@@ -93,6 +93,11 @@ Tri ccw_ids(FH f) {
 // the edge vectors leaving it: skinny iff cross(u,v)^2 < S |u|^2 |v|^2.
 bool is_skinny(FH f, const FT& sin2) {
   int i = shortest_edge(f);
+  Point o_d, b_d, c_d;
+  const auto& s = CGAL::approx(sin2);  // a double in every caller: engine_sin2_threshold's
+  if (s.is_point() && double_coords(f->vertex(i), o_d) && double_coords(f->vertex(Cdt::ccw(i)), b_d) &&
+      double_coords(f->vertex(Cdt::cw(i)), c_d))
+    return skinny_at(o_d, b_d, c_d, s.inf());
   const CPoint& o = f->vertex(i)->point();
   K::Vector_2 u = f->vertex(Cdt::ccw(i))->point() - o, v = f->vertex(Cdt::cw(i))->point() - o;
   FT cross = u.x() * v.y() - u.y() * v.x();
