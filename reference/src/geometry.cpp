@@ -155,14 +155,28 @@ std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, 
   return best;
 }
 
+namespace {
+
+// longest_edge(f), looked up in memo and kept there when given.
+int longest_edge(FH f, LongestEdgeMemo* memo) {
+  if (!memo || id(f->vertex(0)) < 0 || id(f->vertex(1)) < 0 || id(f->vertex(2)) < 0) return longest_edge(f);
+  auto [it, fresh] = memo->try_emplace(key(f), -1);
+  if (fresh) it->second = id(f->vertex(longest_edge(f)));
+  for (int i = 0; i < 3; ++i)
+    if (id(f->vertex(i)) == it->second) return i;
+  throw std::logic_error("reference: a remembered longest edge is not the face's");
+}
+
+}  // namespace
+
 // ALGORITHM.md Section 3: follow longest edges while they grow; stop at a
 // constrained longest edge or at an edge that is longest for both triangles.
-Lepp find_lepp(FH t) {
+Lepp find_lepp(FH t, LongestEdgeMemo* memo) {
   Lepp lepp;
   FH f = t;
   for (;;) {
     lepp.path.push_back(f);
-    int i = longest_edge(f);
+    int i = longest_edge(f, memo);
     if (f->is_constrained(i)) {
       lepp.t1 = f;
       lepp.edge = i;
@@ -171,7 +185,7 @@ Lepp find_lepp(FH t) {
     FH n = f->neighbor(i);
     if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");
     int j = n->index(f);
-    if (longest_edge(n) == j) {
+    if (longest_edge(n, memo) == j) {
       lepp.t1 = f;
       lepp.t2 = n;
       lepp.edge = i;
