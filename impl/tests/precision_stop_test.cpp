@@ -489,6 +489,15 @@ TEST(PrecisionStop, PointsUlpsApartOnAnEdgeCertifyStrictly) {
   for (int theta : {10, 15, 20, 22}) both_engines(p, theta, Method::Midpoint, fmt::format("on-edge-ulps midpoint at {}", theta));
 }
 
+// fuzz_refine's input of issue 28 (a polygon with copies of (0, 0) a few ulps apart,
+// grid step 2^-10): at 20 degrees the reference took 119 s (the fast engine 1 s, the
+// same mesh), most of it exact length comparisons in lazy Epeck that its interval
+// filters could not decide, and the fuzzers timed out in their band. Now a few seconds
+// (docs/BENCHMARKS.md, "The reference on ulp clusters"); the same mesh, certified.
+TEST(PrecisionStop, ReferenceSlowClusterAgreesAt20Degrees) {
+  both_engines(load("reference-slow-cluster.poly"), 20, Method::Centroid, "reference-slow-cluster at 20");
+}
+
 // One generated input at the limit of doubles (properties/gen gen_precision.h):
 // the run of either engine ends (no exception), both agree, the mesh certifies.
 void generated_case(const Pslg& raw, double theta, Method method) {

@@ -6,18 +6,34 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "double_predicates.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
 
 namespace {
 
-FT squared_length(VH a, VH b) { return CGAL::squared_distance(a->point(), b->point()); }
+// The double coordinates of v's point in p; false if they are not doubles
+// (never for a vertex: every one is made from doubles, its interval a point).
+bool double_coords(VH v, Point& p) {
+  const auto& q = CGAL::approx(v->point());
+  p = {q.x().inf(), q.y().inf()};
+  return q.x().is_point() && q.y().is_point();
+}
+
+// sign(|ab|^2 - |cd|^2), exactly: on the doubles (double_predicates.h), not in lazy Epeck.
+int compare_edge_lengths(VH a, VH b, VH c, VH d) {
+  Point pa, pb, pc, pd;
+  if (double_coords(a, pa) && double_coords(b, pb) && double_coords(c, pc) && double_coords(d, pd))
+    return compare_squared_lengths(pa, pb, pc, pd);
+  return static_cast<int>(CGAL::compare(CGAL::squared_distance(a->point(), b->point()),
+                                        CGAL::squared_distance(c->point(), d->point())));
+}
 
 // Edge order key (squared length, -min id, -max id): true iff ab > cd.
 bool edge_greater(VH a, VH b, VH c, VH d) {
-  CGAL::Comparison_result r = CGAL::compare(squared_length(a, b), squared_length(c, d));
-  if (r != CGAL::EQUAL) return r == CGAL::LARGER;
+  const int r = compare_edge_lengths(a, b, c, d);
+  if (r != 0) return r > 0;
   int ab_min = std::min(id(a), id(b)), ab_max = std::max(id(a), id(b));
   int cd_min = std::min(id(c), id(d)), cd_max = std::max(id(c), id(d));
   if (ab_min != cd_min) return ab_min < cd_min;  // older vertices win ties
@@ -33,7 +49,7 @@ std::array<int, 3> edges_ascending(FH f) {
 
 // Edges i and j of f have exactly the same length.
 bool same_length(FH f, int i, int j) {
-  return squared_length(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i))) == squared_length(f->vertex(Cdt::ccw(j)), f->vertex(Cdt::cw(j)));
+  return compare_edge_lengths(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i)), f->vertex(Cdt::ccw(j)), f->vertex(Cdt::cw(j))) == 0;
 }
 
 }  // namespace
@@ -77,6 +93,11 @@ Tri ccw_ids(FH f) {
 // the edge vectors leaving it: skinny iff cross(u,v)^2 < S |u|^2 |v|^2.
 bool is_skinny(FH f, const FT& sin2) {
   int i = shortest_edge(f);
+  Point o_d, b_d, c_d;
+  const auto& s = CGAL::approx(sin2);  // a double in every caller: engine_sin2_threshold's
+  if (s.is_point() && double_coords(f->vertex(i), o_d) && double_coords(f->vertex(Cdt::ccw(i)), b_d) &&
+      double_coords(f->vertex(Cdt::cw(i)), c_d))
+    return skinny_at(o_d, b_d, c_d, s.inf());
   const CPoint& o = f->vertex(i)->point();
   K::Vector_2 u = f->vertex(Cdt::ccw(i))->point() - o, v = f->vertex(Cdt::cw(i))->point() - o;
   FT cross = u.x() * v.y() - u.y() * v.x();
@@ -134,14 +155,28 @@ std::optional<UnimprovableTriangle> unimprovable(const Triangulation& tr, FH f, 
   return best;
 }
 
+namespace {
+
+// longest_edge(f), looked up in memo and kept there when given.
+int longest_edge(FH f, LongestEdgeMemo* memo) {
+  if (!memo || id(f->vertex(0)) < 0 || id(f->vertex(1)) < 0 || id(f->vertex(2)) < 0) return longest_edge(f);
+  auto [it, fresh] = memo->try_emplace(key(f), -1);
+  if (fresh) it->second = id(f->vertex(longest_edge(f)));
+  for (int i = 0; i < 3; ++i)
+    if (id(f->vertex(i)) == it->second) return i;
+  throw std::logic_error("reference: a remembered longest edge is not the face's");
+}
+
+}  // namespace
+
 // ALGORITHM.md Section 3: follow longest edges while they grow; stop at a
 // constrained longest edge or at an edge that is longest for both triangles.
-Lepp find_lepp(FH t) {
+Lepp find_lepp(FH t, LongestEdgeMemo* memo) {
   Lepp lepp;
   FH f = t;
   for (;;) {
     lepp.path.push_back(f);
-    int i = longest_edge(f);
+    int i = longest_edge(f, memo);
     if (f->is_constrained(i)) {
       lepp.t1 = f;
       lepp.edge = i;
@@ -150,7 +185,7 @@ Lepp find_lepp(FH t) {
     FH n = f->neighbor(i);
     if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");
     int j = n->index(f);
-    if (longest_edge(n) == j) {
+    if (longest_edge(n, memo) == j) {
       lepp.t1 = f;
       lepp.t2 = n;
       lepp.edge = i;

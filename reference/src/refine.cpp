@@ -72,7 +72,7 @@ class Refiner {
       bool first = true;
       // "while t remains in tau": the triangle with t's three vertices.
       while (outcome == Outcome::Converged && exists(t, f)) {
-        Lepp lepp = find_lepp(f);
+        Lepp lepp = find_lepp(f, &longest_memo_);
         double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (options_.time_limit_seconds > 0 && elapsed > options_.time_limit_seconds) {
           outcome = Outcome::TimeLimit, stuck = describe(t, lepp);
@@ -267,6 +267,7 @@ class Refiner {
   std::int64_t refill_mark_ = 0;
   Triangulation tr_;
   BadQueue queue_{options_.order, options_.order_seed};
+  LongestEdgeMemo longest_memo_;
   std::vector<Tri> created_;  // the flip order: the last insertion's triangles, in creation order
   RefineResult result_;
 };

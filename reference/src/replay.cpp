@@ -18,6 +18,7 @@
 
 #include "lepp/angle.h"
 #include "cocircular_cells.h"
+#include "double_predicates.h"
 #include "exact_constructions.h"
 #include "lepp/reference_replay.h"
 #include "triangulation.h"
@@ -55,12 +56,25 @@ double approx_len2(const T& f, int i) {
   return dx * dx + dy * dy;
 }
 
-// Compares the lengths of edges i and j of f: filtered, exact when needed.
+// The double endpoints of edge i of f in p, q; false if a point is not a double.
+template <class T>
+bool double_edge(const T& f, int i, Point& p, Point& q) {
+  const auto& a = vtx(f, Cdt::ccw(i))->point().approx();
+  const auto& b = vtx(f, Cdt::cw(i))->point().approx();
+  p = {a.x().inf(), a.y().inf()}, q = {b.x().inf(), b.y().inf()};
+  return a.x().is_point() && a.y().is_point() && b.x().is_point() && b.y().is_point();
+}
+
+// Compares the lengths of edges i and j of f: filtered, exact when needed (on
+// the doubles, double_predicates.h: lazy Epeck's Gmpq took minutes on ulp clusters).
 template <class T>
 CGAL::Comparison_result compare_len_exact(const T& f, int i, int j) {
   double li = approx_len2(f, i), lj = approx_len2(f, j), m = std::max(li, lj);
   if (std::isfinite(li) && std::isfinite(lj) && m > 1e-280 && std::abs(li - lj) > 16 * DBL_EPSILON * m)
     return li < lj ? CGAL::SMALLER : CGAL::LARGER;
+  Point a, b, c, d;
+  if (double_edge(f, i, a, b) && double_edge(f, j, c, d))
+    return static_cast<CGAL::Comparison_result>(compare_squared_lengths(a, b, c, d));
   return CGAL::compare(len2(f, i), len2(f, j));
 }
 

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to the reference engine: exact predicates on points whose coordinates
+// are doubles (every vertex of the triangulation is). Lazy Epeck builds a node
+// per squared distance or product and, where its intervals cannot decide
+// (lengths that tie, or squares below the doubles' range: a cluster a few ulps
+// wide), an exact Gmpq with gcds: most of the engine's time on such clusters
+// (issue 28). Here: a double filter, then the exact value in CGAL::Mpzf (exact
+// for +, - and * on doubles, unbounded exponent, no gcd).
+//
+// Filters: each double value v is within a bound e of the exact one, written
+// below (u = 2^-53), on a range where no overflow happens and underflow adds at
+// most an absolute error far below the margin; the sign of v is trusted when
+// |v| exceeds a margin above e, else the exact path decides.
+#pragma once
+#include <cmath>
+
+#include "lepp/pslg.h"
+
+namespace lepp::reference::detail {
+
+constexpr double kU = 0x1p-53;
+
+// The exact paths, with no filter (also the filters' oracle in the tests).
+// sign(|ab|^2 - |cd|^2).
+int compare_squared_lengths_exact(const Point& a, const Point& b, const Point& c, const Point& d);
+// sign(sin2 |u|^2 |v|^2 - cross(u, v)^2) with u = b - apex, v = c - apex.
+int skinny_sign_exact(const Point& apex, const Point& b, const Point& c, double sin2);
+
+// sign(|ab|^2 - |cd|^2) exactly: -1, 0 or +1.
+inline int compare_squared_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double abx = a.x - b.x, aby = a.y - b.y, cdx = c.x - d.x, cdy = c.y - d.y;
+  const double lab = abx * abx + aby * aby, lcd = cdx * cdx + cdy * cdy;
+  // Each computed length is within 4.01u of its exact value (one rounded
+  // difference, one square, one sum), plus at most three underflows of 2^-1075
+  // each. Trusted where the larger is between 2^-900 and 2^1000: no overflow,
+  // and the underflows far below the margin of 8u (lab + lcd).
+  const double big = std::fmax(lab, lcd);
+  if (big >= 0x1p-900 && big <= 0x1p1000) {
+    const double margin = 8 * kU * (lab + lcd);
+    if (lab - lcd > margin) return 1;
+    if (lcd - lab > margin) return -1;
+  }
+  return compare_squared_lengths_exact(a, b, c, d);
+}
+
+// The angle at apex between u = b - apex and v = c - apex has sin^2 below sin2
+// (ALGORITHM.md section 4): cross(u, v)^2 < sin2 |u|^2 |v|^2, exactly. sin2 >= 0.
+inline bool skinny_at(const Point& apex, const Point& b, const Point& c, double sin2) {
+  const double ux = b.x - apex.x, uy = b.y - apex.y, vx = c.x - apex.x, vy = c.y - apex.y;
+  const double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
+  // With P = |ux vy| + |uy vx|: cross is within 4.02u P, cross^2 within 9.2u P^2,
+  // sin2 uu vv within 10.01u of its value, their difference rounded once: all
+  // within 12u (rhs + P^2). Underflows: at most 2^-1001 in all where uu and vv
+  // lie in [2^-400, 2^400] (and no overflow there).
+  if (uu >= 0x1p-400 && uu <= 0x1p400 && vv >= 0x1p-400 && vv <= 0x1p400) {
+    const double c1 = ux * vy, c2 = uy * vx, cross = c1 - c2, p = std::fabs(c1) + std::fabs(c2);
+    const double rhs = sin2 * (uu * vv), lhs = cross * cross;
+    const double margin = 16 * kU * (rhs + p * p) + 0x1p-1000;
+    if (rhs - lhs > margin) return true;
+    if (lhs - rhs > margin) return false;
+  }
+  return skinny_sign_exact(apex, b, c, sin2) > 0;
+}
+
+}  // namespace lepp::reference::detail
