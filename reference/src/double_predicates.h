@@ -26,6 +26,25 @@ int compare_squared_lengths_exact(const Point& a, const Point& b, const Point& c
 // sign(sin2 |u|^2 |v|^2 - cross(u, v)^2) with u = b - apex, v = c - apex.
 int skinny_sign_exact(const Point& apex, const Point& b, const Point& c, double sin2);
 
+// Lengths below the filter's range (a cluster of subnormals, fuzz_engine's seeds
+// at the limit): a difference of doubles is within u of the exact one (exact when
+// it is subnormal), and scaling all four by one power of two is exact and keeps
+// the sign, so the same filter runs with the largest at [1, 2); then the exact path.
+inline int compare_tiny_squared_lengths(double abx, double aby, double cdx, double cdy, const Point& a, const Point& b,
+                                        const Point& c, const Point& d) {
+  const double m = std::fmax(std::fmax(std::fabs(abx), std::fabs(aby)), std::fmax(std::fabs(cdx), std::fabs(cdy)));
+  if (m > 0 && std::isfinite(m)) {
+    const int k = -std::ilogb(m);
+    abx = std::ldexp(abx, k), aby = std::ldexp(aby, k), cdx = std::ldexp(cdx, k), cdy = std::ldexp(cdy, k);
+    const double lab = abx * abx + aby * aby, lcd = cdx * cdx + cdy * cdy;
+    // The larger is at least 1: the underflows (2^-1075 each) are far below the margin.
+    const double margin = 8 * kU * (lab + lcd);
+    if (lab - lcd > margin) return 1;
+    if (lcd - lab > margin) return -1;
+  }
+  return compare_squared_lengths_exact(a, b, c, d);
+}
+
 // sign(|ab|^2 - |cd|^2) exactly: -1, 0 or +1.
 inline int compare_squared_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double abx = a.x - b.x, aby = a.y - b.y, cdx = c.x - d.x, cdy = c.y - d.y;
@@ -39,7 +58,9 @@ inline int compare_squared_lengths(const Point& a, const Point& b, const Point& 
     const double margin = 8 * kU * (lab + lcd);
     if (lab - lcd > margin) return 1;
     if (lcd - lab > margin) return -1;
+    return compare_squared_lengths_exact(a, b, c, d);
   }
+  if (big < 0x1p-900) return compare_tiny_squared_lengths(abx, aby, cdx, cdy, a, b, c, d);
   return compare_squared_lengths_exact(a, b, c, d);
 }
 
