@@ -38,9 +38,9 @@ inline int compare_tiny_squared_lengths(double abx, double aby, double cdx, doub
     abx = std::ldexp(abx, k), aby = std::ldexp(aby, k), cdx = std::ldexp(cdx, k), cdy = std::ldexp(cdy, k);
     const double lab = abx * abx + aby * aby, lcd = cdx * cdx + cdy * cdy;
     // The larger is at least 1: the underflows (2^-1075 each) are far below the margin.
-    const double margin = 8 * kU * (lab + lcd);
-    if (lab - lcd > margin) return 1;
-    if (lcd - lab > margin) return -1;
+    const double scaled_margin = 8 * kU * (lab + lcd);
+    if (lab - lcd > scaled_margin) return 1;
+    if (lcd - lab > scaled_margin) return -1;
   }
   return compare_squared_lengths_exact(a, b, c, d);
 }
