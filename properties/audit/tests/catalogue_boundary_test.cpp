@@ -17,10 +17,10 @@
 namespace lepp {
 namespace {
 
-using reference::Deviation;
 using reference::Replay;
 using reference::ReplayChoice;
 using reference::ReplayRules;
+using reference::to_string;
 
 Pslg paper_input(const std::string& name) {
   std::vector<std::string> warnings;
@@ -92,7 +92,7 @@ TEST(CatalogueBoundary, RulesOfTheSecondTerminalTriangleAreAsked) {
         ReplayChoice unused;
         if (!replay.match(g, unused)) {
           ++centroids;
-          EXPECT_EQ(replay.diagnose(g).deviation, Deviation::TriangleCentroid)
+          EXPECT_STREQ(to_string(replay.diagnose(g).deviation), "triangle-centroid")
               << name << ": t2's centroid (" << g.x << ", " << g.y << ")";
         }
         // The midpoints of t2's two other edges: some catalogue rule (another
@@ -101,7 +101,7 @@ TEST(CatalogueBoundary, RulesOfTheSecondTerminalTriangleAreAsked) {
           const Point m{(u->x + d.x) / 2, (u->y + d.y) / 2};
           if (replay.match(m, unused)) continue;
           ++midpoints;
-          EXPECT_NE(replay.diagnose(m).deviation, Deviation::Unknown) << name << ": t2's edge midpoint (" << m.x << ", " << m.y << ")";
+          EXPECT_STRNE(to_string(replay.diagnose(m).deviation), "unknown") << name << ": t2's edge midpoint (" << m.x << ", " << m.y << ")";
         }
       }
       advance(replay, 5);
@@ -138,8 +138,8 @@ TEST(CatalogueBoundary, PrecisionBandEndsAtAThousandTolerances) {
       ReplayChoice unused;
       ASSERT_FALSE(replay.match(inside, unused)) << name << ": 990 tolerances away is no choice";
       const reference::DeviationMatch in = replay.diagnose(inside);
-      EXPECT_EQ(in.deviation, Deviation::Precision) << name << " sign " << sign << ": " << in.what;
-      EXPECT_NE(replay.diagnose(outside).deviation, Deviation::Precision) << name << " sign " << sign;
+      EXPECT_STREQ(to_string(in.deviation), "precision") << name << " sign " << sign << ": " << in.what;
+      EXPECT_STRNE(to_string(replay.diagnose(outside).deviation), "precision") << name << " sign " << sign;
     }
   }
   EXPECT_GT(checked, 0u);
