@@ -3,10 +3,13 @@
 // polygon's boundary shrinks (vertices spliced out, the polygon kept closed),
 // segment markers survive a splice, holes and isolated vertices go, coordinates
 // get coarser, the run budget holds, and nothing shrinks when nothing fails.
+#include <atomic>
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 
+#include "lepp/audit/inputs.h"
 #include "lepp/audit/shrink.h"
 #include "lepp/validate.h"
 
@@ -136,6 +139,40 @@ TEST(Shrink, StaysWithinTheRunBudget) {
   ShrinkResult r = shrink_pslg(start, [&](const Pslg& p) { return ++calls, p.vertices.size() % 2 == 0; }, {5, 30});
   EXPECT_LE(r.runs, 5u);
   EXPECT_EQ(r.runs, calls);
+}
+
+// Candidates tried `jobs` at a time: a batch is cut short where it would pass
+// the budget (7 runs with 3 at once: 3, 3, then 1), and nothing failing keeps
+// every pass going until the budget is spent. Kills shrink-batch-ignores-budget.
+TEST(Shrink, ParallelBatchesStopAtTheBudget) {
+  const Pslg start = valid(polygon(circle(36, 20.3)));
+  for (std::size_t jobs : {1u, 3u, 4u}) {
+    std::atomic<std::size_t> calls{0};
+    ShrinkResult r = shrink_pslg(start, [&](const Pslg&) { return ++calls, false; }, {7, 30, jobs});
+    EXPECT_EQ(r.runs, 7u) << "jobs " << jobs;
+    EXPECT_EQ(calls.load(), 7u) << "jobs " << jobs;
+  }
+}
+
+// A generated input shrinks along RapidCheck's tree first, then greedily: the
+// two passes share one budget. The budget is set one run short of what the
+// whole shrink takes unbounded, so the greedy pass must stop on what the tree
+// left it. Kills shrink-greedy-pass-gets-whole-budget.
+TEST(Shrink, TreeAndGreedyPassesShareTheBudget) {
+  std::optional<AuditInput> input;
+  for (std::size_t index = 5; !input; ++index) input = generated_input(7, index, 12);
+  ASSERT_TRUE(input->shrinkable);
+  std::size_t unbounded_calls = 0;
+  const ShrinkResult unbounded =
+      shrink_input(*input, [&](const Pslg&) { return ++unbounded_calls, false; }, {100000, 60});
+  ASSERT_EQ(unbounded.runs, unbounded_calls);
+  ASSERT_GT(unbounded.runs, 2u);
+  for (std::size_t budget : {unbounded.runs - 1, unbounded.runs / 2 + 1}) {
+    std::size_t calls = 0;
+    const ShrinkResult r = shrink_input(*input, [&](const Pslg&) { return ++calls, false; }, {budget, 60});
+    EXPECT_EQ(r.runs, calls);
+    EXPECT_EQ(r.runs, budget);
+  }
 }
 
 // Nothing else fails: the input comes back as it was.
