@@ -19,7 +19,7 @@ if [[ ! -f $build/CMakeCache.txt ]]; then
     -DLEPP_BUILD_BENCH=OFF >/dev/null
 fi
 start=$(date +%s)
-ninja -C "$build" -j "$(nproc)" fuzz_parse fuzz_cdt fuzz_refine fuzz_differential fuzz_engine >/dev/null
+ninja -C "$build" -j "$(nproc)" fuzz_parse fuzz_cdt fuzz_refine fuzz_differential fuzz_engine fuzz_audit >/dev/null
 echo "fuzz build: $(( $(date +%s) - start )) s"
 
 tmp=$(mktemp -d)
@@ -34,8 +34,9 @@ rows=(
   "refine-centroid fuzz_refine 500 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
   "refine-midpoint fuzz_refine 500 LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
   "refine-precision fuzz_refine 300 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
-  "differential fuzz_differential 300"
+  "differential fuzz_differential 1000"
   "engine-lepp fuzz_engine 200 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
+  "audit fuzz_audit 5000"
 )
 for row in "${rows[@]}"; do
   read -r name target runs vars <<<"$row"
