@@ -1085,17 +1085,12 @@ struct Replay::Impl {
     // no rule before it matched (another walk of every Lepp).
     if (best_rank > static_cast<int>(Deviation::InexactLength)) {
       LengthTiesWithinRounding relaxed(true);
-      for (FH f : tr.cdt.finite_face_handles()) {
-        if (!in_domain(f) || !maybe_bad(f)) continue;
-        std::vector<FH> path{f};
-        std::vector<std::pair<std::vector<FH>, Terminal>> ends;
-        lepp_ends(f, -1, path, ends, 64);
-        for (const auto& [lepp, t] : ends)
-          for (Candidate c : paper_candidates(t)) {
-            c.deviation = Deviation::InexactLength;
-            consider(c, tolerance(c.scale), &t, lepp);
-          }
-      }
+      for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
+        for (Candidate c : paper_candidates(t)) {
+          c.deviation = Deviation::InexactLength;
+          consider(c, tolerance(c.scale), &t, lepp);
+        }
+      });
     }
     best.what = what(best);
     return best;
@@ -1127,16 +1122,24 @@ struct Replay::Impl {
     return out;
   }
 
+  // Calls f(lepp, terminal) for every Lepp end (under every tie resolution, at
+  // most 64 each) of every domain triangle that may be bad.
+  template <class F>
+  void for_each_bad_lepp_end(F&& f) const {
+    for (FH face : tr.cdt.finite_face_handles()) {
+      if (!in_domain(face) || !maybe_bad(face)) continue;
+      std::vector<FH> path{face};
+      std::vector<std::pair<std::vector<FH>, Terminal>> ends;
+      lepp_ends(face, -1, path, ends, 64);
+      for (const auto& [lepp, t] : ends) f(lepp, t);
+    }
+  }
+
   std::vector<ReplayChoice> all_choices(const Point& p, std::size_t limit, std::size_t& total) const {
     std::vector<ReplayChoice> all;
-    for (FH f : tr.cdt.finite_face_handles()) {
-      if (!in_domain(f) || !maybe_bad(f)) continue;
-      std::vector<FH> path{f};
-      std::vector<std::pair<std::vector<FH>, Terminal>> ends;
-      lepp_ends(f, -1, path, ends, 64);
-      for (const auto& [lepp, t] : ends)
-        for (const Candidate& c : candidates(t)) all.push_back(describe(t, c, p, lepp));
-    }
+    for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
+      for (const Candidate& c : candidates(t)) all.push_back(describe(t, c, p, lepp));
+    });
     std::sort(all.begin(), all.end(), [](const ReplayChoice& a, const ReplayChoice& b) { return a.distance < b.distance; });
     total = all.size();
     if (all.size() > limit) all.resize(limit);
