@@ -12,6 +12,7 @@
 // is libFuzzer's.
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <limits>
 #include <utility>
 
@@ -129,12 +130,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::size_t pslg_size = std::min<std::size_t>(size - 2, data[0] | (data[1] << 8));
   FuzzInput input = decode(data + 2, pslg_size);
   apply_environment(input);
-  lepp::Pslg pslg;
-  try {
-    pslg = to_pslg(input);
-  } catch (const lepp::InputError&) {
-    return 0;
-  }
+  const std::optional<lepp::Pslg> valid = valid_pslg(input);
+  if (!valid) return 0;
+  const lepp::Pslg& pslg = *valid;
   lepp::RefineOptions options = options_of(input);
   // Within the proven bands, so that the correct run ends (fuzz_refine hunts the loops).
   options.min_angle_deg = std::min(options.min_angle_deg, options.method == lepp::Method::Centroid ? 28.0 : 20.0);

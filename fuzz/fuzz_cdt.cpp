@@ -5,6 +5,7 @@
 // ties the triangles and the constrained edges must be the same.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -46,12 +47,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!engine_available(Engine::Fast)) return 0;
   FuzzInput input = decode(data, size);
   apply_environment(input);  // LEPP_FUZZ_PRECISION (method and theta do not matter here)
-  lepp::Pslg pslg;
-  try {
-    pslg = to_pslg(input);
-  } catch (const lepp::InputError&) {
-    return 0;
-  }
+  const std::optional<lepp::Pslg> valid = valid_pslg(input);
+  if (!valid) return 0;
+  const lepp::Pslg& pslg = *valid;
   lepp::Mesh fast;
   try {
     fast = build_cdt(Engine::Fast, pslg);

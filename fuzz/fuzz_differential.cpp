@@ -5,6 +5,7 @@
 // count, vertices, triangles, constrained edges or unimprovable list.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -74,12 +75,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!engine_available(Engine::Fast) || !engine_available(Engine::Reference)) return 0;
   FuzzInput input = decode(data, size);
   apply_environment(input);
-  lepp::Pslg pslg;
-  try {
-    pslg = to_pslg(input);
-  } catch (const lepp::InputError&) {
-    return 0;
-  }
+  const std::optional<lepp::Pslg> valid = valid_pslg(input);
+  if (!valid) return 0;
+  const lepp::Pslg& pslg = *valid;
   lepp::RefineOptions options = options_of(input);
   const LoopGuard guard = loop_guard(pslg, kBudgetCap);
   options.max_steiner = guard.steiner_budget;

@@ -17,6 +17,7 @@
 // LEPP_ENGINE_WORK (scratch directory, default $TMPDIR), and fuzz_refine's
 // LEPP_FUZZ_METHOD, LEPP_FUZZ_THETA, LEPP_FUZZ_MIN_INPUT_ANGLE, LEPP_FUZZ_IGNORE.
 #include <cstdint>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -104,12 +105,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Setup& s = setup();
   FuzzInput input = decode(data, size);
   apply_environment(input);
-  lepp::Pslg pslg;
-  try {
-    pslg = to_pslg(input);
-  } catch (const lepp::InputError&) {
-    return 0;
-  }
+  const std::optional<lepp::Pslg> valid = valid_pslg(input);
+  if (!valid) return 0;
+  const lepp::Pslg& pslg = *valid;
   const double min_input_angle = input_features(pslg).min_input_angle_deg;
   if (const char* min = std::getenv("LEPP_FUZZ_MIN_INPUT_ANGLE"))
     if (min_input_angle < std::atof(min)) return 0;

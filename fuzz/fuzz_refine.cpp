@@ -13,6 +13,7 @@
 // class and band in LEPP_FUZZ_KNOWN_DIR, and the run goes on; any other loop,
 // an exception or an uncertified mesh stops it.
 #include <cstdint>
+#include <optional>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -42,12 +43,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   apply_environment(input);
   const Engine engine = input.engine == 1 ? Engine::Reference : Engine::Fast;
   if (!engine_available(engine)) return 0;
-  lepp::Pslg pslg;
-  try {
-    pslg = to_pslg(input);
-  } catch (const lepp::InputError&) {
-    return 0;
-  }
+  const std::optional<lepp::Pslg> valid = valid_pslg(input);
+  if (!valid) return 0;
+  const lepp::Pslg& pslg = *valid;
   if (const char* min = std::getenv("LEPP_FUZZ_MIN_INPUT_ANGLE"))
     if (input_features(pslg).min_input_angle_deg < std::atof(min)) return 0;
 

@@ -225,6 +225,14 @@ Pslg to_pslg(const FuzzInput& in) {
   return validate(pslg, warnings);
 }
 
+std::optional<Pslg> valid_pslg(const FuzzInput& input) {
+  try {
+    return to_pslg(input);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
 RefineOptions options_of(const FuzzInput& in) {
   RefineOptions o;
   o.min_angle_deg = theta_deg(in);

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -84,6 +85,9 @@ void add_cluster(FuzzInput& input, int vertex, int copies, const std::function<s
 // segment; decided exactly on the grid), then lepp::validate. Throws
 // lepp::InputError when no valid PSLG remains (collinear points, ...).
 Pslg to_pslg(const FuzzInput& input);
+// to_pslg, or nothing when no valid PSLG remains: an input every target skips
+// (an invalid input is no finding).
+std::optional<Pslg> valid_pslg(const FuzzInput& input);
 
 RefineOptions options_of(const FuzzInput& input);
 double theta_deg(const FuzzInput& input);
