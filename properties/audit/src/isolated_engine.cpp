@@ -102,6 +102,11 @@ Engine isolated_engine(Engine inner) {
       run.detail = with_stderr(fmt::format("killed by signal {} ({})", sr.signal, strsignal(sr.signal)), sr.stderr_text);
       return run;
     }
+    if (sr.exit_code == -1 && !sr.detail.empty()) {
+      run.status = RunStatus::Crashed;
+      run.detail = sr.detail;
+      return run;
+    }
     if (sr.exit_code != 0) {
       // The engine called exit(), or the child could not send its run (kSendFailed, said on stderr).
       run.status = sr.exit_code == kSendFailed ? RunStatus::Crashed : RunStatus::ExitCode;

@@ -72,6 +72,20 @@ struct PipeReader {
   }
 };
 
+// A process that inherited SIGCHLD ignored (SIG_IGN, or SA_NOCLDWAIT: it survives
+// exec, and some launchers and CI runners leave it so) has its children reaped by the
+// kernel, and waitpid never sees one end: every run would last until its timeout, or
+// forever without one. The audit waits for its own children, so it restores the default.
+void let_us_reap_our_children() {
+  struct sigaction sa;
+  if (sigaction(SIGCHLD, nullptr, &sa) != 0) return;
+  if (sa.sa_handler != SIG_IGN && !(sa.sa_flags & SA_NOCLDWAIT)) return;
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  sigaction(SIGCHLD, &dfl, nullptr);
+}
+
 bool make_pipe(int fds[2], std::string& detail) {
   // Close-on-exec from the start (pipe2): nothing the child execs inherits them (its
   // stderr is a dup2 copy, which is), nor a program another audit thread starts meanwhile.
@@ -92,6 +106,7 @@ std::string shell_quote(const std::string& s) {
 
 SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& limits) {
   SubprocessResult r;
+  let_us_reap_our_children();
   int err[2], res[2];
   if (!make_pipe(err, r.detail)) return r;
   if (!make_pipe(res, r.detail)) {
@@ -126,7 +141,7 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
 
   PipeReader stderr_pipe{err[0], true, &r.stderr_text, limits.stderr_cap};
   PipeReader result_pipe{res[0], true, &r.output, 0};
-  bool exited = false;
+  bool exited = false, lost = false;
   int wstatus = 0;
   int nap_us = 50;
   while (!exited) {
@@ -156,6 +171,12 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
     }
     pid_t w = waitpid(pid, &wstatus, WNOHANG);
     if (w == pid) exited = true;
+    if (w < 0 && errno != EINTR) {
+      // Not ours to wait for any more (reaped elsewhere): its end is unknown, but it has ended.
+      r.detail = std::string("waitpid: ") + std::strerror(errno) + ": the child's exit status is lost";
+      lost = true;
+      exited = true;
+    }
   }
   r.seconds = since(t0);
   stderr_pipe.drain();
@@ -165,7 +186,9 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
   kill(-pid, SIGKILL);
   close(err[0]);
   close(res[0]);
-  if (!r.timed_out) {
+  if (lost) {
+    r.exit_code = -1;
+  } else if (!r.timed_out) {
     if (WIFEXITED(wstatus)) r.exit_code = WEXITSTATUS(wstatus);
     if (WIFSIGNALED(wstatus)) r.signal = WTERMSIG(wstatus);
   } else {

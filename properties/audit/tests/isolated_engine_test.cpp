@@ -187,6 +187,23 @@ TEST(IsolatedEngine, MemoryCapLeavesRoomForAnOrdinaryRun) {
   EXPECT_EQ(r.status, RunStatus::Ok) << r.detail << r.stderr_text;
 }
 
+// A process started with SIGCHLD ignored (the disposition survives exec; some
+// launchers and CI runners leave it so): the kernel reaps the children itself, and a
+// wait loop that only trusts waitpid would see every run last until its timeout.
+TEST(IsolatedEngine, ARunEndsWhenTheAuditWasStartedWithSigchldIgnored) {
+  for (int flags : {0, SA_NOCLDWAIT}) {
+    struct sigaction ignore {}, before {};
+    ignore.sa_handler = flags ? SIG_DFL : SIG_IGN;
+    ignore.sa_flags = flags;
+    sigemptyset(&ignore.sa_mask);
+    ASSERT_EQ(sigaction(SIGCHLD, &ignore, &before), 0);
+    EngineRun r = run_isolated([](const Pslg&, const EngineRequest&) { return EngineRun{}; }, 20);
+    sigaction(SIGCHLD, &before, nullptr);
+    EXPECT_EQ(r.status, RunStatus::Ok) << (flags ? "SA_NOCLDWAIT: " : "SIG_IGN: ") << r.detail;
+    EXPECT_LT(r.seconds, 10) << "the run waited for its timeout";
+  }
+}
+
 int global_touched = 0;
 
 TEST(IsolatedEngine, RunsInAnotherProcess) {
