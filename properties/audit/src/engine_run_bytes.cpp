@@ -13,6 +13,8 @@ namespace {
 
 constexpr char kBegin[8] = {'L', 'E', 'P', 'P', 'R', 'U', 'N', '1'};
 constexpr char kEnd[8] = {'E', 'N', 'D', 'R', 'U', 'N', '.', '1'};
+constexpr char kCallBegin[8] = {'L', 'E', 'P', 'P', 'C', 'A', 'L', 'L'};
+constexpr char kCallEnd[8] = {'E', 'N', 'D', 'C', 'A', 'L', 'L', '1'};
 constexpr int kLastStatus = static_cast<int>(RunStatus::UnreadableOutput);
 
 class Writer {
@@ -32,6 +34,10 @@ class Writer {
   void put(const Point& p) {
     put(p.x);
     put(p.y);
+  }
+  void put(const std::vector<int>& v) {
+    put_count(v.size());
+    for (int i : v) put(static_cast<std::int32_t>(i));
   }
   void put_raw(const char* b, std::size_t n) { out_.append(b, n); }
   std::string take() { return std::move(out_); }
@@ -58,6 +64,11 @@ class Reader {
     if (item_bytes > 0 && n > (in_.size() - pos_) / item_bytes)
       fail(fmt::format("{} {} claimed, the bytes left hold fewer", n, what));
     return static_cast<std::size_t>(n);
+  }
+  std::vector<int> get_ints(const char* what) {
+    std::vector<int> v(get_count(4, what));
+    for (int& i : v) i = get<std::int32_t>();
+    return v;
   }
   std::string get_string(const char* what) {
     std::size_t n = get_count(1, what);
@@ -162,6 +173,79 @@ EngineRun decode_engine_run(const std::string& bytes) {
   r.expect(kEnd, "end mark");
   r.expect_end();
   return run;
+}
+
+std::string encode_engine_call(const Pslg& pslg, const EngineRequest& req) {
+  Writer w;
+  w.put_raw(kCallBegin, 8);
+  w.put_count(pslg.vertices.size());
+  for (const Point& p : pslg.vertices) w.put(p);
+  w.put(pslg.vertex_markers);
+  w.put_count(pslg.segments.size());
+  for (const Segment& s : pslg.segments) {
+    w.put(static_cast<std::int32_t>(s.a));
+    w.put(static_cast<std::int32_t>(s.b));
+    w.put(static_cast<std::int32_t>(s.marker));
+  }
+  w.put_count(pslg.holes.size());
+  for (const Point& p : pslg.holes) w.put(p);
+  w.put_count(pslg.regions.size());
+  for (const Region& g : pslg.regions) {
+    w.put(g.at);
+    w.put(g.attribute);
+    w.put(g.max_area);
+  }
+  w.put(pslg.source);
+  for (const std::vector<int>* v : {&pslg.vertex_lines, &pslg.segment_lines, &pslg.hole_lines, &pslg.region_lines,
+                                    &pslg.segment_origin})
+    w.put(*v);
+  w.put_count(pslg.crossing_vertices);
+  w.put(static_cast<std::int32_t>(req.method));
+  w.put(req.theta);
+  w.put(req.timeout_seconds);
+  w.put_count(req.memory_mb);
+  w.put(req.work_dir);
+  w.put_raw(kCallEnd, 8);
+  return w.take();
+}
+
+void decode_engine_call(const std::string& bytes, Pslg& pslg, EngineRequest& req) {
+  Reader r(bytes);
+  pslg = Pslg{};
+  req = EngineRequest{};
+  r.expect(kCallBegin, "call mark");
+  pslg.vertices.resize(r.get_count(16, "vertices"));
+  for (Point& p : pslg.vertices) p = r.get_point();
+  pslg.vertex_markers = r.get_ints("vertex markers");
+  pslg.segments.resize(r.get_count(12, "segments"));
+  for (Segment& s : pslg.segments) {
+    s.a = r.get<std::int32_t>();
+    s.b = r.get<std::int32_t>();
+    s.marker = r.get<std::int32_t>();
+  }
+  pslg.holes.resize(r.get_count(16, "holes"));
+  for (Point& p : pslg.holes) p = r.get_point();
+  pslg.regions.resize(r.get_count(32, "regions"));
+  for (Region& g : pslg.regions) {
+    g.at = r.get_point();
+    g.attribute = r.get<double>();
+    g.max_area = r.get<double>();
+  }
+  pslg.source = r.get_string("bytes of the source");
+  for (std::vector<int>* v : {&pslg.vertex_lines, &pslg.segment_lines, &pslg.hole_lines, &pslg.region_lines,
+                              &pslg.segment_origin})
+    *v = r.get_ints("line numbers");
+  pslg.crossing_vertices = static_cast<std::size_t>(r.get<std::uint64_t>());
+  const auto method = r.get<std::int32_t>();
+  if (method != static_cast<std::int32_t>(Method::Centroid) && method != static_cast<std::int32_t>(Method::Midpoint))
+    r.fail(fmt::format("method {} unknown", method));
+  req.method = static_cast<Method>(method);
+  req.theta = r.get<double>();
+  req.timeout_seconds = r.get<double>();
+  req.memory_mb = static_cast<std::size_t>(r.get<std::uint64_t>());
+  req.work_dir = r.get_string("bytes of the work directory");
+  r.expect(kCallEnd, "end mark");
+  r.expect_end();
 }
 
 }  // namespace lepp::audit

@@ -7,12 +7,14 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "lepp/audit/engine_run_bytes.h"
 #include "lepp/audit/subprocess.h"
+#include "fork_server.h"
 
 namespace lepp::audit {
 namespace {
@@ -77,12 +79,27 @@ std::string with_stderr(std::string detail, const std::string& stderr_text) {
 }  // namespace
 
 Engine isolated_engine(Engine inner) {
-  return [inner = std::move(inner)](const Pslg& pslg, const EngineRequest& req) {
+  // The server is forked now, before the audit's threads: its children start quiet (fork_server.h).
+  std::shared_ptr<ForkServer> server;
+  std::string no_server;
+  try {
+    server = std::make_shared<ForkServer>([inner = std::move(inner)](const Pslg& pslg, const EngineRequest& req, int fd) {
+      if (req.memory_mb > 0) {
+        struct rlimit rl;
+        rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(req.memory_mb + address_space_mb()) * 1024 * 1024;
+        setrlimit(RLIMIT_AS, &rl);
+      }
+      return run_and_send(inner, pslg, req, fd);
+    });
+  } catch (const std::exception& e) {
+    no_server = e.what();
+  }
+  return [server, no_server](const Pslg& pslg, const EngineRequest& req) {
     SubprocessLimits limits;
     limits.timeout_seconds = req.timeout_seconds;
-    limits.memory_mb = req.memory_mb > 0 ? req.memory_mb + address_space_mb() : 0;
-    SubprocessResult sr =
-        run_forked([&](int result_fd) { return run_and_send(inner, pslg, req, result_fd); }, limits);
+    SubprocessResult sr;
+    if (server) sr = server->run(pslg, req, limits);
+    else sr.detail = no_server;
     EngineRun run;
     if (!sr.started) {
       run.status = RunStatus::Crashed;

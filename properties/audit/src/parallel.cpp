@@ -6,7 +6,6 @@
 #include <thread>
 #include <vector>
 
-#include "lepp/audit/isolated_engine.h"
 
 namespace lepp::audit {
 namespace {
@@ -15,8 +14,6 @@ thread_local std::size_t t_worker = 0;
 
 std::size_t resolve_jobs(std::size_t jobs) {
   if (jobs > 0) return jobs;
-  // A sanitizer build cannot fork safely beside other threads (isolated_engine.h): one job by default.
-  if (!fork_safe_with_threads()) return 1;
   const unsigned cores = std::thread::hardware_concurrency();
   return cores > 0 ? cores : 1;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lepp/audit/subprocess.h"
 
+#include "child_process.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -20,29 +22,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// In the child after fork, before its function runs: only async-signal-safe calls.
-void set_up_child(int stderr_fd, const SubprocessLimits& limits) {
-  setpgid(0, 0);  // its own group, so a timeout kills everything it started
-  // Default signal handling in the child whatever the parent set.
-  signal(SIGPIPE, SIG_DFL);
-  signal(SIGINT, SIG_DFL);
-  signal(SIGTERM, SIG_DFL);
-  int devnull = open("/dev/null", O_RDWR);
-  if (devnull >= 0) {
-    dup2(devnull, 0);
-    dup2(devnull, 1);
-    if (devnull > 2) close(devnull);
-  }
-  dup2(stderr_fd, 2);
-  if (stderr_fd > 2) close(stderr_fd);
-  if (!limits.directory.empty() && chdir(limits.directory.c_str()) != 0) _exit(126);
-  if (limits.memory_mb > 0) {
-    struct rlimit rl;
-    rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(limits.memory_mb) * 1024 * 1024;
-    setrlimit(RLIMIT_AS, &rl);
-  }
-}
 
 // The read end of a pipe from the child, emptied without blocking.
 struct PipeReader {
@@ -96,7 +75,106 @@ bool make_pipe(int fds[2], std::string& detail) {
   return true;
 }
 
+// The child's end as waitpid sees it (the child is ours).
+class WaitpidEnd : public ChildEnd {
+ public:
+  explicit WaitpidEnd(pid_t pid) : pid_(pid) {}
+  int poll(int* wstatus, std::string* detail) override {
+    pid_t w = waitpid(pid_, wstatus, WNOHANG);
+    if (w == pid_) return 1;
+    if (w < 0 && errno != EINTR) {
+      // Not ours to wait for any more (reaped elsewhere): its end is unknown, but it has ended.
+      *detail = std::string("waitpid: ") + std::strerror(errno) + ": the child's exit status is lost";
+      return -1;
+    }
+    return 0;
+  }
+  void wait(int* wstatus) override { waitpid(pid_, wstatus, 0); }
+
+ private:
+  pid_t pid_;
+};
+
 }  // namespace
+
+// In the child after fork, before its function runs: only async-signal-safe calls.
+void set_up_child(int stderr_fd, const SubprocessLimits& limits) {
+  setpgid(0, 0);  // its own group, so a timeout kills everything it started
+  // Default signal handling in the child whatever the parent set.
+  signal(SIGPIPE, SIG_DFL);
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  int devnull = open("/dev/null", O_RDWR);
+  if (devnull >= 0) {
+    dup2(devnull, 0);
+    dup2(devnull, 1);
+    if (devnull > 2) close(devnull);
+  }
+  dup2(stderr_fd, 2);
+  if (stderr_fd > 2) close(stderr_fd);
+  if (!limits.directory.empty() && chdir(limits.directory.c_str()) != 0) _exit(126);
+  if (limits.memory_mb > 0) {
+    struct rlimit rl;
+    rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(limits.memory_mb) * 1024 * 1024;
+    setrlimit(RLIMIT_AS, &rl);
+  }
+}
+
+void wait_for_child(pid_t pid, int err_fd, int res_fd, const SubprocessLimits& limits,
+                    std::chrono::steady_clock::time_point t0, ChildEnd& end, SubprocessResult& r) {
+  fcntl(err_fd, F_SETFL, O_NONBLOCK);
+  fcntl(res_fd, F_SETFL, O_NONBLOCK);
+  PipeReader stderr_pipe{err_fd, true, &r.stderr_text, limits.stderr_cap};
+  PipeReader result_pipe{res_fd, true, &r.output, 0};
+  bool exited = false, lost = false;
+  int wstatus = 0;
+  int nap_us = 50;
+  while (!exited) {
+    double left = limits.timeout_seconds > 0 ? limits.timeout_seconds - since(t0) : 1e9;
+    if (left <= 0) {
+      r.timed_out = true;
+      kill(-pid, SIGKILL);
+      end.wait(&wstatus);
+      exited = true;
+      break;
+    }
+    // Wake at least every 50 ms to reap the child even if a grandchild keeps a pipe open.
+    int wait_ms = static_cast<int>(std::min(left * 1000 + 1, 50.0));
+    struct pollfd p[2];
+    nfds_t n = 0;
+    for (PipeReader* pr : {&stderr_pipe, &result_pipe})
+      if (pr->open) p[n++] = {pr->fd, POLLIN, 0};
+    if (n > 0) {
+      if (poll(p, n, wait_ms) > 0) {
+        stderr_pipe.drain();
+        result_pipe.drain();
+      }
+    } else {
+      // Both pipes closed: the child is most likely exiting. Look again soon, then less often.
+      usleep(static_cast<useconds_t>(std::min(static_cast<double>(nap_us), left * 1e6 + 1)));
+      nap_us = std::min(nap_us * 2, 5000);
+    }
+    const int e = end.poll(&wstatus, &r.detail);
+    if (e != 0) exited = true;
+    if (e < 0) lost = true;
+  }
+  r.seconds = since(t0);
+  stderr_pipe.drain();
+  result_pipe.drain();
+  r.stderr_truncated = stderr_pipe.truncated;
+  // Whatever the child left behind in its group (background jobs) goes too.
+  kill(-pid, SIGKILL);
+  close(err_fd);
+  close(res_fd);
+  if (lost) {
+    r.exit_code = -1;
+  } else if (!r.timed_out) {
+    if (WIFEXITED(wstatus)) r.exit_code = WEXITSTATUS(wstatus);
+    if (WIFSIGNALED(wstatus)) r.signal = WTERMSIG(wstatus);
+  } else {
+    r.signal = SIGKILL;
+  }
+}
 
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
@@ -135,65 +213,10 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
   setpgid(pid, pid);  // also here: no race with the kill below
   close(err[1]);
   close(res[1]);
-  fcntl(err[0], F_SETFL, O_NONBLOCK);
-  fcntl(res[0], F_SETFL, O_NONBLOCK);
   r.started = true;
 
-  PipeReader stderr_pipe{err[0], true, &r.stderr_text, limits.stderr_cap};
-  PipeReader result_pipe{res[0], true, &r.output, 0};
-  bool exited = false, lost = false;
-  int wstatus = 0;
-  int nap_us = 50;
-  while (!exited) {
-    double left = limits.timeout_seconds > 0 ? limits.timeout_seconds - since(t0) : 1e9;
-    if (left <= 0) {
-      r.timed_out = true;
-      kill(-pid, SIGKILL);
-      waitpid(pid, &wstatus, 0);
-      exited = true;
-      break;
-    }
-    // Wake at least every 50 ms to reap the child even if a grandchild keeps a pipe open.
-    int wait_ms = static_cast<int>(std::min(left * 1000 + 1, 50.0));
-    struct pollfd p[2];
-    nfds_t n = 0;
-    for (PipeReader* pr : {&stderr_pipe, &result_pipe})
-      if (pr->open) p[n++] = {pr->fd, POLLIN, 0};
-    if (n > 0) {
-      if (poll(p, n, wait_ms) > 0) {
-        stderr_pipe.drain();
-        result_pipe.drain();
-      }
-    } else {
-      // Both pipes closed: the child is most likely exiting. Look again soon, then less often.
-      usleep(static_cast<useconds_t>(std::min(static_cast<double>(nap_us), left * 1e6 + 1)));
-      nap_us = std::min(nap_us * 2, 5000);
-    }
-    pid_t w = waitpid(pid, &wstatus, WNOHANG);
-    if (w == pid) exited = true;
-    if (w < 0 && errno != EINTR) {
-      // Not ours to wait for any more (reaped elsewhere): its end is unknown, but it has ended.
-      r.detail = std::string("waitpid: ") + std::strerror(errno) + ": the child's exit status is lost";
-      lost = true;
-      exited = true;
-    }
-  }
-  r.seconds = since(t0);
-  stderr_pipe.drain();
-  result_pipe.drain();
-  r.stderr_truncated = stderr_pipe.truncated;
-  // Whatever the child left behind in its group (background jobs) goes too.
-  kill(-pid, SIGKILL);
-  close(err[0]);
-  close(res[0]);
-  if (lost) {
-    r.exit_code = -1;
-  } else if (!r.timed_out) {
-    if (WIFEXITED(wstatus)) r.exit_code = WEXITSTATUS(wstatus);
-    if (WIFSIGNALED(wstatus)) r.signal = WTERMSIG(wstatus);
-  } else {
-    r.signal = SIGKILL;
-  }
+  WaitpidEnd end(pid);
+  wait_for_child(pid, err[0], res[0], limits, t0, end, r);
   return r;
 }
 

@@ -15,20 +15,32 @@ lepp=$1; src=$2; mesher=$3
 dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
 cd "$dir" || exit 1
 fail() { echo "FAIL: $*"; exit 1; }
+# lepp with a watchdog: a command that hangs fails the test naming itself and
+# the processes it left, instead of running into ctest's timeout with no output.
+run_lepp() {
+  timeout -k 5 120 "$lepp" "$@"; local s=$?
+  if [ $s -eq 124 ] || [ $s -eq 137 ]; then
+    # On stderr: stdout is the report's file here.
+    ps -eo pid,ppid,stat,wchan:24,etime,args 2>/dev/null | grep -E "lepp|mesher" | grep -v grep >&2
+    echo "FAIL: hung for 120 s: lepp $*" >&2
+    exit 1
+  fi
+  return $s
+}
 
 # Runs the audit whole (NAME-single) and as shards 1/3, 2/3, 3/3 (NAME-K), merges
 # them (NAME-merged), and compares. Arguments: NAME, then lepp audit's options.
 split_and_compare() {
   local name=$1; shift
-  "$lepp" audit "$@" --out "$name-single" --json-file "$name-single.json" --junit "$name-single.xml" > "$name-single.md"
+  run_lepp audit "$@" --out "$name-single" --json-file "$name-single.json" --junit "$name-single.xml" > "$name-single.md"
   local whole=$?
   [ $whole -le 1 ] || fail "$name: the single run exited $whole"
   for k in 1 2 3; do
-    "$lepp" audit "$@" --shard "$k/3" --out "$name-out-$k" --json > "$name-$k.json"; s=$?
+    run_lepp audit "$@" --shard "$k/3" --out "$name-out-$k" --json > "$name-$k.json"; s=$?
     [ $s -le 1 ] || fail "$name: shard $k/3 exited $s"
   done
   # Shards in any order on the command line.
-  "$lepp" audit merge "$name-3.json" "$name-1.json" "$name-2.json" --out "$name-merged" --json "$name-merged.json" \
+  run_lepp audit merge "$name-3.json" "$name-1.json" "$name-2.json" --out "$name-merged" --json "$name-merged.json" \
     --junit "$name-merged.xml" > "$name-merged.md"; s=$?
   [ $s -eq $whole ] || fail "$name: merge exited $s, the single run $whole"
   python3 - "$dir" "$name" <<'EOF' || fail "$name: the merged report differs from the single run's"

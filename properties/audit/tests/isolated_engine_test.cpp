@@ -7,18 +7,23 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "lepp/audit/engine_run_bytes.h"
 #include "lepp/audit/isolated_engine.h"
+#include "lepp/audit/subprocess.h"
 
 using namespace lepp;
 using namespace lepp::audit;
@@ -198,9 +203,15 @@ TEST(IsolatedEngine, ARunEndsWhenTheAuditWasStartedWithSigchldIgnored) {
     sigemptyset(&ignore.sa_mask);
     ASSERT_EQ(sigaction(SIGCHLD, &ignore, &before), 0);
     EngineRun r = run_isolated([](const Pslg&, const EngineRequest&) { return EngineRun{}; }, 20);
+    // And a program (the --cmd adapter's way).
+    SubprocessLimits limits;
+    limits.timeout_seconds = 20;
+    const SubprocessResult sr = run_subprocess("exit 3", limits);
     sigaction(SIGCHLD, &before, nullptr);
     EXPECT_EQ(r.status, RunStatus::Ok) << (flags ? "SA_NOCLDWAIT: " : "SIG_IGN: ") << r.detail;
     EXPECT_LT(r.seconds, 10) << "the run waited for its timeout";
+    EXPECT_EQ(sr.exit_code, 3) << sr.detail;
+    EXPECT_FALSE(sr.timed_out);
   }
 }
 
@@ -240,6 +251,130 @@ TEST(IsolatedEngine, ALargeMeshComesBackWhole) {
   want.mesh.input_vertices = 3;
   EngineRun r = run_isolated([&want](const Pslg&, const EngineRequest&) { return want; });
   expect_same_run(want, r, false);
+}
+
+// The hazard the fork server removes (fork_server.h): a child forked from a
+// threaded audit inherits every lock another thread holds at that moment, held
+// forever. Here another thread holds, through the whole run, a lock the engine
+// takes: a child forked from this process waits on it until its timeout; a child
+// of the server, forked from a copy made before the lock was taken, does not.
+std::mutex g_lock_the_engine_takes;
+
+TEST(IsolatedEngine, ALockHeldByAnotherThreadAtTheForkDoesNotHangTheRun) {
+  Engine isolated = isolated_engine([](const Pslg&, const EngineRequest&) {
+    std::lock_guard<std::mutex> lock(g_lock_the_engine_takes);
+    return EngineRun{};
+  });
+  std::mutex m;
+  std::condition_variable cv;
+  bool held = false, done = false;
+  std::thread holder([&] {
+    std::lock_guard<std::mutex> lock(g_lock_the_engine_takes);
+    std::unique_lock<std::mutex> lk(m);
+    held = true;
+    cv.notify_all();
+    cv.wait(lk, [&] { return done; });
+  });
+  {
+    std::unique_lock<std::mutex> lk(m);
+    cv.wait(lk, [&] { return held; });
+  }
+  EngineRequest req;
+  req.timeout_seconds = 10;
+  const EngineRun r = isolated(triangle(), req);
+  {
+    std::lock_guard<std::mutex> lk(m);
+    done = true;
+  }
+  cv.notify_all();
+  holder.join();
+  EXPECT_EQ(r.status, RunStatus::Ok) << r.detail;
+}
+
+// Runs from several threads at once through one server: each comes back with
+// its own input's answer, whatever the order the children end in.
+TEST(IsolatedEngine, ConcurrentRunsEachGetTheirOwnAnswer) {
+  Engine isolated = isolated_engine([](const Pslg& p, const EngineRequest& q) {
+    usleep(static_cast<useconds_t>((p.vertices.size() * 7919) % 3000));  // end out of order
+    EngineRun run;
+    run.detail = std::to_string(p.vertices.size()) + " " + std::to_string(q.theta);
+    if (p.vertices.size() % 5 == 0) std::abort();  // and some die
+    return run;
+  });
+  constexpr int kThreads = 4, kRuns = 40;
+  std::vector<std::string> wrong(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int i = 0; i < kRuns; ++i) {
+        Pslg p;
+        const std::size_t n = 3 + static_cast<std::size_t>(t * kRuns + i);
+        for (std::size_t k = 0; k < n; ++k) p.vertices.push_back({static_cast<double>(k), 0.5 * k});
+        EngineRequest req;
+        req.theta = 20 + t;
+        req.timeout_seconds = 20;
+        const EngineRun r = isolated(p, req);
+        const bool dies = n % 5 == 0;
+        const std::string want = std::to_string(n) + " " + std::to_string(req.theta);
+        if (dies ? r.status != RunStatus::Crashed || r.signal != SIGABRT : r.status != RunStatus::Ok || r.detail != want)
+          wrong[t] += "n=" + std::to_string(n) + ": " + to_string(r.status) + " " + r.detail + "; ";
+      }
+    });
+  for (std::thread& th : threads) th.join();
+  for (const std::string& w : wrong) EXPECT_EQ(w, "");
+}
+
+// The call crosses to the server whole: every field of the PSLG and the request.
+TEST(EngineRunBytes, ACallRoundTripsAndEveryPrefixIsRefused) {
+  Pslg p;
+  p.vertices = {{-0.0, std::numeric_limits<double>::denorm_min()}, {1e300, 0.1}, {2, 3}};
+  p.vertex_markers = {1, 0, -7};
+  p.segments = {{0, 1, 5}, {1, 2, -2}};
+  p.holes = {{0.25, 0.5}};
+  p.regions = {{{0.1, 0.2}, 3.5, 0.01}};
+  p.source = "a.poly";
+  p.vertex_lines = {2, 3, 4};
+  p.segment_lines = {6, 7};
+  p.hole_lines = {9};
+  p.region_lines = {11};
+  p.segment_origin = {0, 0};
+  p.crossing_vertices = 1;
+  EngineRequest q;
+  q.method = Method::Midpoint;
+  q.theta = 27.5;
+  q.timeout_seconds = 0.25;
+  q.memory_mb = 123;
+  q.work_dir = "/tmp/w";
+  const std::string bytes = encode_engine_call(p, q);
+  Pslg p2;
+  EngineRequest q2;
+  decode_engine_call(bytes, p2, q2);
+  expect_same_points(p.vertices, p2.vertices);
+  expect_same_points(p.holes, p2.holes);
+  EXPECT_EQ(p2.vertex_markers, p.vertex_markers);
+  ASSERT_EQ(p2.segments.size(), 2u);
+  EXPECT_EQ(p2.segments[1].a, 1);
+  EXPECT_EQ(p2.segments[1].b, 2);
+  EXPECT_EQ(p2.segments[1].marker, -2);
+  ASSERT_EQ(p2.regions.size(), 1u);
+  EXPECT_EQ(p2.regions[0].at, p.regions[0].at);
+  EXPECT_EQ(p2.regions[0].attribute, 3.5);
+  EXPECT_EQ(p2.regions[0].max_area, 0.01);
+  EXPECT_EQ(p2.source, p.source);
+  EXPECT_EQ(p2.vertex_lines, p.vertex_lines);
+  EXPECT_EQ(p2.segment_lines, p.segment_lines);
+  EXPECT_EQ(p2.hole_lines, p.hole_lines);
+  EXPECT_EQ(p2.region_lines, p.region_lines);
+  EXPECT_EQ(p2.segment_origin, p.segment_origin);
+  EXPECT_EQ(p2.crossing_vertices, 1u);
+  EXPECT_EQ(q2.method, Method::Midpoint);
+  EXPECT_EQ(q2.theta, 27.5);
+  EXPECT_EQ(q2.timeout_seconds, 0.25);
+  EXPECT_EQ(q2.memory_mb, 123u);
+  EXPECT_EQ(q2.work_dir, "/tmp/w");
+  for (std::size_t n = 0; n < bytes.size(); ++n)
+    EXPECT_THROW(decode_engine_call(bytes.substr(0, n), p2, q2), std::runtime_error) << "prefix of " << n << " bytes";
+  EXPECT_THROW(decode_engine_call(bytes + "x", p2, q2), std::runtime_error);
 }
 
 TEST(EngineRunBytes, RoundTripIsExact) {

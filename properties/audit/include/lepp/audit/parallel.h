@@ -10,8 +10,9 @@
 
 namespace lepp::audit {
 
-// jobs 0: the machine's cores (std::thread::hardware_concurrency, at least 1); one in a
-// sanitizer build, where fork is not safe beside threads (fork_safe_with_threads()).
+// jobs 0: the machine's cores (std::thread::hardware_concurrency, at least 1), in
+// every build: isolated runs are forked by a server made before the threads
+// (isolated_engine.h), so a sanitizer build may run them beside threads too.
 std::size_t resolve_jobs(std::size_t jobs);
 
 // Calls f(i) for every i in [0, n) on at most `jobs` threads (the calling thread

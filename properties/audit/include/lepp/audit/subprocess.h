@@ -39,7 +39,8 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
 // exec: with `-j` other threads of the audit may be running; the child has only
 // the forking thread, and glibc's fork keeps malloc usable in it; a function
 // that waited on a lock another thread held at the fork would hang until the
-// timeout kills it (a "timed out" run). `-j 1` keeps the audit on one thread.
+// timeout kills it (a "timed out" run). isolated_engine (isolated_engine.h) forks
+// its children from a fork server made before the threads instead.
 using ChildFunction = std::function<int(int result_fd)>;
 
 // Runs `child` in a forked process under the same rules and the same wait loop
