@@ -71,17 +71,27 @@ bool read_all(int fd, char* p, std::size_t n) {
   return true;
 }
 
+// A header and room for the three descriptors, as sendmsg and recvmsg take them.
+struct HeaderMessage {
+  explicit HeaderMessage(Header& h) : iov{&h, sizeof h} {
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = cbuf;
+    msg.msg_controllen = sizeof cbuf;
+  }
+  HeaderMessage(const HeaderMessage&) = delete;
+  HeaderMessage& operator=(const HeaderMessage&) = delete;
+  struct iovec iov;
+  alignas(struct cmsghdr) char cbuf[CMSG_SPACE(3 * sizeof(int))] = {};
+  struct msghdr msg{};
+};
+
 bool send_request(int control, const std::string& payload, const int fds[3]) {
   Header h{};
   std::memcpy(h.magic, kMagic, 8);
   h.bytes = payload.size();
-  struct iovec iov{&h, sizeof h};
-  alignas(struct cmsghdr) char cbuf[CMSG_SPACE(3 * sizeof(int))] = {};
-  struct msghdr msg{};
-  msg.msg_iov = &iov;
-  msg.msg_iovlen = 1;
-  msg.msg_control = cbuf;
-  msg.msg_controllen = sizeof cbuf;
+  HeaderMessage m(h);
+  struct msghdr& msg = m.msg;
   struct cmsghdr* c = CMSG_FIRSTHDR(&msg);
   c->cmsg_level = SOL_SOCKET;
   c->cmsg_type = SCM_RIGHTS;
@@ -99,13 +109,8 @@ bool send_request(int control, const std::string& payload, const int fds[3]) {
 // In the server: one request, or false when the socket has ended (or speaks nonsense).
 bool receive_request(int control, std::string& payload, int fds[3]) {
   Header h{};
-  struct iovec iov{&h, sizeof h};
-  alignas(struct cmsghdr) char cbuf[CMSG_SPACE(3 * sizeof(int))] = {};
-  struct msghdr msg{};
-  msg.msg_iov = &iov;
-  msg.msg_iovlen = 1;
-  msg.msg_control = cbuf;
-  msg.msg_controllen = sizeof cbuf;
+  HeaderMessage m(h);
+  struct msghdr& msg = m.msg;
   ssize_t n;
   do n = recvmsg(control, &msg, MSG_CMSG_CLOEXEC);
   while (n < 0 && errno == EINTR);
