@@ -9,7 +9,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -17,7 +16,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "child_process.h"
 #include "lepp/audit/engine_run_bytes.h"
@@ -35,11 +33,6 @@ struct Header {
   char magic[8];
   std::uint64_t bytes;
 };
-
-// Our ends of the live servers' sockets: a server forked later closes them, so that
-// each server sees its socket end when our end closes, and none keeps another alive.
-std::mutex g_live_mutex;
-std::vector<int> g_live;
 
 bool write_all(int fd, const char* p, std::size_t n) {
   while (n > 0) {
@@ -231,8 +224,6 @@ ForkServer::ForkServer(Body body) {
   int sv[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
     throw std::runtime_error(std::string("fork server: socketpair: ") + std::strerror(errno));
-  std::lock_guard<std::mutex> lock(g_live_mutex);
-  const std::vector<int> others = g_live;
   const pid_t pid = fork();
   if (pid < 0) {
     close_all({sv[0], sv[1]});
@@ -240,21 +231,19 @@ ForkServer::ForkServer(Body body) {
   }
   if (pid == 0) {
     close(sv[0]);
-    for (int fd : others) close(fd);
     serve(sv[1], body);
   }
   close(sv[1]);
   control_ = sv[0];
   server_ = pid;
-  g_live.push_back(control_);
 }
 
 ForkServer::~ForkServer() {
-  {
-    std::lock_guard<std::mutex> lock(g_live_mutex);
-    g_live.erase(std::remove(g_live.begin(), g_live.end(), control_), g_live.end());
-  }
-  close(control_);  // the server's end of its socket: it leaves
+  // No run is left (each holds the server). The server would leave at the end of its
+  // socket, but a server made later holds a copy of our end (it was forked with it),
+  // so it is killed rather than waited for.
+  close(control_);
+  kill(server_, SIGKILL);
   int wstatus;
   while (waitpid(server_, &wstatus, 0) < 0 && errno == EINTR) {
   }

@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
@@ -289,6 +290,41 @@ TEST(IsolatedEngine, ALockHeldByAnotherThreadAtTheForkDoesNotHangTheRun) {
   cv.notify_all();
   holder.join();
   EXPECT_EQ(r.status, RunStatus::Ok) << r.detail;
+}
+
+// The fork server killed while a run is on: that run ends (Crashed, saying the
+// server ended, never a wait for a status that cannot come), and every later run
+// of the engine is Crashed at once (the server is gone), not a hang.
+TEST(IsolatedEngine, AKilledForkServerEndsItsRunsNotTheAudit) {
+  Engine isolated = isolated_engine([](const Pslg&, const EngineRequest&) {
+    kill(getppid(), SIGKILL);  // the child's parent is the server
+    usleep(100000);
+    return EngineRun{};
+  });
+  EngineRequest req;
+  req.timeout_seconds = 20;
+  const EngineRun during = isolated(triangle(), req);
+  EXPECT_EQ(during.status, RunStatus::Crashed);
+  EXPECT_NE(during.detail.find("fork server ended during the run"), std::string::npos) << during.detail;
+  EXPECT_LT(during.seconds, 10);
+  const EngineRun after = isolated(triangle(), req);
+  EXPECT_EQ(after.status, RunStatus::Crashed);
+  EXPECT_NE(after.detail.find("fork server is gone"), std::string::npos) << after.detail;
+}
+
+// Two isolated engines (lepp audit's engine and its comparison), the first
+// destroyed first: its server ends although the second server, forked later,
+// holds a copy of its socket.
+TEST(IsolatedEngine, AnEngineDestroyedBeforeALaterOneEndsItsServer) {
+  auto first = std::make_unique<Engine>(isolated_engine([](const Pslg&, const EngineRequest&) { return EngineRun{}; }));
+  Engine second = isolated_engine([](const Pslg&, const EngineRequest&) { return EngineRun{}; });
+  EngineRequest req;
+  EXPECT_EQ((*first)(triangle(), req).status, RunStatus::Ok);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::thread destroy([&] { first.reset(); });
+  destroy.join();  // waited for forever if the destructor waited for the server to leave by itself
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10);
+  EXPECT_EQ(second(triangle(), req).status, RunStatus::Ok);
 }
 
 // Runs from several threads at once through one server: each comes back with
