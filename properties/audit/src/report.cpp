@@ -57,8 +57,8 @@ std::string deviations_text(const AuditReport& rep) {
   for (Row row : {Row::Certificate, Row::MinAngle}) {
     const RowSummary& named = rep[row];
     if (named.deviations.empty()) continue;
-    md += fmt::format("\n{} failures named by the program's arithmetic (its output's coordinates, docs/CONFORMANCE.md "
-                      "\"Arithmetic\"):",
+    md += fmt::format("\n{} failures named by the program's arithmetic (its output's coordinates, or its rounding: "
+                      "docs/CONFORMANCE.md \"Arithmetic\"):",
                       row == Row::Certificate ? "Certificate" : "Min-angle");
     bool first = true;
     for (const auto& [name, runs] : named.deviations) {
