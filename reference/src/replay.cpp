@@ -1028,8 +1028,8 @@ struct Replay::Impl {
   static std::string what(const DeviationMatch& m) {
     const ReplayChoice& w = m.where;
     const std::string edge = "(" + std::to_string(w.terminal_edge[0]) + "," + std::to_string(w.terminal_edge[1]) + ")";
-    const std::string lepp = "the Lepp of " + std::string(m.deviation == Deviation::GoodTriangle || m.deviation == Deviation::InexactThreshold ? "good" : "bad") +
-                             " triangle " + tri_text(w.bad);
+    const bool good = m.deviation == Deviation::GoodTriangle || m.deviation == Deviation::InexactThreshold;
+    const std::string lepp = "the Lepp of " + std::string(good ? "good" : "bad") + " triangle " + tri_text(w.bad);
     switch (m.deviation) {
       case Deviation::AreaCentroid: return "the area centroid of the terminal quad of edge " + edge + " (" + lepp + ")";
       case Deviation::VertexCentroid: return "the vertex average of the terminal quad of edge " + edge + " (" + lepp + ")";

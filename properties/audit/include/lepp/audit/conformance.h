@@ -54,11 +54,11 @@ struct ConformanceOptions {
   // Theorem 2 on the terminal pair of every replayed step.
   bool theorem2_every_step = true;
   // The declared reading of the arithmetic (--arithmetic double): a step that is
-  // the paper's choice once near ties of lengths count as ties (inexact-length)
-  // (inexact-length), or once triangles within double rounding above theta count
-  // as bad (inexact-threshold, seen only with angle_tolerance_deg below about
-  // 1e-12), is accepted, counted in ConformanceReport::inexact_steps; false
-  // (exact, the default): such a step fails, named so.
+  // the paper's choice once near ties of lengths count as ties (inexact-length),
+  // or once triangles within double rounding above theta count as bad
+  // (inexact-threshold, seen only with angle_tolerance_deg below about 1e-12),
+  // is accepted, counted in ConformanceReport::inexact_steps; false (exact, the
+  // default): such a step fails, named so.
   bool arithmetic_double = false;
 };
 
