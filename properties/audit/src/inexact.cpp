@@ -28,9 +28,11 @@ std::size_t counted(const certify::Report& report, std::initializer_list<certify
   return n;
 }
 
-// n when every violation of the checks is listed and passes `ok`; 0 otherwise.
+// n when every violation of the checks is listed and passes `ok`; 0 otherwise,
+// with *unlisted set when only the unlisted ones are unknown.
 template <class Ok>
-std::size_t all_of(const certify::Report& report, std::initializer_list<certify::Check> checks, Ok ok) {
+std::size_t all_of(const certify::Report& report, std::initializer_list<certify::Check> checks, bool* unlisted, Ok ok) {
+  if (unlisted) *unlisted = false;
   const std::size_t total = counted(report, checks);
   std::size_t n = 0;
   for (const certify::Violation& v : report.violations) {
@@ -40,7 +42,9 @@ std::size_t all_of(const certify::Report& report, std::initializer_list<certify:
     if (!ok(v)) return 0;
     ++n;
   }
-  return n == total ? n : 0;  // some not listed: undecided, so not named
+  if (n == total) return n;
+  if (unlisted) *unlisted = true;  // some not listed: undecided, so not named
+  return 0;
 }
 
 }  // namespace
@@ -71,9 +75,9 @@ bool incircle_within_rounding(const Point& a, const Point& b, const Point& c, co
   return abs(det) <= NT(kIncircleRounding) * permanent;
 }
 
-std::size_t inexact_incircle_edges(const certify::Report& report) {
+std::size_t inexact_incircle_edges(const certify::Report& report, bool* unlisted) {
   return all_of(report, {certify::Check::Topology, certify::Check::InputVertices, certify::Check::Constraints,
-                         certify::Check::Delaunay},
+                         certify::Check::Delaunay}, unlisted,
                 [](const certify::Violation& v) {
                   // points: the edge's ends, the apex on its side, the opposite vertex (certify.cpp).
                   return v.reason == certify::Reason::NotLocallyDelaunay && v.points.size() == 4 &&
@@ -81,8 +85,8 @@ std::size_t inexact_incircle_edges(const certify::Report& report) {
                 });
 }
 
-std::size_t inexact_threshold_triangles(const certify::Report& report, double theta_deg) {
-  return all_of(report, {certify::Check::MinAngle}, [&](const certify::Violation& v) {
+std::size_t inexact_threshold_triangles(const certify::Report& report, double theta_deg, bool* unlisted) {
+  return all_of(report, {certify::Check::MinAngle}, unlisted, [&](const certify::Violation& v) {
     return (v.reason == certify::Reason::AngleBelowTheta || v.reason == certify::Reason::AngleNotCertified) &&
            v.points.size() == 3 && angle_within_rounding_below(v.points[0], v.points[1], v.points[2], theta_deg);
   });

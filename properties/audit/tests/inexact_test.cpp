@@ -6,7 +6,13 @@
 // sin2_bracket(30) = [0.25 - DBL_EPSILON/4, 0.25 + DBL_EPSILON/4].
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "lepp/audit/checks.h"
 #include "lepp/audit/inexact.h"
+#include "lepp/validate.h"
 
 namespace {
 
@@ -74,6 +80,82 @@ TEST(InexactBounds, RowNamedOnlyWhenEveryViolationIsWithinRounding) {
   EXPECT_EQ(lepp::audit::inexact_threshold_triangles(report_of({below}, 3), 30), 0u);
   // The same triangle against another theta is far from it.
   EXPECT_EQ(lepp::audit::inexact_threshold_triangles(report_of({below}), 31), 0u);
+}
+
+// A 6 x 6 grid of unit squares, every other column one ulp up, each square cut
+// by the diagonal that is not Delaunay: 36 edges, each cocircular within
+// rounding, more than the certifier lists per reason (20). check_run looks at
+// every one (certifying again) and names the certificate row, or holds it with
+// 36 notes under --arithmetic double; one edge made far from cocircular (a
+// vertex moved by 0.1) leaves the row a bare Delaunay failure. A trace whose
+// step fails is named inexact-incircle in place of missing-flips (broken:
+// missing-flips), and under --arithmetic double by the catalogue alone.
+TEST(InexactBounds, CheckRunLooksAtEveryViolationBeyondTheListedOnes) {
+  constexpr int n = 6;
+  auto build = [&](bool broken) {
+    lepp::Pslg pslg;
+    lepp::Mesh mesh;
+    auto id = [&](int i, int j) { return i * (n + 1) + j; };
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const double y = i % 2 ? std::nextafter(double(j), 100.0) : double(j);
+        pslg.vertices.push_back({double(i), y});
+      }
+    if (broken) pslg.vertices[static_cast<std::size_t>(id(3, 3))].x += 0.1;
+    for (int i = 0; i < n; ++i) {
+      pslg.segments.push_back({id(i, 0), id(i + 1, 0)});
+      pslg.segments.push_back({id(i + 1, n), id(i, n)});
+      pslg.segments.push_back({id(0, i + 1), id(0, i)});
+      pslg.segments.push_back({id(n, i), id(n, i + 1)});
+    }
+    mesh.vertices = pslg.vertices;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+        const lepp::Point &pa = mesh.vertices[a], &pb = mesh.vertices[b], &pc = mesh.vertices[c], &pd = mesh.vertices[d];
+        // Diagonal a-c is Delaunay iff d is not inside the circle through a, b, c.
+        const long double adx = pa.x - pd.x, ady = pa.y - pd.y, bdx = pb.x - pd.x, bdy = pb.y - pd.y, cdx = pc.x - pd.x,
+                          cdy = pc.y - pd.y;
+        const long double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                                (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                                (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+        if (det > 0) mesh.triangles.push_back({a, b, c}), mesh.triangles.push_back({a, c, d});  // the wrong one
+        else mesh.triangles.push_back({a, b, d}), mesh.triangles.push_back({b, c, d});
+      }
+    std::vector<std::string> warnings;
+    return std::pair{lepp::validate(pslg, warnings), mesh};
+  };
+  lepp::audit::EngineRequest req;
+  req.theta = 20;
+  for (const bool broken : {false, true}) {
+    const auto [pslg, mesh] = build(broken);
+    lepp::audit::EngineRun run;
+    run.mesh = mesh;
+    run.trace = std::vector<Point>{{2.5, 2.5}};  // a square centroid, but no triangle is bad at 20 degrees
+    for (const bool dbl : {false, true}) {
+      SCOPED_TRACE(std::string(broken ? "broken " : "") + (dbl ? "double" : "exact"));
+      lepp::audit::CheckOptions options;
+      options.arithmetic_double = dbl;
+      const lepp::audit::CaseResult c = lepp::audit::check_run(pslg, req, run, options);
+      const lepp::audit::RowResult& cert = c[lepp::audit::Row::Certificate];
+      const lepp::audit::RowResult& conf = c[lepp::audit::Row::Conformance];
+      ASSERT_EQ(conf.verdict, lepp::audit::Verdict::Failed) << conf.detail;
+      EXPECT_EQ(conf.deviation, broken ? "missing-flips" : dbl ? "good-triangle" : "inexact-incircle") << conf.detail;
+      if (broken) {
+        EXPECT_EQ(cert.verdict, lepp::audit::Verdict::Failed) << cert.detail;
+        EXPECT_EQ(cert.deviation, "") << cert.detail;
+        EXPECT_TRUE(cert.inexact_steps.empty());
+      } else if (dbl) {
+        EXPECT_EQ(cert.verdict, lepp::audit::Verdict::Held) << cert.detail;
+        ASSERT_EQ(cert.inexact_steps.count("inexact-incircle"), 1u);
+        EXPECT_EQ(cert.inexact_steps.at("inexact-incircle"), 36u);
+      } else {
+        EXPECT_EQ(cert.verdict, lepp::audit::Verdict::Failed);
+        EXPECT_EQ(cert.deviation, "inexact-incircle") << cert.detail;
+        EXPECT_EQ(cert.detail.rfind("inexact-incircle: 36 edges are not locally Delaunay", 0), 0u) << cert.detail;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -38,8 +38,10 @@ bool incircle_within_rounding(const Point& a, const Point& b, const Point& c, co
 // listed) that are all of one inexact kind: how many (0: none, or some other
 // violation among them). Certificate row: NotLocallyDelaunay edges within
 // incircle rounding; min-angle row: triangles below theta within rounding.
-std::size_t inexact_incircle_edges(const certify::Report& report);
-std::size_t inexact_threshold_triangles(const certify::Report& report, double theta_deg);
+// *unlisted (when given) is set when every listed one is within rounding but
+// the report counts more than it lists: certify again listing them all.
+std::size_t inexact_incircle_edges(const certify::Report& report, bool* unlisted = nullptr);
+std::size_t inexact_threshold_triangles(const certify::Report& report, double theta_deg, bool* unlisted = nullptr);
 
 // One sentence each, as in docs/CONFORMANCE.md.
 const char* inexact_definition(const std::string& name);
