@@ -93,6 +93,15 @@ struct LengthTiesWithinRounding {
   LengthTiesWithinRounding& operator=(const LengthTiesWithinRounding&) = delete;
 };
 
+// Deviation::InexactThreshold: a triangle whose smallest angle alpha has
+// sin^2 alpha < sin2_bracket(theta).hi + 16 DBL_EPSILON (exactly) may count as
+// bad. A double program's "alpha < theta" flips only where |cos alpha - cos
+// theta| is within its rounding (about 8 DBL_EPSILON: cos from a dot product
+// or the law of cosines, and cos theta), and |sin^2 alpha - sin^2 theta| =
+// |cos alpha - cos theta| (cos alpha + cos theta) <= 16 DBL_EPSILON; an atan2
+// angle errs by a few DBL_EPSILON radians, which moves sin^2 by no more.
+constexpr double kThresholdRounding = 16 * DBL_EPSILON;
+
 // The comparison the Lepp reads: exact, or with near ties (above) as ties. The
 // filter decides only beyond 16 DBL_EPSILON, outside that band.
 template <class T>
@@ -206,6 +215,11 @@ struct Replay::Impl {
   ReplayRules rules;
   Triangulation tr;
   FT sin2_;
+  // sin^2 theta's certified upper end + 16 DBL_EPSILON (kThresholdRounding).
+  FT sin2_rounding_;
+  // Set around the searches that take triangles within double rounding of
+  // theta as bad too (InexactThreshold allowed).
+  mutable bool threshold_within_rounding_ = false;
   // Twice the size bound of each region (index 0: no region), as the reference
   // engine computes them (refine.cpp): the smaller of the region's and max_area.
   std::vector<std::optional<FT>> bounds_;
@@ -222,6 +236,7 @@ struct Replay::Impl {
       throw std::invalid_argument("replay: the angle and point tolerances must be finite");
     double theta = std::min(r.min_angle_deg + std::max(r.angle_tolerance_deg, 0.0), 60.0);
     sin2_ = FT(sin2_bracket(theta).hi);
+    sin2_rounding_ = FT(sin2_bracket(r.min_angle_deg).hi) + FT(kThresholdRounding);
     build_triangulation(pslg, tr);
     bounds_.push_back(r.max_area > 0 ? std::optional<FT>(FT(r.max_area) * 2) : std::nullopt);
     if (r.region_area_bounds) {
@@ -242,12 +257,13 @@ struct Replay::Impl {
   // Bad, or within the angle tolerance of bad.
   const std::optional<FT>& bound(int region) const { return bounds_[static_cast<std::size_t>(region)]; }
   bool maybe_bad(FH f) const {
-    if (is_skinny(f, sin2_)) return true;
+    if (is_skinny(f, sin2_) || (threshold_within_rounding_ && within_rounding_of_theta(f))) return true;
     const std::optional<FT>& b = bound(f->info().region);
     return b && is_too_big(f, *b);
   }
+  bool within_rounding_of_theta(FH f) const { return is_skinny(f, sin2_rounding_); }
   bool maybe_bad(const CellTri& t) const {
-    if (skinny(t, sin2_)) return true;
+    if (skinny(t, sin2_) || (threshold_within_rounding_ && skinny(t, sin2_rounding_))) return true;
     const std::optional<FT>& b = bound(t.region);
     return b && too_big(t, *b);
   }
@@ -292,7 +308,9 @@ struct Replay::Impl {
   // Some allowed variant has points of its own (InexactLength has none: it changes
   // the length comparisons), so the catalogue's points are worth computing.
   bool allows_points() const {
-    auto points = [](Deviation d) { return d != Deviation::Unknown && d != Deviation::InexactLength; };
+    auto points = [](Deviation d) {
+      return d != Deviation::Unknown && d != Deviation::InexactLength && d != Deviation::InexactThreshold;
+    };
     return points(rules.variant) || std::any_of(allowed_.begin(), allowed_.end(), points);
   }
 
@@ -688,13 +706,26 @@ struct Replay::Impl {
   // That search is match_paper; where the lengths' near ties are allowed
   // (InexactLength) and it fails, it runs again with them as ties, and a choice
   // found so is tagged InexactLength.
+  // Likewise the threshold (InexactThreshold): triangles within double
+  // rounding above theta count as bad too, and with both allowed, both at once.
   bool match(const Point& p, ReplayChoice& out) {
     if (match_paper(p, out)) return true;
-    if (!allows(Deviation::InexactLength)) return false;
+    const bool lengths = allows(Deviation::InexactLength), threshold = allows(Deviation::InexactThreshold);
+    if (lengths) {
+      LengthTiesWithinRounding relaxed(true);
+      if (match_paper(p, out)) return out.deviation = Deviation::InexactLength, true;
+    }
+    if (!threshold) return false;
+    threshold_within_rounding_ = true;
+    struct Restore {
+      bool& flag;
+      ~Restore() { flag = false; }
+    } restore{threshold_within_rounding_};
+    if (match_paper(p, out)) return out.deviation = Deviation::InexactThreshold, true;
+    if (!lengths) return false;
     LengthTiesWithinRounding relaxed(true);
-    if (!match_paper(p, out)) return false;
-    out.deviation = Deviation::InexactLength;
-    return true;
+    if (match_paper(p, out)) return out.deviation = Deviation::InexactThreshold, true;
+    return false;
   }
 
   bool match_paper(const Point& p, ReplayChoice& out) {
@@ -997,8 +1028,8 @@ struct Replay::Impl {
   static std::string what(const DeviationMatch& m) {
     const ReplayChoice& w = m.where;
     const std::string edge = "(" + std::to_string(w.terminal_edge[0]) + "," + std::to_string(w.terminal_edge[1]) + ")";
-    const std::string lepp = "the Lepp of " + std::string(m.deviation == Deviation::GoodTriangle ? "good" : "bad") +
-                             " triangle " + tri_text(w.bad);
+    const bool good = m.deviation == Deviation::GoodTriangle || m.deviation == Deviation::InexactThreshold;
+    const std::string lepp = "the Lepp of " + std::string(good ? "good" : "bad") + " triangle " + tri_text(w.bad);
     switch (m.deviation) {
       case Deviation::AreaCentroid: return "the area centroid of the terminal quad of edge " + edge + " (" + lepp + ")";
       case Deviation::VertexCentroid: return "the vertex average of the terminal quad of edge " + edge + " (" + lepp + ")";
@@ -1014,6 +1045,9 @@ struct Replay::Impl {
                " than the terminal edge and the paper's second-longest edge (" + lepp + ")";
       case Deviation::Circumcenter: return "the circumcenter of bad triangle " + tri_text(w.bad);
       case Deviation::OffCenter: return "the off-center of bad triangle " + tri_text(w.bad);
+      case Deviation::InexactThreshold:
+        return "the paper's choice at terminal edge " + edge + " for " + lepp +
+               ", whose smallest angle is above theta by no more than double rounding";
       case Deviation::GoodTriangle: return "the paper's choice at terminal edge " + edge + " for " + lepp;
       case Deviation::InexactLength:
         return "the paper's choice at terminal edge " + edge + " for " + lepp +
@@ -1068,8 +1102,10 @@ struct Replay::Impl {
         for (const Candidate& c : triangle_points(f)) consider(c, tolerance(c.scale), nullptr, path);
       for (const auto& [lepp, t] : ends) {
         if (!bad) {
+          // Good by no more than double rounding: the program's threshold rounded, not wrong.
+          const Deviation good = within_rounding_of_theta(f) ? Deviation::InexactThreshold : Deviation::GoodTriangle;
           for (Candidate c : paper_candidates(t)) {
-            c.deviation = Deviation::GoodTriangle;
+            c.deviation = good;
             consider(c, tolerance(c.scale), &t, lepp);
           }
           continue;
@@ -1161,6 +1197,7 @@ const char* to_string(Deviation d) {
     case Deviation::OtherSecondLongest: return "other-second-longest";
     case Deviation::Circumcenter: return "circumcenter";
     case Deviation::OffCenter: return "off-center";
+    case Deviation::InexactThreshold: return "inexact-threshold";
     case Deviation::GoodTriangle: return "good-triangle";
     case Deviation::InexactLength: return "inexact-length";
     case Deviation::Precision: return "precision";
@@ -1189,6 +1226,9 @@ const char* definition(Deviation d) {
       return "the midpoint of another edge of a terminal triangle than the terminal edge and the paper's second-longest edge";
     case Deviation::Circumcenter: return "the circumcenter of a bad triangle (Ruppert, Chew)";
     case Deviation::OffCenter: return "the off-center of a bad triangle (Ungor)";
+    case Deviation::InexactThreshold:
+      return "the paper's choice for the Lepp of a triangle that is not bad, whose smallest angle is above theta by no more "
+             "than a double computation of it may err (sin^2 within 16 DBL_EPSILON): the threshold compared in double";
     case Deviation::GoodTriangle: return "the paper's choice for the Lepp of a triangle that is not bad: a wrong threshold";
     case Deviation::InexactLength:
       return "the paper's choice for a Lepp reached by taking a length comparison the other way where the exact squared "
@@ -1204,7 +1244,7 @@ bool has_variant(Deviation d) {
     case Deviation::AreaCentroid: case Deviation::VertexCentroid: case Deviation::TriangleCentroid:
     case Deviation::TerminalMidpoint: case Deviation::CentroidNotMidpoint: case Deviation::Remark10Ignored:
     case Deviation::Remark10Reversed:
-    case Deviation::OtherSecondLongest: case Deviation::InexactLength: return true;
+    case Deviation::OtherSecondLongest: case Deviation::InexactLength: case Deviation::InexactThreshold: return true;
     default: return false;
   }
 }

@@ -400,6 +400,98 @@ TEST(AuditArithmetic, InexactLengthUnderBothReadings) {
   EXPECT_TRUE(row(own.report, "conformance").at("inexact_steps").empty()) << own.report.dump(2);
 }
 
+// inexact-threshold and inexact-incircle (issue 30): a seeded bug's certifier
+// finding within double rounding, on inputs built so it happens
+// (tests/audit/arithmetic/threshold, incircle). Under the exact reading the
+// row fails, named in the JSON (row counts, counterexample), the markdown
+// finding and the report; the shrunk input shows the same name. Under
+// --arithmetic double the row holds and counts the triangles or edges as notes.
+void expect_inexact_named(const std::string& bug, const std::string& row_key, const std::string& dir, const std::string& theta) {
+  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic/" + dir + " --method centroid --theta " + theta +
+                           " --max-findings 1";
+  const AuditRun exact = audit(bug + "-exact", mesher("--bug " + bug), args);
+  expect_caught(exact, bug, row_key, bug + ": ");
+  const json& rw = row(exact.report, row_key);
+  EXPECT_EQ(rw.at("deviations").value(bug, 0u), rw.at("failed").get<std::size_t>()) << rw.dump(2);
+  EXPECT_EQ(rw.at("first").get<std::string>().find(bug), rw.at("first").get<std::string>().find(": ") + 2) << rw.at("first");
+  for (const json& cx : rw.at("counterexamples")) {
+    EXPECT_EQ(cx.value("deviation", ""), bug) << cx.dump(2);
+    EXPECT_NE(cx.at("signature").get<std::string>().find(bug), std::string::npos) << cx.dump(2);
+    const std::string md = slurp(fs::path(cx.at("dir").get<std::string>()) / "finding.md");
+    EXPECT_NE(md.find("- verdict: " + bug + ": "), std::string::npos) << md;
+  }
+  EXPECT_EQ(row(exact.report, "conformance").at("failed"), 0u) << "its trace is the paper's: " << exact.report.dump(2);
+
+  const AuditRun dbl = audit(bug + "-double", mesher("--bug " + bug), args + " --arithmetic double");
+  expect_clean(dbl);
+  const json& noted = row(dbl.report, row_key);
+  EXPECT_EQ(noted.at("inexact_runs").value(bug, 0u), rw.at("failed").get<std::size_t>()) << noted.dump(2);
+  EXPECT_GE(noted.at("inexact_steps").value(bug, 0u), noted.at("inexact_runs").value(bug, 0u)) << noted.dump(2);
+
+  // The program without the bug, and lepp's engine, under both readings: clean, no note.
+  const std::string lepp = kLepp + " refine {in} -o {out} --min-angle {theta} --method {method} --trace -q";
+  for (const std::string reading : {"exact", "double"})
+    for (const std::string& program : {mesher(), lepp}) {
+      const AuditRun clean = audit(bug + "-clean-" + reading + (program == lepp ? "-lepp" : "-mesher"), program,
+                                   args + " --arithmetic " + reading);
+      expect_clean(clean);
+      for (const json& r : clean.report.at("rows")) EXPECT_TRUE(r.at("inexact_steps").empty()) << clean.report.dump(2);
+    }
+}
+
+// A program that compares theta with a few ulps of slack leaves a triangle
+// whose smallest angle is below 30 degrees by 2 DBL_EPSILON of sin^2: the
+// min-angle row names it inexact-threshold.
+TEST(AuditArithmetic, InexactThresholdLeftBelowThetaUnderBothReadings) {
+  expect_inexact_named("inexact-threshold", "min-angle", "threshold", "30");
+}
+
+// A program whose last Delaunay pass tests in-circle in double flips a square
+// cocircular up to one ulp the other way: the certificate row names it
+// inexact-incircle (not a bare Delaunay violation).
+TEST(AuditArithmetic, InexactIncircleUnderBothReadings) {
+  expect_inexact_named("inexact-incircle", "certificate", "incircle", "20,25,30");
+}
+
+// The bad side of inexact-threshold: with --angle-tolerance 0 a program that
+// refines a triangle above 30 degrees by 2 DBL_EPSILON of sin^2 (the test
+// mesher's own 1e-9 degrees of slack) takes a good triangle's choice: named
+// inexact-threshold, not good-triangle; accepted as a note under --arithmetic
+// double; the default tolerance (1e-3 degrees) accepts it as the paper's.
+TEST(AuditArithmetic, InexactThresholdOnTheBadSideWithAngleToleranceZero) {
+  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic/threshold --method centroid --theta 30 "
+                           "--max-findings 1 --no-shrink";
+  const AuditRun exact = audit("threshold-bad-exact", mesher(), args + " --angle-tolerance 0");
+  ASSERT_FALSE(exact.report.is_discarded()) << exact.err;
+  const json& conf = row(exact.report, "conformance");
+  ASSERT_EQ(conf.at("failed"), 1u) << conf.dump(2);
+  EXPECT_EQ(conf.at("deviations").value("inexact-threshold", 0u), 1u) << conf.dump(2);
+  EXPECT_NE(conf.at("first").get<std::string>().find("deviation inexact-threshold: "), std::string::npos) << conf.at("first");
+  const AuditRun dbl = audit("threshold-bad-double", mesher(), args + " --angle-tolerance 0 --arithmetic double");
+  expect_clean(dbl);
+  EXPECT_GE(row(dbl.report, "conformance").at("inexact_steps").value("inexact-threshold", 0u), 1u) << dbl.report.dump(2);
+  const AuditRun tolerant = audit("threshold-bad-default", mesher(), args);
+  expect_clean(tolerant);
+  EXPECT_TRUE(row(tolerant.report, "conformance").at("inexact_steps").empty()) << tolerant.report.dump(2);
+}
+
+// A broken mesh is not rounding: a flip far from cocircular (--bug
+// non-delaunay) and a bad triangle left one insertion short (--bug skinny) keep
+// their bare certifier findings under both readings.
+TEST(AuditArithmetic, InexactNamesRejectBrokenMeshes) {
+  for (const std::string reading : {"exact", "double"})
+    for (const auto& [bug, key] : {std::pair<std::string, std::string>{"non-delaunay", "certificate"}, {"skinny", "min-angle"}}) {
+      const AuditRun r = audit("inexact-reject-" + bug + "-" + reading, mesher("--bug " + bug),
+                               kOwnInputs + " --method centroid --theta 30 --cases 5 --no-shrink --arithmetic " + reading);
+      ASSERT_FALSE(r.report.is_discarded()) << r.err;
+      const json& rw = row(r.report, key);
+      EXPECT_GE(rw.at("failed").get<std::size_t>(), 1u) << bug << " " << reading << ": " << rw.dump(2);
+      EXPECT_EQ(rw.at("deviations").value("inexact-incircle", 0u) + rw.at("deviations").value("inexact-threshold", 0u), 0u)
+          << rw.dump(2);
+      EXPECT_TRUE(rw.at("inexact_steps").empty()) << rw.dump(2);
+    }
+}
+
 // --- each seeded bug is caught by its row and shrunk -----------------------
 
 struct BugCase {

@@ -22,13 +22,17 @@
 // remark10-reversed, remark10-ignored (= no-remark10), other-second-longest,
 // good-triangle; no-flips (named missing-flips); and the arithmetic ones,
 // single-precision (every coordinate written is the float nearest the computed
-// double), printed-digits (written with %g's 6 digits) and inexact-length (edge
-// lengths compared as computed in double). Each is described at its use.
+// double), printed-digits (written with %g's 6 digits), inexact-length (edge
+// lengths compared as computed in double), inexact-threshold (theta compared with
+// a few ulps of slack: a triangle below theta by less than rounding stays) and
+// inexact-incircle (a last Delaunay pass with an in-circle test in double that
+// flips near-cocircular quads the other way). Each is described at its use.
 // --bug may be given more than once: a program with several deviations at once
 // (area-centroid with other-second-longest: two rules for disjoint configurations).
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cfloat>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -79,7 +83,9 @@ enum class Bug {
   // Arithmetic (docs/CONFORMANCE.md, "Arithmetic"): the coordinates it writes are
   // floats (its vertices held as float), or written with a stream's 6 digits.
   single_precision, printed_digits,
-  inexact_length  // squared edge lengths compared as computed in double, not exactly
+  inexact_length,     // squared edge lengths compared as computed in double, not exactly
+  inexact_threshold,  // the smallest angle, in double, compared with theta (1 - 16 DBL_EPSILON)
+  inexact_incircle    // near-cocircular quads flipped the other way by an in-circle test in double
 };
 
 struct Options {
@@ -110,7 +116,8 @@ Bug parse_bug(const std::string& s) {
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
       {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips},
       {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits},
-      {"inexact-length", Bug::inexact_length}};
+      {"inexact-length", Bug::inexact_length}, {"inexact-threshold", Bug::inexact_threshold},
+      {"inexact-incircle", Bug::inexact_incircle}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -193,9 +200,14 @@ class Mesher {
   bool edge_less(Face f, int i, Face g, int j) const;
   // Edge indices of f sorted shortest .. longest.
   std::array<int, 3> edges_sorted(Face f) const;
-  // The good-triangle bug: a threshold 3 degrees too high.
+  // The good-triangle bug: a threshold 3 degrees too high. The inexact-threshold
+  // bug: a few ulps of slack below theta (a triangle whose smallest angle is
+  // below theta by less than double rounding counts as good, and stays).
   bool bad(Face f) const {
-    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < opt_.theta + (opt_.has(Bug::good_triangle) ? 3 : 1e-9);
+    const double theta = opt_.has(Bug::good_triangle)       ? opt_.theta + 3
+                         : opt_.has(Bug::inexact_threshold) ? opt_.theta * (1 - 16 * DBL_EPSILON)
+                                                            : opt_.theta + 1e-9;
+    return min_angle(p(f, 0), p(f, 1), p(f, 2)) < theta;
   }
   bool skipped(Face f) const;  // small input angle: left as it is
   const P2& p(Face f, int i) const { return f->vertex(i)->point(); }
@@ -559,6 +571,36 @@ void Mesher::write(const std::string& prefix) const {
       tris[static_cast<std::size_t>(tc.first)] = {a, d, c};
       tris[static_cast<std::size_t>(it->second.first)] = {d, b, c};
       break;
+    }
+  }
+  if (opt_.has(Bug::inexact_incircle)) {
+    // A last Delaunay pass as a double program writes it: the translated in-circle
+    // determinant in double, "not Delaunay" when it is not clearly negative (within
+    // 4 DBL_EPSILON of its permanent): a near-cocircular quad is flipped the other
+    // way. One pass, no triangle flipped twice.
+    std::map<std::pair<int, int>, std::pair<int, int>> owner;  // directed edge -> (triangle, apex)
+    for (std::size_t t = 0; t < tris.size(); ++t)
+      for (int i = 0; i < 3; ++i) owner[{tris[t][i], tris[t][(i + 1) % 3]}] = {static_cast<int>(t), tris[t][(i + 2) % 3]};
+    auto pt = [&](int i) { return vertex_of_id_[i]->point(); };
+    std::set<int> flipped;
+    for (const auto& [e, tc] : owner) {
+      auto it = owner.find({e.second, e.first});
+      if (it == owner.end() || constrained.count(key(e.first, e.second))) continue;
+      if (flipped.count(tc.first) || flipped.count(it->second.first)) continue;
+      const int a = e.first, b = e.second, c = tc.second, d = it->second.second;
+      if (CGAL::orientation(pt(a), pt(d), pt(c)) != CGAL::LEFT_TURN ||
+          CGAL::orientation(pt(d), pt(b), pt(c)) != CGAL::LEFT_TURN)
+        continue;
+      const double adx = pt(a).x() - pt(d).x(), ady = pt(a).y() - pt(d).y(), bdx = pt(b).x() - pt(d).x(),
+                   bdy = pt(b).y() - pt(d).y(), cdx = pt(c).x() - pt(d).x(), cdy = pt(c).y() - pt(d).y();
+      const double al = adx * adx + ady * ady, bl = bdx * bdx + bdy * bdy, cl = cdx * cdx + cdy * cdy;
+      const double det = al * (bdx * cdy - cdx * bdy) + bl * (cdx * ady - adx * cdy) + cl * (adx * bdy - bdx * ady);
+      const double perm = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * al +
+                          (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * bl + (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * cl;
+      if (det < -4 * DBL_EPSILON * perm || det == 0) continue;  // clearly Delaunay, or exactly cocircular: kept
+      tris[static_cast<std::size_t>(tc.first)] = {a, d, c};
+      tris[static_cast<std::size_t>(it->second.first)] = {d, b, c};
+      flipped.insert(tc.first), flipped.insert(it->second.first);
     }
   }
   FILE* node = std::fopen((prefix + ".node").c_str(), "w");

@@ -9,6 +9,7 @@
 #include "lepp/audit/arithmetic.h"
 #include "lepp/audit/conformance.h"
 #include "lepp/audit/diagnosis.h"
+#include "lepp/audit/inexact.h"
 #include "lepp/gen.h"
 
 namespace lepp::audit {
@@ -223,6 +224,50 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
     r.deviation = arithmetic.name;
     r.detail = fmt::format("{}: {}; what the certifier finds: {}", arithmetic.name, arithmetic.what, r.detail);
   }
+  // A double program's rounding (inexact.h): a smallest angle below theta, or an
+  // edge not locally Delaunay, by no more than double rounding, every violation
+  // of the row. Named; accepted as notes under --arithmetic double.
+  bool delaunay_within_rounding = false;
+  if (certified) {
+    // Every violation must be looked at: the first report lists 20 per reason,
+    // so when those are all within rounding and there are more, certify again.
+    std::optional<certify::Report> relisted;
+    for (Row row : {Row::Certificate, Row::MinAngle}) {
+      RowResult& r = c[row];
+      if (r.verdict != Verdict::Failed || !r.deviation.empty()) continue;
+      const bool cert = row == Row::Certificate;
+      auto count = [&](const certify::Report& rep, bool* unlisted) {
+        return cert ? inexact_incircle_edges(rep, unlisted) : inexact_threshold_triangles(rep, req.theta, unlisted);
+      };
+      bool unlisted = false;
+      std::size_t n = count(relisted ? *relisted : report, &unlisted);
+      if (unlisted && !relisted) {
+        certify::Options all = o;
+        all.max_listed_per_reason = static_cast<std::size_t>(-1);
+        try {
+          relisted = certify::certify(pslg, run.mesh, all);
+          n = count(*relisted, nullptr);
+        } catch (...) {
+          n = 0;  // undecided: the row stays as the certifier says
+        }
+      }
+      if (n == 0) continue;
+      const char* name = cert ? kInexactIncircle : kInexactThreshold;
+      delaunay_within_rounding = delaunay_within_rounding || cert;
+      if (options.arithmetic_double) {
+        r = RowResult{};
+        r.verdict = Verdict::Held;
+        r.inexact_steps[name] = n;
+        continue;
+      }
+      r.deviation = name;
+      r.detail = fmt::format("{}: {} {} {}; what the certifier finds: {}", name, n,
+                             cert ? (n == 1 ? "edge is" : "edges are") : (n == 1 ? "triangle is" : "triangles are"),
+                             cert ? "not locally Delaunay only within double rounding of the in-circle determinant"
+                                  : "below theta only by double rounding of its smallest angle",
+                             r.detail);
+    }
+  }
   // A program that exited non-zero but left a mesh: its mesh is judged, its status said.
   if (run.exit_code != 0)
     for (Row r : {Row::Certificate, Row::MinAngle, Row::Theorem2})
@@ -240,13 +285,23 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   co.point_tolerance_ulps = options.point_tolerance_ulps;
   co.area_centroid = options.area_centroid;
   co.arithmetic_double = options.arithmetic_double;
-  const bool not_delaunay = certified && !first_violation(report, certify::Check::Delaunay, scratch_violations).empty();
+  // Under --arithmetic double a mesh Delaunay up to rounding is accepted: no missing flips.
+  const bool not_delaunay = certified && !first_violation(report, certify::Check::Delaunay, scratch_violations).empty() &&
+                            !(delaunay_within_rounding && options.arithmetic_double);
   try {
     ConformanceReport conf = check_conformance(pslg, *run.trace, co);
     if (conf.failure) name_arithmetic(*conf.failure, arithmetic_of_mesh());
     // The final mesh says the program misses flips (the certificate's Delaunay
     // check): named first, unless its arithmetic explains the mesh already.
-    if (conf.failure && not_delaunay && arithmetic_definition(conf.failure->deviation)[0] == '\0')
+    // When every edge it leaves is within rounding of cocircular, that is the name.
+    if (conf.failure && not_delaunay && delaunay_within_rounding && arithmetic_definition(conf.failure->deviation)[0] == '\0')
+      name_first(*conf.failure, kInexactIncircle,
+                 fmt::format("the final mesh is not constrained Delaunay only within double rounding of the in-circle "
+                             "determinant (certificate row): its flips were decided in double; the replay's catalogue "
+                             "named this step {} on its own mesh",
+                             conf.failure->deviation),
+                 inexact_definition(kInexactIncircle));
+    else if (conf.failure && not_delaunay && arithmetic_definition(conf.failure->deviation)[0] == '\0')
       name_first(*conf.failure, kMissingFlips,
                  fmt::format("the final mesh is not constrained Delaunay (certificate row); the replay's catalogue named "
                              "this step {} on its own mesh",

@@ -151,7 +151,8 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   report.steps = trace.size();
   report.area_centroid = options.area_centroid;
   report.arithmetic_double = options.arithmetic_double;
-  if (options.arithmetic_double) replay.allow(reference::Deviation::InexactLength);
+  if (options.arithmetic_double)
+    for (reference::Deviation d : {reference::Deviation::InexactLength, reference::Deviation::InexactThreshold}) replay.allow(d);
   std::unique_ptr<reference::Replay> before;  // the mesh before a step whose insertion failed
   std::size_t centroid_inside = 0;             // ConformanceFailure::remark10_centroid_inside_steps
   for (std::size_t i = 0; i < trace.size(); ++i) {
@@ -181,7 +182,8 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         replay.insert(p, choice);
         ++report.steps_checked;
         centroid_inside += remark10_centroid(choice);
-        if (choice.deviation == reference::Deviation::InexactLength) ++report.inexact_steps[reference::to_string(choice.deviation)];
+        if (choice.deviation == reference::Deviation::InexactLength || choice.deviation == reference::Deviation::InexactThreshold)
+          ++report.inexact_steps[reference::to_string(choice.deviation)];
         continue;
       } catch (const std::runtime_error& e) {
         reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());

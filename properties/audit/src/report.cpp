@@ -57,8 +57,8 @@ std::string deviations_text(const AuditReport& rep) {
   for (Row row : {Row::Certificate, Row::MinAngle}) {
     const RowSummary& named = rep[row];
     if (named.deviations.empty()) continue;
-    md += fmt::format("\n{} failures named by the program's arithmetic (its output's coordinates, docs/CONFORMANCE.md "
-                      "\"Arithmetic\"):",
+    md += fmt::format("\n{} failures named by the program's arithmetic (its output's coordinates, or its rounding: "
+                      "docs/CONFORMANCE.md \"Arithmetic\"):",
                       row == Row::Certificate ? "Certificate" : "Min-angle");
     bool first = true;
     for (const auto& [name, runs] : named.deviations) {
@@ -74,13 +74,22 @@ std::string deviations_text(const AuditReport& rep) {
           "centroid (centre of mass), not the paper's vertex average (A+B+C+D)/4 of Lemma 11.\n";
   md += rep.arithmetic_double
             ? "\nArithmetic reading `--arithmetic double`: a step that is the paper's choice once two edge lengths within "
-              "double rounding of each other count as a tie (inexact-length) is accepted, and counted below as a note.\n"
+              "double rounding of each other count as a tie (inexact-length), or once a triangle within double rounding "
+              "above theta counts as bad (inexact-threshold), is accepted, and so are a triangle below theta and an edge "
+              "not locally Delaunay by no more than double rounding (inexact-threshold, inexact-incircle); each is counted "
+              "below as a note.\n"
             : "\nArithmetic reading `exact` (the default; `--arithmetic double` accepts the paper's choice reached through "
-              "lengths within double rounding of a tie).\n";
-  for (const auto& [name, steps] : r.inexact_steps) {
-    const std::size_t runs = r.inexact_runs.count(name) ? r.inexact_runs.at(name) : 0;
-    md += fmt::format("Notes under `--arithmetic double`: {}: {} step{} in {} run{} that conform.\n", name, steps,
-                      steps == 1 ? "" : "s", runs, runs == 1 ? "" : "s");
+              "lengths within double rounding of a tie, and angles and in-circle tests within double rounding).\n";
+  // Notes: conformance steps, and the certifier's edges and triangles within rounding.
+  for (Row row : {Row::Certificate, Row::MinAngle, Row::Conformance}) {
+    const RowSummary& noted = rep[row];
+    const char* unit = row == Row::Certificate ? "edge" : row == Row::MinAngle ? "triangle" : "step";
+    const char* held = row == Row::Certificate ? "whose certificate holds" : row == Row::MinAngle ? "whose angles hold" : "that conform";
+    for (const auto& [name, steps] : noted.inexact_steps) {
+      const std::size_t runs = noted.inexact_runs.count(name) ? noted.inexact_runs.at(name) : 0;
+      md += fmt::format("Notes under `--arithmetic double`: {}: {} {}{} in {} run{} {}.\n", name, steps, unit,
+                        steps == 1 ? "" : "s", runs, runs == 1 ? "" : "s", held);
+    }
   }
   if (r.deviations.empty()) return md;
   md += "\nConformance deviations (every catalogue rule each failing run's trace shows, in runs; docs/CONFORMANCE.md):";

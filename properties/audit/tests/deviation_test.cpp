@@ -45,13 +45,52 @@ TEST(DeviationCatalogue, NamesAreTheContract) {
     names.insert(lepp::reference::to_string(d));
     EXPECT_GT(std::string(lepp::reference::definition(d)).size(), 10u);
   }
-  for (const char* n : {"area-centroid", "triangle-centroid", "terminal-midpoint", "centroid-not-midpoint", "remark10-ignored", "remark10-reversed", "inexact-length",
+  for (const char* n : {"area-centroid", "triangle-centroid", "terminal-midpoint", "centroid-not-midpoint", "remark10-ignored", "remark10-reversed", "inexact-length", "inexact-threshold",
                         "other-second-longest", "good-triangle", "circumcenter", "off-center", "precision", "unknown"})
     EXPECT_TRUE(names.count(n)) << n;
   EXPECT_EQ(names.size(), static_cast<std::size_t>(lepp::reference::kDeviations));
   // The two readings of the quad centroid, by the names `--centroid` takes.
   EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Vertex), "vertex");
   EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Area), "area");
+}
+
+// tests/audit/arithmetic/threshold's quad: triangle (0,0) (1,0) (x,0.5) has
+// its smallest angle near 30 degrees, sin^2 = 0.25/(x^2+0.25) exactly.
+lepp::Pslg near_theta(double x) {
+  lepp::Pslg p;
+  p.vertices = {{0, 0}, {1, 0}, {x, 0.5}, {0, 0.9}};
+  p.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  std::vector<std::string> warnings;
+  return lepp::validate(p, warnings);
+}
+
+// inexact-threshold on the bad side, at the exact end of its bound: sin^2 is
+// 15.87 DBL_EPSILON above sin2_bracket(30).hi at x = 0.8660254037844304 (a
+// rounding), 16.09 one ulp down (a wrong threshold). With --angle-tolerance 0
+// the constrained longest edge's midpoint (0.5, 0) is no choice; the
+// catalogue names it, and once the name is allowed (--arithmetic double) it
+// is a choice tagged so. The default tolerance accepts both as the paper's.
+TEST(DeviationCatalogue, InexactThresholdJustInsideAndJustOutsideTheBound) {
+  for (const auto& [x, inside] : {std::pair{0.8660254037844304, true}, std::pair{0.8660254037844303, false}}) {
+    SCOPED_TRACE(x);
+    ReplayRules rules;
+    rules.min_angle_deg = 30;
+    rules.angle_tolerance_deg = 0;
+    Replay replay(near_theta(x), rules);
+    lepp::reference::ReplayChoice choice;
+    EXPECT_FALSE(replay.match({0.5, 0}, choice));
+    EXPECT_EQ(replay.diagnose({0.5, 0}).deviation, inside ? Deviation::InexactThreshold : Deviation::GoodTriangle);
+    replay.allow(Deviation::InexactThreshold);
+    ASSERT_EQ(replay.match({0.5, 0}, choice), inside);
+    if (inside) EXPECT_EQ(choice.deviation, Deviation::InexactThreshold);
+    // A point no choice makes is still none with the name allowed.
+    EXPECT_FALSE(replay.match({0.25, 0}, choice));
+
+    rules.angle_tolerance_deg = 1e-3;  // the default: near theta counts as bad either way
+    Replay tolerant(near_theta(x), rules);
+    ASSERT_TRUE(tolerant.match({0.5, 0}, choice));
+    EXPECT_EQ(choice.deviation, Deviation::Unknown);
+  }
 }
 
 TEST(DeviationCatalogue, CircumcenterOffCenterPrecisionUnknown) {

@@ -40,6 +40,11 @@ enum class Deviation {
   OtherSecondLongest,   // the midpoint of another edge of a terminal triangle
   Circumcenter,         // the bad triangle's circumcenter
   OffCenter,            // the bad triangle's off-center (Ungor)
+  // The paper's choice for the Lepp of a triangle that is not bad but whose
+  // smallest angle alpha is within double rounding of theta (sin^2 alpha below
+  // the certified sin^2 theta's upper end + 16 DBL_EPSILON, exactly): a double
+  // program's threshold. Before GoodTriangle: it is the narrower explanation.
+  InexactThreshold,
   GoodTriangle,         // the paper's choice for the Lepp of a triangle that is not bad
   // The paper's choice for a Lepp reached by taking length comparisons the
   // other way where the exact squared lengths differ by no more than a double
@@ -48,7 +53,7 @@ enum class Deviation {
   Precision,            // within 1000 times the tolerance of a paper choice
   Unknown,              // none of these
 };
-constexpr int kDeviations = 14;
+constexpr int kDeviations = 15;
 const char* to_string(Deviation deviation);   // "area-centroid", ..., "unknown"
 const char* definition(Deviation deviation);  // one sentence, as in docs/CONFORMANCE.md
 
@@ -82,8 +87,9 @@ struct ReplayRules {
   // the paper's where it applies; Unknown: the paper's own rules). Used to ask
   // whether every step of a trace fits one deviation: AreaCentroid (the area
   // reading), TriangleCentroid, TerminalMidpoint, CentroidNotMidpoint,
-  // Remark10Ignored, Remark10Reversed and InexactLength (the paper's rules with
-  // near ties of lengths as ties) have a variant; the others are not a rule
+  // Remark10Ignored, Remark10Reversed, InexactLength (the paper's rules with
+  // near ties of lengths as ties) and InexactThreshold (triangles within double
+  // rounding above theta as bad too) have a variant; the others are not a rule
   // set. Replay::allow adds more, part way through a trace.
   Deviation variant = Deviation::Unknown;
 };

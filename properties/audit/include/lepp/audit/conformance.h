@@ -54,9 +54,11 @@ struct ConformanceOptions {
   // Theorem 2 on the terminal pair of every replayed step.
   bool theorem2_every_step = true;
   // The declared reading of the arithmetic (--arithmetic double): a step that is
-  // the paper's choice once near ties of lengths count as ties (inexact-length)
+  // the paper's choice once near ties of lengths count as ties (inexact-length),
+  // or once triangles within double rounding above theta count as bad
+  // (inexact-threshold, seen only with angle_tolerance_deg below about 1e-12),
   // is accepted, counted in ConformanceReport::inexact_steps; false (exact, the
-  // default): such a step fails, named inexact-length.
+  // default): such a step fails, named so.
   bool arithmetic_double = false;
 };
 
@@ -138,7 +140,7 @@ struct ConformanceReport {
   std::size_t theorem2_pairs_checked = 0;               // unconstrained terminal pairs of the replayed steps
   bool area_centroid = false;                           // the reading checked against
   bool arithmetic_double = false;                       // the arithmetic reading checked against
-  // arithmetic_double: the steps accepted only under it, by name ("inexact-length").
+  // arithmetic_double: the steps accepted only under it, by name ("inexact-length", "inexact-threshold").
   std::map<std::string, std::size_t> inexact_steps;
   double seconds = 0;
 };
