@@ -601,15 +601,21 @@ struct Replay::Impl {
 
   // At the precision limit several choices lie within the tolerance of p (a
   // midpoint a few ulps off its edge is also near the midpoint of the next
-  // one): the first that can be inserted at p is taken, else the first.
+  // one; at subnormal coordinates the tolerance spans several choices): the
+  // nearest that can be inserted at p is taken (the first of equally near
+  // ones), else the first. Not the first insertable: a centroid 8 ulps away,
+  // inserted into a face, keeps the constraint that the program's midpoint 0
+  // ulps away split, and the replay's mesh leaves the program's.
   bool match_here(const Point& p, ReplayChoice& out, bool wide = false) {
-    bool at_vertex = false, found = false;
+    bool at_vertex = false, found = false, insertable_found = false;
+    double nearest = 0;
     std::vector<FH> faces = faces_near(p, at_vertex, wide);
     if (at_vertex) return false;
     for (const Terminal& t : terminals(faces)) {
       std::vector<Candidate> cands = candidates(t);
       for (const Candidate& c : cands) {
-        if (distance(p, c.point) > tolerance(c.scale)) continue;
+        const double d = distance(p, c.point);
+        if (d > tolerance(c.scale) || (insertable_found && d >= nearest)) continue;
         // The Lepp may arrive from either side of an unconstrained terminal edge.
         std::vector<FH> path = bad_reaching(t.t1, t.l, t.t2);
         Terminal used = t;
@@ -621,7 +627,10 @@ struct Replay::Impl {
         if (used.t2 != FH()) path.push_back(used.t2);
         if (insertable_as(p, used, c)) {
           out = describe(used, c, p, path);
-          return true;
+          if (d == 0) return true;  // none nearer
+          insertable_found = found = true;
+          nearest = d;
+          continue;
         }
         if (!found) out = describe(used, c, p, path), found = true;
       }
