@@ -741,7 +741,11 @@ struct Replay::Impl {
     search_exhausted_ = false;
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
     if (match_here(p, out) || match_here(p, out, true)) return true;
-    if (!rules.follow_cocircular_flips) return false;
+    if (rules.follow_cocircular_flips && match_cocircular(p, out)) return true;
+    return match_everywhere(p, out);
+  }
+
+  bool match_cocircular(const Point& p, ReplayChoice& out) {
     if (match_any_triangulation(p, out)) return true;
     // Only when the search of the cells ran out of budget, or at a point that
     // is no choice (where the check ends): the older, narrower searches.
@@ -755,6 +759,32 @@ struct Replay::Impl {
       }
     }
     return false;
+  }
+
+  // The last search, before a step is declared no choice: every bad triangle's
+  // Lepp, wherever its terminal pair lies, and the nearest choice within the
+  // tolerance that can be inserted (else the nearest). The searches around p
+  // miss a pair when p is located far from it: a boundary edge's midpoint
+  // rounded one ulp off its line to the outside of the domain lies in an
+  // outside triangle whose neighbours need not touch the pair (docs/CONFORMANCE.md,
+  // "A midpoint outside the domain"). Slow (the whole mesh), so only here.
+  bool match_everywhere(const Point& p, ReplayChoice& out) const {
+    bool found = false, insertable_found = false;
+    double nearest = 0;
+    for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
+      for (const Candidate& c : candidates(t)) {
+        const double d = distance(p, c.point);
+        if (d > tolerance(c.scale)) continue;
+        const bool ins = insertable_as(p, t, c);
+        const bool better = !found || (ins && !insertable_found) || (ins == insertable_found && d < nearest);
+        if (!better) continue;
+        out = describe(t, c, p, lepp);
+        found = true;
+        insertable_found = ins;
+        nearest = d;
+      }
+    });
+    return found;
   }
 
   // ---- any triangulation of the cocircular cells (cocircular_cells.h) ----
