@@ -9,8 +9,9 @@
 // exit, a crash, unreadable output, a mesh that is not certified or has an angle
 // below theta are findings and stop the fuzzer (the input is saved). A run that
 // does not end, or ends with angles below theta, outside that band (midpoint
-// above alpha_limit, centroid above 30, an input angle below 60 degrees) is
-// kept once per class and band in LEPP_FUZZ_KNOWN_DIR and the fuzzer goes on.
+// above alpha_limit, centroid above 30, an input angle below 60 degrees), or
+// stops short on an input with a feature below double resolution, is kept once
+// per class and band in LEPP_FUZZ_KNOWN_DIR and the fuzzer goes on.
 //
 // Environment: LEPP_ENGINE_CMD (required), LEPP_ENGINE_TIMEOUT (seconds,
 // default 10), LEPP_ENGINE_MEMORY_MB (address-space cap, default none),
@@ -130,14 +131,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string what = fmt::format("{} cmd=[{}] status={} seconds={:.3g} detail=[{}] stderr=[{}]", describe(input),
                                        s.command, audit::to_string(run.status), run.seconds, run.detail, stderr_head);
 
-  // A failed row stops the run, except the two faces of a loop the paper does
-  // not claim away: a run that did not end at a small input angle (termination
-  // is claimed only for inputs without one), and a mesh with angles below theta
-  // where termination is not claimed (the program gave up on its own guard and
-  // wrote what it had, as Triangle and the test mesher do).
+  // A failed row stops the run, except the faces of a loop the paper does not
+  // claim away: a run that did not end at a small input angle (termination is
+  // claimed only for inputs without one), a mesh with angles below theta where
+  // termination is not claimed (the program gave up on its own guard and wrote
+  // what it had, as Triangle and the test mesher do), and a run that did not end,
+  // or said it stopped short, on an input doubles do not resolve (THEOREMS.md,
+  // "Termination in doubles"). A program that exits 0 with angles below theta
+  // there still claimed a converged mesh: a finding.
   const bool claimed = audit::termination_claimed(request.method, request.theta);
+  const bool stopped_short = run.status == audit::RunStatus::TimedOut || run.status == audit::RunStatus::Stopped ||
+                             (run.status == audit::RunStatus::Ok && run.exit_code != 0);
+  const std::string below_resolution = stopped_short ? below_resolution_reason(pslg) : std::string();
   auto known_loop = [&](audit::Row row) {
-    return (row == audit::Row::Termination && min_input_angle < 60) || (row == audit::Row::MinAngle && !claimed);
+    const bool loop_row = row == audit::Row::Termination || row == audit::Row::MinAngle;
+    return (row == audit::Row::Termination && min_input_angle < 60) || (row == audit::Row::MinAngle && !claimed) ||
+           (loop_row && !below_resolution.empty());
   };
   for (audit::Row row : audit::kAllRows) {
     const audit::RowResult& r = result[row];
@@ -151,6 +160,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::vector<std::uint8_t> baked = encode(input);  // replays without LEPP_FUZZ_METHOD/THETA
     std::string reason =
         unclaimed_loop_reason(request.method, request.theta, min_input_angle < 60 ? "small-angle-cascade" : "");
+    if (reason.empty() && r.verdict == audit::Verdict::Failed) reason = below_resolution;
     if (reason.empty()) reason = "audit-finding";
     report_known_finding("fuzz_engine", cls, reason, known_finding_key("fuzz_engine", cls, request.method, request.theta),
                          fmt::format("{} row={}: {}", what, audit::row_key(row), r.detail), baked.data(),
