@@ -123,6 +123,7 @@ int run_refine(const RefineArgs& args) {
         {"method", to_string(options.method)},
         {"order", to_string(options.order)},
         {"order_seed", options.order == QueueOrder::Random ? nlohmann::json(options.order_seed) : nlohmann::json()},
+        {"rounds", options.order == QueueOrder::Batch ? nlohmann::json(result.rounds) : nlohmann::json()},
         {"min_angle_target", args.min_angle},
         {"max_area", args.max_area},
         {"region_areas", args.region_areas},
@@ -175,6 +176,8 @@ int run_refine(const RefineArgs& args) {
                   result.unimprovable.size(), result.unimprovable.size() - at_precision, at_precision, args.output.c_str());
     if (options.order == QueueOrder::Random)
       std::printf("processing order      random (seed %llu)\n", static_cast<unsigned long long>(options.order_seed));
+    else if (options.order == QueueOrder::Batch)
+      std::printf("processing order      batch (%lld rounds)\n", static_cast<long long>(result.rounds));
     else
       std::printf("processing order      %s\n", to_string(options.order));
     std::printf("outcome               %s\n", to_string(result.outcome));
@@ -212,9 +215,10 @@ void add_refine_command(CLI::App& app, int& status) {
       ->check(CLI::IsMember({"fast", "reference"}));
   cmd->add_option("--order", args->order,
                   "Processing order of bad triangles: fifo (default), lifo, flip (in the order the insertion's flips "
-                  "create them), random (--order-seed) or smallest-angle (docs/ALGORITHM.md section 7)")
+                  "create them), random (--order-seed), smallest-angle, or batch (rounds of independent insertions) "
+                  "(docs/ALGORITHM.md section 7)")
       ->default_val("fifo")
-      ->check(CLI::IsMember({"fifo", "lifo", "flip", "random", "smallest-angle"}));
+      ->check(CLI::IsMember({"fifo", "lifo", "flip", "random", "smallest-angle", "batch"}));
   cmd->add_option("--order-seed", args->order_seed, "Seed of --order random (SplitMix64, docs/ALGORITHM.md)")->default_val(0);
   cmd->add_option("--max-steiner", args->max_steiner, "Steiner budget; default 100000 + 1000 x (vertices + segments)")
       ->check(CLI::NonNegativeNumber);

@@ -27,7 +27,7 @@ TABLE1 = {
     "A": {20: 30, 25: 43, 28: 44, 30: 49, 32: 57, 34: 85, 35: 121, 36: 239},
 }
 NAMED = [("fifo", "tab:blue", "o"), ("lifo", "tab:orange", "s"), ("flip", "tab:green", "^"),
-         ("smallest-angle", "tab:red", "D")]
+         ("smallest-angle", "tab:red", "D"), ("batch", "tab:purple", "v")]
 
 
 def main(path, outdir):

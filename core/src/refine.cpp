@@ -110,13 +110,14 @@ const char* to_string(QueueOrder order) {
     case QueueOrder::Flip: return "flip";
     case QueueOrder::Random: return "random";
     case QueueOrder::SmallestAngle: return "smallest-angle";
+    case QueueOrder::Batch: return "batch";
   }
   return "?";
 }
 
 const std::vector<QueueOrder>& all_queue_orders() {
   static const std::vector<QueueOrder> orders = {QueueOrder::Fifo, QueueOrder::Lifo, QueueOrder::Flip, QueueOrder::Random,
-                                                 QueueOrder::SmallestAngle};
+                                                 QueueOrder::SmallestAngle, QueueOrder::Batch};
   return orders;
 }
 

@@ -76,6 +76,7 @@ class BadQueue {
   void push(std::vector<Keyed>& batch, bool initial) {
     switch (order_) {
       case QueueOrder::Fifo:
+      case QueueOrder::Batch:  // runs in rounds (batch_rounds.h), not through this queue
         std::sort(batch.begin(), batch.end(), key_less);
         for (const Keyed& k : batch) ring_.push_back(k.item);
         return;

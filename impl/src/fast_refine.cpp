@@ -15,6 +15,7 @@
 
 #include "cdt_build.h"
 #include "bad_queue.h"
+#include "batch_rounds.h"
 #include "insertion.h"
 #include "lepp/angle.h"
 #include "lepp/fast.h"
@@ -106,91 +107,19 @@ class Refiner {
     const bool sized = quality_.sized();
 
     RefineResult result;
-    BadQueue queue(opt_.order, opt_.order_seed, mesh_);
-    const bool by_creation = opt_.order == QueueOrder::Flip;
-    inserter_.record_creation = by_creation;
-    std::vector<Keyed> fresh;
+    budget_ = budget;
+    floor_ = floor;
+    start_ = start;
+    sized_ = sized;
+    std::vector<Keyed> initial;
     for (int ti = 0; ti < mesh_.size(); ++ti)
-      if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
-    queue.push(fresh, true);
-
-    Outcome outcome = Outcome::Converged;
-    Lepp lepp;
-    std::int64_t steiner = 0;
-    while ((!queue.empty() || requeue_stopped(queue, steiner)) && outcome == Outcome::Converged) {
-      const Item item = queue.pop();
-      bool first = true;
-      while (still_there(mesh_, item)) {
-        lepp_search(mesh_, item.tri, lepp);
-        // Guards before the insertion (section 9).
-        if (opt_.time_limit_seconds > 0 &&
-            std::chrono::duration<double>(Clock::now() - start).count() > opt_.time_limit_seconds) {
-          outcome = Outcome::TimeLimit;
-        } else if (steiner >= budget) {
-          outcome = Outcome::SteinerBudget;
-        }
-        if (outcome != Outcome::Converged) {
-          result.stuck = describe(mesh_, item, lepp);
-          break;
-        }
-
-        prefetch_around(lepp);
-        Choice choice = select_point(mesh_, lepp, opt_.method);
-        if (!settle_choice(mesh_, lepp, opt_.method, choice, obstacles_)) {  // at the limit (section 8b)
-          if (!other_tie_resolution(mesh_, item.tri, opt_.method, lepp, choice, obstacles_)) {  // the precision stop
-            ++result.precision_stops;
-            stopped_.push_back({item, choice.rule, choice.point});
-            break;
-          }
-          ++result.tie_resolutions;
-        }
-        ++result.lepp_searches;
-        result.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
-        if (first && sized && quality_.too_big(mesh_, item.tri)) ++result.area_refined;
-        first = false;
-        TraceStep step;
-        if (opt_.trace) step = trace_step(item, lepp, choice);
-        int split_segment = -1;
-        const int p = static_cast<int>(mesh_.pts.size());
-        const int around = inserter_.insert(mesh_, mem_, choice, split_segment);
-        if (split_segment >= 0) obstacles_.on_split(mesh_, split_segment, p);
-        ++steiner;
-        if (opt_.trace) {
-          step.split_segment = split_segment;
-          result.trace.push_back(std::move(step));
-        }
-
-        // The new point's star: every triangle this insertion made.
-        bool below_floor = false;
-        fresh.clear();
-        mesh_.for_each_in_star(around, [&](int ti) {
-          const FTri& f = mesh_.t(ti);
-          if (floor > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v[1]), floor) ||
-                            sqlen_below(mesh_.p(p), mesh_.p(f.v[2]), floor)))
-            below_floor = true;
-          if (quality_.processed(mesh_, ti)) fresh.push_back(keyed(mesh_, ti));
-        });
-        if (by_creation) set_creation_ranks(fresh);
-        // A split off its line may keep a triangle beside its sliver: its edge ab is
-        // no longer constrained, so it is judged again, last in creation order.
-        if (const int k = inserter_.kept(); k >= 0 && quality_.processed(mesh_, k)) {
-          fresh.push_back(keyed(mesh_, k));
-          fresh.back().created = static_cast<int>(inserter_.created().size());
-        }
-        queue.push(fresh, false);
-        if (opt_.on_insertion) {
-          Mesh now = mesh_.to_mesh(mem_);
-          canonicalize(now);
-          opt_.on_insertion(now);
-        }
-        if (opt_.on_progress && (steiner & 0xffff) == 0) opt_.on_progress(steiner);
-        if (below_floor) {
-          outcome = Outcome::EdgeFloor;
-          result.stuck = describe(mesh_, item, lepp) + fmt::format("; Steiner point {} made an edge below the floor", p);
-          break;
-        }
-      }
-    }
+      if (quality_.processed(mesh_, ti)) initial.push_back(keyed(mesh_, ti));
+    if (opt_.order == QueueOrder::Batch)
+      run_rounds(initial, result);
+    else
+      run_queue(initial, result);
+    Outcome outcome = outcome_;
+    const std::int64_t steiner = steiner_;
 
     // The unimprovable list, recomputed on the final mesh in key order (section 8),
     // then the precision-stopped triangles still there (section 8b: the last look
@@ -236,6 +165,181 @@ class Refiner {
   }
 
  private:
+  // Every order but batch: one queue, each triangle refined while it remains (section 7).
+  void run_queue(std::vector<Keyed>& initial, RefineResult& result) {
+    BadQueue queue(opt_.order, opt_.order_seed, mesh_);
+    inserter_.record_creation = opt_.order == QueueOrder::Flip;
+    queue.push(initial, true);
+    Choice choice;
+    while (outcome_ == Outcome::Converged && (!queue.empty() || requeue_stopped(queue))) {
+      const Item item = queue.pop();
+      bool first = true;
+      while (still_there(mesh_, item)) {
+        lepp_search(mesh_, item.tri, lepp_);
+        if (!guards_pass(item, result)) break;
+        prefetch_around(lepp_);
+        choice = select_point(mesh_, lepp_, opt_.method);
+        if (!settle(item, choice, result)) break;
+        const bool go_on = insert_choice(item, choice, first, result);
+        first = false;
+        queue.push(fresh_, false);
+        if (!go_on) break;
+      }
+    }
+  }
+
+  // The batch order (section 7): rounds of triangles whose regions (Lepp, terminal
+  // pair, the insertion's cavity and its ring) are apart, inserted in queue order.
+  void run_rounds(std::vector<Keyed>& initial, RefineResult& result) {
+    std::sort(initial.begin(), initial.end(), key_less);
+    std::vector<Item> round, next;
+    for (const Keyed& k : initial) round.push_back(k.item);
+    std::vector<Keyed> tails;
+    std::vector<int> region, cavity;
+    RoundMarks marks, queued;
+    Choice choice;
+    while (outcome_ == Outcome::Converged) {
+      if (round.empty()) {
+        const std::vector<Keyed> again = take_stopped();
+        if (again.empty()) break;
+        for (const Keyed& k : again) round.push_back(k.item);
+      }
+      ++result.rounds;
+      marks.begin_round();
+      next.clear();
+      tails.clear();
+      bool closed = false;
+      int members = 0;
+      for (const Item& item : round) {
+        if (outcome_ != Outcome::Converged) break;
+        if (!still_there(mesh_, item)) continue;
+        if (closed || marks.touched(item.tri)) {
+          next.push_back(item);
+          continue;
+        }
+        lepp_search(mesh_, item.tri, lepp_);
+        bool apart = true;
+        for (int ti : lepp_.path) apart = apart && !marks.touched(ti);
+        if (!apart) {
+          next.push_back(item);
+          continue;
+        }
+        prefetch_around(lepp_);
+        choice = select_point(mesh_, lepp_, opt_.method);
+        if (plain_choice(mesh_, lepp_, choice, obstacles_)) {
+          region.assign(lepp_.path.begin(), lepp_.path.end());
+          if (!cavity_and_ring(mesh_, choice, marks, region, cavity)) {
+            next.push_back(item);
+            continue;
+          }
+          for (int ti : region) marks.mark(ti);
+          if (!guards_pass(item, result)) break;
+        } else {
+          // At the limit: only as the round's first member, on the round's mesh.
+          if (members > 0) {
+            next.push_back(item);
+            continue;
+          }
+          if (!guards_pass(item, result)) break;
+          if (!settle(item, choice, result)) continue;  // left (the precision stop): nothing changed
+          closed = true;  // its alternatives read beyond any region: the round ends with it
+        }
+        ++members;
+        const bool go_on = insert_choice(item, choice, true, result);
+        mesh_.for_each_in_star(around_, [&](int ti) { marks.mark(ti); });
+        if (const int k = inserter_.kept(); k >= 0) marks.mark(k);
+        std::sort(fresh_.begin(), fresh_.end(), key_less);
+        tails.insert(tails.end(), fresh_.begin(), fresh_.end());
+        if (still_there(mesh_, item)) next.push_back(item);
+        if (!go_on) break;
+      }
+      // The next round: what waits, in this round's order, then each member's batch;
+      // each triangle once, where it first comes.
+      round.clear();
+      queued.begin_round();
+      auto take = [&](const Item& it) {
+        if (!still_there(mesh_, it) || queued.touched(it.tri)) return;
+        queued.mark(it.tri);
+        round.push_back(it);
+      };
+      for (const Item& it : next) take(it);
+      for (const Keyed& k : tails) take(k.item);
+    }
+  }
+
+  // The guards before an insertion (section 9): false when one ends the run.
+  bool guards_pass(const Item& item, RefineResult& result) {
+    if (opt_.time_limit_seconds > 0 &&
+        std::chrono::duration<double>(Clock::now() - start_).count() > opt_.time_limit_seconds) {
+      outcome_ = Outcome::TimeLimit;
+    } else if (steiner_ >= budget_) {
+      outcome_ = Outcome::SteinerBudget;
+    }
+    if (outcome_ == Outcome::Converged) return true;
+    result.stuck = describe(mesh_, item, lepp_);
+    return false;
+  }
+
+  // Select Point's choice for lepp_, as inserted (section 8b): false when no
+  // resolution of it can be inserted (the precision stop leaves the triangle).
+  bool settle(const Item& item, Choice& choice, RefineResult& result) {
+    if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_)) return true;
+    if (!other_tie_resolution(mesh_, item.tri, opt_.method, lepp_, choice, obstacles_)) {
+      ++result.precision_stops;
+      stopped_.push_back({item, choice.rule, choice.point});
+      return false;
+    }
+    ++result.tie_resolutions;
+    return true;
+  }
+
+  // Inserts the settled choice for item, as every order does: statistics, trace,
+  // the new point's batch of processed bad triangles (fresh_), the edge floor.
+  // False when an edge below the floor ends the run.
+  bool insert_choice(const Item& item, const Choice& choice, bool first, RefineResult& result) {
+    ++result.lepp_searches;
+    result.lepp_triangles += static_cast<std::int64_t>(lepp_.path.size());
+    if (first && sized_ && quality_.too_big(mesh_, item.tri)) ++result.area_refined;
+    TraceStep step;
+    if (opt_.trace) step = trace_step(item, lepp_, choice);
+    int split_segment = -1;
+    const int p = static_cast<int>(mesh_.pts.size());
+    around_ = inserter_.insert(mesh_, mem_, choice, split_segment);
+    if (split_segment >= 0) obstacles_.on_split(mesh_, split_segment, p);
+    ++steiner_;
+    if (opt_.trace) {
+      step.split_segment = split_segment;
+      result.trace.push_back(std::move(step));
+    }
+
+    // The new point's star: every triangle this insertion made.
+    bool below_floor = false;
+    fresh_.clear();
+    mesh_.for_each_in_star(around_, [&](int ti) {
+      const FTri& f = mesh_.t(ti);
+      if (floor_ > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v[1]), floor_) || sqlen_below(mesh_.p(p), mesh_.p(f.v[2]), floor_)))
+        below_floor = true;
+      if (quality_.processed(mesh_, ti)) fresh_.push_back(keyed(mesh_, ti));
+    });
+    if (inserter_.record_creation) set_creation_ranks(fresh_);
+    // A split off its line may keep a triangle beside its sliver: its edge ab is
+    // no longer constrained, so it is judged again, last in creation order.
+    if (const int k = inserter_.kept(); k >= 0 && quality_.processed(mesh_, k)) {
+      fresh_.push_back(keyed(mesh_, k));
+      fresh_.back().created = static_cast<int>(inserter_.created().size());
+    }
+    if (opt_.on_insertion) {
+      Mesh now = mesh_.to_mesh(mem_);
+      canonicalize(now);
+      opt_.on_insertion(now);
+    }
+    if (opt_.on_progress && (steiner_ & 0xffff) == 0) opt_.on_progress(steiner_);
+    if (!below_floor) return true;
+    outcome_ = Outcome::EdgeFloor;
+    result.stuck = describe(mesh_, item, lepp_) + fmt::format("; Steiner point {} made an edge below the floor", p);
+    return false;
+  }
+
   // A bad triangle the precision stop left: retried when the queue runs dry if
   // points were inserted since (its Lepp may have changed), listed otherwise.
   struct Stopped {
@@ -243,16 +347,20 @@ class Refiner {
     Rule rule;
     Point point;
   };
-  bool requeue_stopped(BadQueue& queue, std::int64_t steiner) {
-    if (steiner == refill_mark_ || stopped_.empty()) return false;
-    refill_mark_ = steiner;
+  std::vector<Keyed> take_stopped() {
     std::vector<Keyed> again;
+    if (steiner_ == refill_mark_ || stopped_.empty()) return again;
+    refill_mark_ = steiner_;
     for (const Stopped& s : stopped_)
       if (still_there(mesh_, s.item)) again.push_back(keyed(mesh_, s.item.tri));
     stopped_.clear();
     std::sort(again.begin(), again.end(), key_less);
     again.erase(std::unique(again.begin(), again.end(), [](const Keyed& x, const Keyed& y) { return !key_less(x, y) && !key_less(y, x); }),
                 again.end());
+    return again;
+  }
+  bool requeue_stopped(BadQueue& queue) {
+    std::vector<Keyed> again = take_stopped();
     queue.push(again, true);  // as the initial queue (section 7's order)
     return !queue.empty();
   }
@@ -303,6 +411,15 @@ class Refiner {
   SliverObstacles obstacles_{pslg_, mem_};  // what the sliver clause tests (section 8b)
   std::vector<Stopped> stopped_;
   std::int64_t refill_mark_ = 0;
+  // The run's state between the steps of its loop.
+  Outcome outcome_ = Outcome::Converged;
+  std::int64_t steiner_ = 0, budget_ = 0;
+  double floor_ = 0;
+  Clock::time_point start_;
+  bool sized_ = false;
+  Lepp lepp_;
+  std::vector<Keyed> fresh_;  // the last insertion's batch
+  int around_ = -1;           // a triangle of the last insertion's star
 };
 
 }  // namespace

@@ -18,7 +18,7 @@
 namespace lepp::paper {
 namespace {
 
-const std::vector<std::string> kNamed = {"fifo", "lifo", "flip", "smallest-angle"};
+const std::vector<std::string> kNamed = {"fifo", "lifo", "flip", "smallest-angle", "batch"};
 
 std::string problem_name(const std::string& key) {
   for (const auto& p : paper_problems())

@@ -40,7 +40,7 @@ RefineOptions options_of(const RefineCall& c) {
   if (c.method != "centroid" && c.method != "midpoint") throw std::invalid_argument("method: 'centroid' or 'midpoint'");
   QueueOrder order = QueueOrder::Fifo;
   if (!parse_queue_order(c.order, order))
-    throw std::invalid_argument("order: 'fifo', 'lifo', 'flip', 'random' or 'smallest-angle'");
+    throw std::invalid_argument("order: 'fifo', 'lifo', 'flip', 'random', 'smallest-angle' or 'batch'");
   if (c.engine != "fast" && c.engine != "reference") throw std::invalid_argument("engine: 'fast' or 'reference'");
   if (c.max_steiner < -1) throw std::invalid_argument("max_steiner: must be >= 0 (or None)");
   if (!(c.time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");

@@ -42,6 +42,7 @@ class BadQueue {
     switch (order_) {
       case QueueOrder::Fifo:
       case QueueOrder::Flip:
+      case QueueOrder::Batch:  // runs in rounds (refine.cpp), not through this queue
         for (const Queued& q : batch) fifo_.push_back(q.key);
         break;
       case QueueOrder::Lifo:  // at the front, smallest key first

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -57,56 +58,18 @@ class Refiner {
   }
 
   RefineResult run() {
-    auto start = std::chrono::steady_clock::now();
+    start_ = std::chrono::steady_clock::now();
     tr_.cocircular_ties = count_cocircular_edges(tr_);
     std::vector<Queued> initial;
     for (FH f : tr_.cdt.finite_face_handles())
       if (f->info().in_domain && processed_bad(f)) initial.push_back(queued(f));
-    queue_.push(initial, true);
 
-    Outcome outcome = Outcome::Converged;
-    std::string stuck;
-    while ((!queue_.empty() || requeue_stopped()) && outcome == Outcome::Converged) {
-      Tri t = queue_.pop();
-      FH f;
-      bool first = true;
-      // "while t remains in tau": the triangle with t's three vertices.
-      while (outcome == Outcome::Converged && exists(t, f)) {
-        Lepp lepp = find_lepp(f, &longest_memo_);
-        double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (options_.time_limit_seconds > 0 && elapsed > options_.time_limit_seconds) {
-          outcome = Outcome::TimeLimit, stuck = describe(t, lepp);
-          break;
-        }
-        if (steiner_ >= budget_) {
-          outcome = Outcome::SteinerBudget, stuck = describe(t, lepp);
-          break;
-        }
-        Selection s = select_point(lepp, options_.method);
-        if (!settle_selection(tr_, lepp, options_.method, s)) {  // at the limit (section 8b)
-          if (!other_tie_resolution(tr_, f, options_.method, lepp, s)) {  // the precision stop
-            ++result_.precision_stops;
-            stopped_.push_back({t, s.rule, s.point});
-            break;
-          }
-          ++result_.tie_resolutions;
-        }
-        if (first && too_big(f)) ++result_.area_refined;
-        first = false;
-        ++result_.lepp_searches;
-        result_.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
-        std::string where = describe(t, lepp);  // before the insertion invalidates the faces
-        if (options_.trace) result_.trace.push_back(trace_step(t, lepp, s));
-
-        FH kept;
-        VH v = insert_point(tr_, s, lepp.t1, options_.order == QueueOrder::Flip ? &created_ : nullptr, &kept);
-        ++steiner_;
-        enqueue_new_bad(v, kept);
-        if (options_.on_insertion) options_.on_insertion(extract_mesh(tr_));
-        if (options_.on_progress && steiner_ % 1000 == 0) options_.on_progress(steiner_);
-        if (below_edge_floor(v)) outcome = Outcome::EdgeFloor, stuck = where;
-      }
-    }
+    if (options_.order == QueueOrder::Batch)
+      run_rounds(initial);
+    else
+      run_queue(initial);
+    Outcome outcome = outcome_;
+    const std::string stuck = stuck_;
 
     if (outcome == Outcome::Converged) check_nothing_left();
     for (FH f : tr_.cdt.finite_face_handles()) {
@@ -139,11 +102,214 @@ class Refiner {
     result_.stuck = stuck;
     result_.steiner_points = steiner_;
     result_.cocircular_ties = tr_.cocircular_ties;
-    result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     return std::move(result_);
   }
 
  private:
+  // Every order but batch: one queue, each triangle refined while it remains (section 7).
+  void run_queue(std::vector<Queued>& initial) {
+    queue_.push(initial, true);
+    while (outcome_ == Outcome::Converged && (!queue_.empty() || requeue_stopped())) {
+      Tri t = queue_.pop();
+      FH f;
+      bool first = true;
+      // "while t remains in tau": the triangle with t's three vertices.
+      while (outcome_ == Outcome::Converged && exists(t, f)) {
+        Lepp lepp = find_lepp(f, &longest_memo_);
+        if (!guards_pass(t, lepp)) break;
+        Selection s = select_point(lepp, options_.method);
+        if (!settle(t, f, lepp, s)) break;
+        std::vector<Queued> fresh = insert_selection(t, f, lepp, s, first);
+        first = false;
+        queue_.push(fresh, false);
+      }
+    }
+  }
+
+  // The batch order (section 7): rounds of triangles whose regions (Lepp, terminal
+  // pair, the insertion's cavity and its ring) are apart, inserted in queue order.
+  // Triangles are named by their keys: a key reserved or made in this round is touched.
+  void run_rounds(std::vector<Queued>& initial) {
+    std::sort(initial.begin(), initial.end(), [](const Queued& x, const Queued& y) { return x.key < y.key; });
+    std::vector<Tri> round, next;
+    for (const Queued& q : initial) round.push_back(q.key);
+    while (outcome_ == Outcome::Converged) {
+      if (round.empty()) {
+        if (!requeue_stopped()) break;
+        while (!queue_.empty()) round.push_back(queue_.pop());
+      }
+      ++result_.rounds;
+      std::set<Tri> touched;
+      std::vector<Tri> tails;
+      next.clear();
+      bool closed = false;
+      int members = 0;
+      for (const Tri& t : round) {
+        FH f;
+        if (outcome_ != Outcome::Converged) break;
+        if (!exists(t, f)) continue;
+        if (closed || touched.count(key(f))) {
+          next.push_back(t);
+          continue;
+        }
+        Lepp lepp = find_lepp(f, &longest_memo_);
+        bool apart = true;
+        for (FH g : lepp.path) apart = apart && !touched.count(key(g));
+        if (!apart) {
+          next.push_back(t);
+          continue;
+        }
+        Selection s = select_point(lepp, options_.method);
+        if (plain(lepp, s)) {
+          std::vector<Tri> region;
+          for (FH g : lepp.path) region.push_back(key(g));
+          if (!cavity_and_ring(s, lepp, touched, region)) {
+            next.push_back(t);
+            continue;
+          }
+          touched.insert(region.begin(), region.end());
+          if (!guards_pass(t, lepp)) break;
+        } else {
+          // At the limit: only as the round's first member, on the round's mesh.
+          if (members > 0) {
+            next.push_back(t);
+            continue;
+          }
+          if (!guards_pass(t, lepp)) break;
+          if (!settle(t, f, lepp, s)) continue;  // left (the precision stop): nothing changed
+          closed = true;  // its alternatives read beyond any region: the round ends with it
+        }
+        ++members;
+        std::vector<Queued> fresh = insert_selection(t, f, lepp, s, true);
+        for (const Tri& k : last_star_) touched.insert(k);
+        std::sort(fresh.begin(), fresh.end(), [](const Queued& x, const Queued& y) { return x.key < y.key; });
+        for (const Queued& q : fresh) tails.push_back(q.key);
+        if (exists(t, f)) next.push_back(t);
+      }
+      // The next round: what waits, in this round's order, then each member's batch;
+      // each triangle once, where it first comes.
+      round.clear();
+      std::set<Tri> queued;
+      for (const std::vector<Tri>* list : {&next, &tails})
+        for (const Tri& t : *list) {
+          FH f;
+          if (exists(t, f) && queued.insert(key(f)).second) round.push_back(t);
+        }
+    }
+  }
+
+  // A selection a round can take as it is: insertable as computed, and not a split
+  // of a domain boundary edge rounded strictly outside the domain (section 7).
+  bool plain(const Lepp& lepp, const Selection& s) const {
+    if (s.split_face != FH()) {
+      FH n = s.split_face->neighbor(s.split_index);
+      const int i = s.split_index;
+      if ((tr_.cdt.is_infinite(n) || !n->info().in_domain) &&
+          CGAL::orientation(s.split_face->vertex(Cdt::ccw(i))->point(), s.split_face->vertex(Cdt::cw(i))->point(),
+                            CPoint(s.point.x, s.point.y)) == CGAL::RIGHT_TURN)
+        return false;
+    }
+    return insertable(tr_, s, lepp);
+  }
+
+  // The cavity of a plain selection (the domain faces holding its point, then
+  // across unconstrained edges every domain face whose circumcircle holds it, on
+  // the circle included) and its ring (the other domain faces sharing an edge with
+  // it), appended to region by key; false as soon as one is touched.
+  bool cavity_and_ring(const Selection& s, const Lepp& lepp, const std::set<Tri>& touched, std::vector<Tri>& region) const {
+    const CPoint p(s.point.x, s.point.y);
+    std::vector<FH> cavity;
+    auto domain = [&](FH g) { return !tr_.cdt.is_infinite(g) && g->info().in_domain; };
+    auto add = [&](FH g) {
+      if (std::find(cavity.begin(), cavity.end(), g) == cavity.end()) cavity.push_back(g);
+    };
+    if (s.split_face != FH()) {
+      add(s.split_face);
+      if (FH n = s.split_face->neighbor(s.split_index); domain(n)) add(n);
+    } else {
+      for (FH g : {lepp.t1, lepp.t2}) {
+        if (g == FH()) continue;
+        CGAL::Orientation o[3];
+        for (int i = 0; i < 3; ++i) o[i] = CGAL::orientation(g->vertex(Cdt::ccw(i))->point(), g->vertex(Cdt::cw(i))->point(), p);
+        if (o[0] == CGAL::RIGHT_TURN || o[1] == CGAL::RIGHT_TURN || o[2] == CGAL::RIGHT_TURN) continue;
+        add(g);
+        for (int i = 0; i < 3; ++i)
+          if (o[i] == CGAL::COLLINEAR && domain(g->neighbor(i))) add(g->neighbor(i));
+        break;
+      }
+    }
+    for (std::size_t k = 0; k < cavity.size(); ++k) {
+      FH g = cavity[k];
+      if (touched.count(key(g))) return false;
+      for (int i = 0; i < 3; ++i) {
+        FH n = g->neighbor(i);
+        if (!domain(n) || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+        const bool inside = !g->is_constrained(i) &&
+                            CGAL::side_of_oriented_circle(n->vertex(0)->point(), n->vertex(1)->point(),
+                                                          n->vertex(2)->point(), p) != CGAL::ON_NEGATIVE_SIDE;
+        if (inside) {
+          cavity.push_back(n);
+        } else {
+          if (touched.count(key(n))) return false;
+          region.push_back(key(n));
+        }
+      }
+    }
+    for (FH g : cavity) region.push_back(key(g));
+    return true;
+  }
+
+  // The guards before an insertion (section 9): false when one ends the run.
+  bool guards_pass(const Tri& t, const Lepp& lepp) {
+    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (options_.time_limit_seconds > 0 && elapsed > options_.time_limit_seconds)
+      outcome_ = Outcome::TimeLimit;
+    else if (steiner_ >= budget_)
+      outcome_ = Outcome::SteinerBudget;
+    if (outcome_ == Outcome::Converged) return true;
+    stuck_ = describe(t, lepp);
+    return false;
+  }
+
+  // The selection as inserted (section 8b): false when no resolution of it can be
+  // inserted (the precision stop leaves the triangle).
+  bool settle(const Tri& t, FH f, Lepp& lepp, Selection& s) {
+    if (settle_selection(tr_, lepp, options_.method, s)) return true;
+    if (!other_tie_resolution(tr_, f, options_.method, lepp, s)) {
+      ++result_.precision_stops;
+      stopped_.push_back({t, s.rule, s.point});
+      return false;
+    }
+    ++result_.tie_resolutions;
+    return true;
+  }
+
+  // Inserts the settled selection for t, as every order does; returns the new
+  // point's batch of processed bad triangles (last_star_: every domain face around it).
+  std::vector<Queued> insert_selection(const Tri& t, FH f, const Lepp& lepp, const Selection& s, bool first) {
+    if (first && too_big(f)) ++result_.area_refined;
+    ++result_.lepp_searches;
+    result_.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
+    std::string where = describe(t, lepp);  // before the insertion invalidates the faces
+    if (options_.trace) result_.trace.push_back(trace_step(t, lepp, s));
+
+    FH kept;
+    VH v = insert_point(tr_, s, lepp.t1, options_.order == QueueOrder::Flip ? &created_ : nullptr, &kept);
+    ++steiner_;
+    last_star_.clear();
+    Cdt::Face_circulator fc = tr_.cdt.incident_faces(v), done = fc;
+    do {
+      if (!tr_.cdt.is_infinite(fc) && fc->info().in_domain) last_star_.push_back(key(fc));
+    } while (++fc != done);
+    if (kept != FH()) last_star_.push_back(key(kept));
+    std::vector<Queued> fresh = new_bad(v, kept);
+    if (options_.on_insertion) options_.on_insertion(extract_mesh(tr_));
+    if (options_.on_progress && steiner_ % 1000 == 0) options_.on_progress(steiner_);
+    if (below_edge_floor(v)) outcome_ = Outcome::EdgeFloor, stuck_ = where;
+    return fresh;
+  }
+
   // A bad triangle the precision stop left: retried when the queue runs dry if
   // points were inserted since (its Lepp may have changed), listed otherwise.
   struct Stopped {
@@ -204,7 +370,7 @@ class Refiner {
 
   // The insertion's batch: the processed-bad triangles around v, for the flip
   // order in the order the insertion created them (the created ones that still exist).
-  void enqueue_new_bad(VH v, FH kept) {
+  std::vector<Queued> new_bad(VH v, FH kept) {
     std::vector<Queued> fresh;
     if (options_.order == QueueOrder::Flip) {
       FH f;
@@ -219,7 +385,7 @@ class Refiner {
     // A split off its line may keep a triangle beside its sliver (section 6): its
     // edge ab is no longer constrained, so it is judged again, last in creation order.
     if (kept != FH() && processed_bad(kept)) fresh.push_back(queued(kept));
-    queue_.push(fresh, false);
+    return fresh;
   }
 
   bool below_edge_floor(VH v) const {
@@ -268,6 +434,10 @@ class Refiner {
   Triangulation tr_;
   BadQueue queue_{options_.order, options_.order_seed};
   LongestEdgeMemo longest_memo_;
+  Outcome outcome_ = Outcome::Converged;
+  std::string stuck_;
+  std::chrono::steady_clock::time_point start_;
+  std::vector<Tri> last_star_;  // the last insertion's domain faces around its point (and a kept one)
   std::vector<Tri> created_;  // the flip order: the last insertion's triangles, in creation order
   RefineResult result_;
 };

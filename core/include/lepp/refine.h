@@ -20,8 +20,10 @@ enum class Method { Centroid, Midpoint };
 // fifo (default) and lifo push each insertion's new bad triangles in key order at the back or
 // the front; flip at the back in the order the insertion and its flips created them; random at
 // the back shuffled by a generator seeded with RefineOptions::order_seed (the initial queue too);
-// smallest-angle is a priority queue, the smallest angle first.
-enum class QueueOrder { Fifo, Lifo, Flip, Random, SmallestAngle };
+// smallest-angle is a priority queue, the smallest angle first; batch runs the queue in rounds of
+// triangles whose regions (Lepp, terminal pair, the insertion's cavity and its ring) are apart, so a
+// round's insertions are independent of one another.
+enum class QueueOrder { Fifo, Lifo, Flip, Random, SmallestAngle, Batch };
 
 enum class Outcome {
   Converged,      // every triangle has smallest angle >= theta (and area <= its size bound)
@@ -103,6 +105,7 @@ struct RefineResult {
   std::int64_t area_refined = 0;        // bad triangles refined that were too big (skinny or not)
   std::int64_t precision_stops = 0;     // times a chosen point could not be inserted (section 8b)
   std::int64_t tie_resolutions = 0;     // insertions through another resolution of exact length ties (section 8b)
+  std::int64_t rounds = 0;              // the batch order: rounds run (section 7); 0 for the other orders
   std::string stuck;                    // for a guard outcome: which triangle, its Lepp
   double seconds = 0;
 };

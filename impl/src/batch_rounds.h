@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The batch order's rounds (ALGORITHM.md section 7, "batch"): the triangles a
+// member of a round reads or changes (its region), and the marks that keep the
+// members of one round apart, so that their insertions do not depend on one
+// another (and could run at once).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "point_selection.h"
+#include "predicates.h"
+#include "sliver_obstacles.h"
+#include "precision_stop.h"
+#include "tri_mesh.h"
+
+namespace lepp::fast {
+
+// A slot is touched in the current round when a member's region reserved it or
+// an insertion of the round wrote it. Slots grow with the mesh; marks follow.
+class RoundMarks {
+ public:
+  void begin_round() { ++round_; }
+  bool touched(int ti) const {
+    const auto i = static_cast<std::size_t>(ti);
+    return i < mark_.size() && mark_[i] == round_;
+  }
+  void mark(int ti) {
+    const auto i = static_cast<std::size_t>(ti);
+    if (i >= mark_.size()) mark_.resize(std::max(i + 1, 2 * mark_.size()), 0);
+    mark_[i] = round_;
+  }
+
+ private:
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t round_ = 0;
+};
+
+// A choice a round can take as it is: insertable as computed, and not a split of
+// a domain boundary edge rounded strictly outside the domain (the sliver clause
+// reads vertices and segments beyond any region). Anything else waits until it
+// can be the first member of a round, and closes that round.
+inline bool plain_choice(TriMesh& m, const Lepp& lepp, const Choice& c, SliverObstacles& obstacles) {
+  if (c.edge >= 0) {
+    const FTri& f = m.t(c.tri);
+    if (f.nbr[c.edge] < 0 && orient(m.p(f.v[next3(c.edge)]), m.p(f.v[prev3(c.edge)]), c.point) < 0) return false;
+  }
+  return choice_insertable(m, lepp, c, obstacles);
+}
+
+// The region of a plain choice beyond its Lepp: the cavity (the triangles holding
+// the point, then across unconstrained edges every triangle whose circumcircle
+// holds it, on the circle included: a superset of what the insertion's flips
+// destroy) and its ring (the other triangles sharing an edge with the cavity).
+// Appended to `region`; false as soon as one is touched.
+inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks& marks, std::vector<int>& region,
+                            std::vector<int>& cavity) {
+  cavity.clear();
+  auto add = [&](int ti) {
+    for (int x : cavity)
+      if (x == ti) return;
+    cavity.push_back(ti);
+  };
+  if (c.edge >= 0) {
+    add(c.tri);
+    if (const int n = m.t(c.tri).nbr[c.edge]; n >= 0) add(nbr_tri(n));
+  } else {
+    for (int ti : {c.tri, c.other}) {
+      if (ti < 0) continue;
+      const FTri& f = m.t(ti);
+      int o[3];
+      for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]), c.point);
+      if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;  // not in this one: in the other
+      add(ti);
+      for (int i = 0; i < 3; ++i)
+        if (o[i] == 0 && f.nbr[i] >= 0) add(nbr_tri(f.nbr[i]));  // on an unconstrained edge: both sides
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < cavity.size(); ++k) {
+    const int ti = cavity[k];
+    if (marks.touched(ti)) return false;
+    const FTri& f = m.t(ti);
+    for (int i = 0; i < 3; ++i) {
+      if (f.nbr[i] < 0) continue;
+      const int n = nbr_tri(f.nbr[i]);
+      bool known = false;
+      for (int x : cavity) known = known || x == n;
+      if (known) continue;
+      const FTri& g = m.t(n);
+      // Whether a triangle is in the cavity depends on it alone, so the ring and the
+      // cavity are the same sets whichever way the flood reaches them.
+      if (f.seg[i] < 0 && incircle(m.p(g.v[0]), m.p(g.v[1]), m.p(g.v[2]), c.point) >= 0) {
+        cavity.push_back(n);
+      } else {
+        if (marks.touched(n)) return false;
+        region.push_back(n);
+      }
+    }
+  }
+  region.insert(region.end(), cavity.begin(), cavity.end());
+  return true;
+}
+
+}  // namespace lepp::fast
