@@ -309,6 +309,7 @@ class Refiner {
     ++steiner_;
     if (opt_.trace) {
       step.split_segment = split_segment;
+      step.round = result.rounds;
       result.trace.push_back(std::move(step));
     }
 

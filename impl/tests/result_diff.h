@@ -68,6 +68,7 @@ inline std::string trace_difference(const std::vector<TraceStep>& a, const std::
     else if (s.rule != t.rule) what = fmt::format("rule {} vs {}", to_string(s.rule), to_string(t.rule));
     else if (s.point != t.point) what = fmt::format("point ({:.17g}, {:.17g}) vs ({:.17g}, {:.17g})", s.point.x, s.point.y, t.point.x, t.point.y);
     else if (s.split_segment != t.split_segment) what = fmt::format("split segment {} vs {}", s.split_segment, t.split_segment);
+    else if (s.round != t.round) what = fmt::format("round {} vs {}", s.round, t.round);
     if (!what.empty()) return fmt::format("step {}: {}", k, what);
   }
   if (a.size() != b.size()) return fmt::format("{} vs {} steps", a.size(), b.size());

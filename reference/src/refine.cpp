@@ -292,7 +292,10 @@ class Refiner {
     ++result_.lepp_searches;
     result_.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
     std::string where = describe(t, lepp);  // before the insertion invalidates the faces
-    if (options_.trace) result_.trace.push_back(trace_step(t, lepp, s));
+    if (options_.trace) {
+      result_.trace.push_back(trace_step(t, lepp, s));
+      result_.trace.back().round = result_.rounds;
+    }
 
     FH kept;
     VH v = insert_point(tr_, s, lepp.t1, options_.order == QueueOrder::Flip ? &created_ : nullptr, &kept);

@@ -73,6 +73,7 @@ struct TraceStep {
   Rule rule = Rule::QuadCentroid;
   Point point;                  // the point inserted
   int split_segment = -1;       // input segment split by the point, or -1
+  std::int64_t round = 0;       // the batch order: the round it was inserted in (1, 2, ...); 0 for the other orders
 };
 
 // Why a bad triangle was left (ALGORITHM.md sections 8 and 8b).
