@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp refine IN.poly -o PREFIX`: read, validate, refine, write, report.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -47,7 +48,28 @@ std::string detail_where(const Pslg& p, std::size_t region) {
   return line > 0 ? p.source + ":" + std::to_string(line) : p.source;
 }
 
+// The input file that an output file of prefix `output` would overwrite, or ""
+// (`lepp refine X.poly -o X` would write X.poly over the file being read; the
+// files read: the path, a bare prefix's X.poly and X.node, a .poly's X.node).
+std::string input_overwritten(const std::string& input, const std::string& output) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> read = {input, input + ".poly", input + ".node"};
+  if (fs::path(input).extension() == ".poly") read.push_back(fs::path(input).replace_extension(".node").string());
+  for (const std::string& r : read)
+    for (const char* ext : {".node", ".ele", ".poly", ".vtu", ".msh", ".unimprovable", ".trace"}) {
+      std::error_code ec;
+      if (fs::equivalent(output + ext, r, ec)) return r;
+    }
+  return "";
+}
+
 int run_refine(const RefineArgs& args) {
+  if (const std::string overwritten = input_overwritten(args.input, args.output); !overwritten.empty()) {
+    std::fprintf(stderr,
+                 "lepp refine: -o %s would write over the input %s; give another output prefix (Triangle writes %s.1.*)\n",
+                 args.output.c_str(), overwritten.c_str(), args.output.c_str());
+    return 2;
+  }
   const MeshFormatChoice output = choose_mesh_formats(args.formats);  // CLI11 checked the names
   if (output.same_file) {
     std::fprintf(stderr, "lepp refine: --format msh2 and --format msh4 would both write %s.msh; ask for one per run\n",

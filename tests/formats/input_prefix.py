@@ -5,7 +5,8 @@
 `lepp refine X` and `lepp certify X MESH` read X.poly, else X.node, when X
 itself is no file: the mesh is the one the full name gives, the .poly wins
 over the .node, and with neither the command exits 2 with one line naming X,
-X.poly and X.node. Needs no Triangle.
+X.poly and X.node. An output prefix that would write over the input is
+refused (exit 2, one line naming the file). Needs no Triangle.
 
 usage: input_prefix.py LEPP SOURCE_DIR SCRATCH_DIR
 Exit 0 all pass, 1 a failure (each printed).
@@ -86,6 +87,19 @@ def main():
         fail("refine PREFIX with PREFIX.poly and PREFIX.node: not the mesh of the .poly")
     else:
         print("prefix with both: the .poly's mesh")
+
+    # -o naming the input's own prefix would write over the input: exit 2, one
+    # line naming the file, the input unchanged (a prefix, a full name, a .node).
+    for inp, out, victim in ((both, both, both + ".poly"), (both + ".poly", both, both + ".poly"),
+                             (only_node + ".node", only_node, only_node + ".node")):
+        before = open(victim, "rb").read()
+        r = run([lepp, "refine", inp, "-o", out, "-q"])
+        lines = r.stderr.strip().splitlines()
+        if r.returncode != 2 or len(lines) != 1 or victim not in lines[0] or open(victim, "rb").read() != before:
+            fail(f"refine {inp} -o {out}: exit {r.returncode}, stderr {r.stderr.strip()!r}, "
+                 f"input kept: {open(victim, 'rb').read() == before}")
+        else:
+            print(f"refine {os.path.basename(inp)} -o {os.path.basename(out)}: refused, the input kept")
 
     # lepp certify with a bare input prefix: the .poly's mesh certifies
     # against it; the .node's mesh (another domain) does not.
