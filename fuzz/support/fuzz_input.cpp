@@ -238,6 +238,8 @@ RefineOptions options_of(const FuzzInput& in) {
   o.min_angle_deg = theta_deg(in);
   o.method = in.method == 1 ? Method::Midpoint : Method::Centroid;
   o.order = in.order == 1 ? QueueOrder::Lifo : QueueOrder::Fifo;
+  // LEPP_FUZZ_ORDER=batch (any order's name) fuzzes one order whatever the input says.
+  if (const char* order = std::getenv("LEPP_FUZZ_ORDER")) parse_queue_order(order, o.order);
   return o;
 }
 

@@ -89,6 +89,9 @@ Pslg to_pslg(const FuzzInput& input);
 // (an invalid input is no finding).
 std::optional<Pslg> valid_pslg(const FuzzInput& input);
 
+// The input's method, theta and order (fifo or lifo); LEPP_FUZZ_ORDER (a name of
+// `lepp refine --order`, e.g. batch) replaces the order. It is not baked into a
+// kept input: replay a finding made under it with the same variable.
 RefineOptions options_of(const FuzzInput& input);
 double theta_deg(const FuzzInput& input);
 
