@@ -244,5 +244,31 @@ TEST(CertifyPrecision, RejectsAMeshCoveringAVertexOutsideTheDomain) {
   EXPECT_FALSE(rep.certified());
 }
 
+// Two segments leave (0.01, 0.01) at 3.18 degrees and a vertex 3 ulps from it makes
+// both engines refine down to ulps of the apex, where the first vertex of one chain is
+// within an ulp of the other's line (corpus/regressions/precision/apex-ulps-chain-walk.poly,
+// shrunk from fuzz_engine's finding at 22.1 degrees). Both engines make the same mesh,
+// and it certifies with their lists: the certifier takes the listed path from A that
+// ends at B (docs/CERTIFIER.md section 3), not the other chain.
+TEST(CertifyPrecision, ApexRefinedToUlpsCertifiesFromBothEngines) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(read_input(LEPP_SOURCE_DIR "/corpus/regressions/precision/apex-ulps-chain-walk.poly", warnings),
+                          DomainOptions{}, warnings);
+  for (const double theta : {10.0, 20.0, 22.1, 25.0, 30.0}) {
+    SCOPED_TRACE(theta);
+    RefineOptions o;
+    o.min_angle_deg = theta;
+    const RefineResult f = fast::refine(p, o);
+    const RefineResult r = reference::refine(p, o);
+    EXPECT_EQ(f.mesh.vertices, r.mesh.vertices);
+    EXPECT_EQ(f.mesh.triangles, r.mesh.triangles);
+    certify::Options c;
+    c.min_angle_deg = theta;
+    c.unimprovable = f.unimprovable;
+    const certify::Report rep = certify::certify(p, f.mesh, c);
+    EXPECT_TRUE(rep.certified()) << certify::format_report(rep);
+  }
+}
+
 }  // namespace
 }  // namespace lepp

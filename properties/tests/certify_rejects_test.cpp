@@ -280,6 +280,39 @@ TEST(CertifyAccepts, NotchChainIsFoundDepthFirst) {
   expect_certified(certify::certify(p, m, o));
 }
 
+// The fast engine's mesh at 22.1 degrees (stored) of two segments leaving A = (0.01,
+// 0.01) at 3.18 degrees, refined down to ulps of A (a vertex 3 ulps from A). The first
+// vertex of A -> (0.006, 0.008)'s chain, 9 and 5 ulps from A, is 0.09 ulp off the line
+// of A -> (0.003, 0.006) and a straighter step along it than that segment's own first
+// vertex: the walk followed the other chain until it left the line by 2^-20 |AB|, then
+// crossed by an unlisted edge (197 false violations). The listed path from A that ends
+// at B is taken first, and it certifies (docs/CERTIFIER.md section 3).
+TEST(CertifyAccepts, ApexChainIsTheListedPathThatEndsAtB) {
+  const Pslg p = notch("apex-ulps-chain-walk");
+  const std::string prefix = LEPP_SOURCE_DIR "/corpus/regressions/precision/apex-ulps-chain-walk-fast-22.1/out";
+  const Mesh m = read_mesh(prefix);
+  certify::Options o;
+  o.min_angle_deg = 22.1;
+  o.unimprovable = read_unimprovable(prefix);
+  ASSERT_FALSE(o.unimprovable.empty());
+  expect_certified(certify::certify(p, m, o));
+
+  // The listed path is held to the tolerance as any chain: a vertex of it moved
+  // 1e-15 off the line (within 2^-20 |AB| of it, about 600 ulps) is rejected.
+  Mesh moved = m;
+  std::size_t v = 0;
+  while (v < moved.vertices.size() && !(moved.vertices[v].x == 0.009999786376953125 && moved.vertices[v].y == 0.009999877929687501)) ++v;
+  ASSERT_LT(v, moved.vertices.size());
+  moved.vertices[v].y += 1e-15;
+  expect_rejected_for(certify::certify(p, moved, o), Reason::SteinerOffSegment);
+
+  // The limit of geometry alone: without the listed edges the other segment's first
+  // vertex is within the tolerance of this line and the walk takes it.
+  Mesh bare = m;
+  bare.constrained_edges.clear();
+  EXPECT_FALSE(certify::certify(p, bare, o).certified());
+}
+
 TEST(CertifyRejects, MovedInputVertex) {
   const Pslg p = test::square_with_crack();
   Mesh bad = test::cgal_cdt(p);

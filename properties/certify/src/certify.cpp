@@ -397,8 +397,58 @@ class Certifier {
     });
   }
 
-  // Walks from a to b: at each vertex, the next vertex strictly ahead along AB and
-  // strictly before B, and no input vertex, tried in this order: the vertices
+  // The listed path from a to b, if exactly one: a listed edge from a, then at each
+  // Steiner point its other listed edge (it has exactly two), every vertex strictly
+  // ahead of the one before along AB, strictly before B and within 2^-20 |AB| of the
+  // line, up to an input vertex, which must be b. Empty when no listed path or more
+  // than one leads from a to b. Where two segments leave a at a small angle and the
+  // mesh is refined down to ulps of a, the first vertex of the other segment's chain
+  // can be within one ulp of this segment's line and the straightest step; a walk that
+  // took it followed the other chain until it left the line by 2^-20 |AB| and then
+  // stepped across to this chain by an unlisted edge (docs/CERTIFIER.md section 3).
+  // Which input vertex a listed path ends at tells the two chains apart exactly.
+  std::vector<int> listed_path(int a, int b) const {
+    if (listed_.empty()) return {};
+    const Point &A = P(a), &B = P(b);
+    const auto listed = [&](int v, int w) { return listed_.count(edge_key(v, w)) != 0; };
+    std::vector<int> found;
+    int paths = 0;
+    for (int i = adj_begin_[static_cast<std::size_t>(a)]; i < adj_begin_[static_cast<std::size_t>(a) + 1]; ++i) {
+      const int first = adj_[static_cast<std::size_t>(i)];
+      if (!listed(a, first)) continue;
+      std::vector<int> path{a};
+      for (int prev = a, v = first;;) {
+        if (v == b) {
+          path.push_back(b);
+          break;
+        }
+        if (mesh_to_input_[static_cast<std::size_t>(v)] >= 0 || ahead(A, B, P(prev), P(v)) <= 0 || ahead(A, B, P(v), B) <= 0 ||
+            !near_line(A, B, P(v))) {
+          path.clear();
+          break;
+        }
+        path.push_back(v);
+        int next = -1, listed_edges = 0;
+        for (int j = adj_begin_[static_cast<std::size_t>(v)]; j < adj_begin_[static_cast<std::size_t>(v) + 1]; ++j) {
+          const int w = adj_[static_cast<std::size_t>(j)];
+          if (!listed(v, w)) continue;
+          ++listed_edges;
+          if (w != prev) next = w;
+        }
+        if (listed_edges != 2) {
+          path.clear();
+          break;
+        }
+        prev = v, v = next;
+      }
+      if (!path.empty()) ++paths, found = std::move(path);
+    }
+    if (paths != 1) found.clear();
+    return found;
+  }
+
+  // Walks from a to b: the listed path, when exactly one leads from a to b; else at
+  // each vertex the next vertex strictly ahead along AB and strictly before B, and no input vertex, tried in this order: the vertices
   // joined by a listed constrained edge within 1, 2, 4, ... ulp up to the loosest
   // tolerance, the straightest step first in each tier; then those joined by a
   // listed edge within 2^-20 |AB| of the line,
@@ -412,6 +462,7 @@ class Certifier {
   // the way there), so the walk visits each vertex once.
   // {-1, v} when there is no chain, v where the first choices stopped.
   std::vector<int> walk(int a, int b) const {
+    if (std::vector<int> path = listed_path(a, b); !path.empty()) return path;
     const Point &A = P(a), &B = P(b);
     const double loose = segment_tolerance(A, B, mesh_.vertices.size());
     std::vector<double> tiers;  // 1, 2, 4, ... ulp, then the loosest
