@@ -76,6 +76,13 @@ inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks&
       break;
     }
   }
+  // Every neighbour of a triangle holding the point is in the cavity or in the ring:
+  // a touched one decides before any in-circle test (most waiting triangles wait here).
+  for (int ti : cavity) {
+    if (marks.touched(ti)) return false;
+    for (int i = 0; i < 3; ++i)
+      if (const int n = m.t(ti).nbr[i]; n >= 0 && marks.touched(nbr_tri(n))) return false;
+  }
   for (std::size_t k = 0; k < cavity.size(); ++k) {
     const int ti = cavity[k];
     if (marks.touched(ti)) return false;
