@@ -23,6 +23,7 @@
 #include "lepp/reference_replay.h"
 #include "lepp/validate.h"
 #include "random_pslg.h"
+#include "result_diff.h"
 
 namespace lepp {
 namespace {
@@ -102,6 +103,22 @@ TEST(BatchOrder, MembersOfARoundShareNoLeppTriangle) {
         new_points.insert(vertex_of[s]);
       }
     }
+  }
+}
+
+// On the circle counts as inside (ALGORITHM.md section 7): a cavity's flood goes
+// on through a triangle whose circumcircle passes exactly through the point. Grid
+// problems by the midpoint method meet such ties (Square400 at 25 to 33 degrees,
+// Rectangle162 at 30 and 33); both engines must make the same rounds there.
+TEST(BatchOrder, BothEnginesMakeTheSameRoundsWhereThePointIsOnACircle) {
+  for (const auto& [name, theta] : std::vector<std::pair<const char*, double>>{
+           {"square400", 25}, {"square400", 28}, {"square400", 30}, {"square400", 33}, {"rect162", 30}, {"rect162", 33}}) {
+    RefineOptions o = batch(theta);
+    o.method = Method::Midpoint;
+    o.max_steiner = 4000;
+    const RefineResult f = fast::refine(load(name), o), r = reference::refine(load(name), o);
+    EXPECT_EQ(impl_test::trace_difference(f.trace, r.trace), "") << name << " " << theta;
+    EXPECT_EQ(f.rounds, r.rounds) << name << " " << theta;
   }
 }
 
