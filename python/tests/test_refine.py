@@ -75,6 +75,8 @@ def test_arrays_give_the_file_mesh():
     (dict(max_area=20.0), ["--max-area", "20"]),
     (dict(convex_hull=True), ["--convex-hull"]),
     (dict(order="random", order_seed=7), ["--order", "random", "--order-seed", "7"]),
+    (dict(order="batch"), ["--order", "batch"]),
+    (dict(order="batch", engine="reference"), ["--order", "batch"]),
 ])
 def test_options_as_the_cli(options, cli, workdir):
     path = corpus("paper", "A.poly")
