@@ -270,5 +270,46 @@ TEST(CertifyPrecision, ApexRefinedToUlpsCertifiesFromBothEngines) {
   }
 }
 
+// At offset 2^35 an ulp (2^-17) is many times 2^-20 |AB| of a segment 0.3 long, and
+// the chain of segment 0-4 through a cluster of vertices a few ulps apart bends by
+// ulps (corpus/regressions/precision/offset-cluster-listed-path-ulps.poly, fuzz_refine's
+// finding at 18.5 degrees, midpoint, lifo). The listed path lets a vertex through within
+// the walk's loosest tolerance too, so the mesh both engines make certifies; the same
+// mesh with one of that chain's Steiner points moved off the segment does not.
+TEST(CertifyPrecision, ListedPathAtOffsetWithinUlpsCertifiesFromBothEngines) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(
+      read_input(LEPP_SOURCE_DIR "/corpus/regressions/precision/offset-cluster-listed-path-ulps.poly", warnings),
+      DomainOptions{}, warnings);
+  RefineOptions o;
+  o.method = Method::Midpoint;
+  o.min_angle_deg = 18.5;
+  o.order = QueueOrder::Lifo;
+  const RefineResult f = fast::refine(p, o);
+  const RefineResult r = reference::refine(p, o);
+  EXPECT_EQ(f.mesh.vertices, r.mesh.vertices);
+  EXPECT_EQ(f.mesh.triangles, r.mesh.triangles);
+  certify::Options c;
+  c.min_angle_deg = 18.5;
+  c.precision_method = Method::Midpoint;
+  c.unimprovable = f.unimprovable;
+  const certify::Report rep = certify::certify(p, f.mesh, c);
+  EXPECT_TRUE(rep.certified()) << certify::format_report(rep);
+
+  // A Steiner point of a constrained edge, moved 2^-10 across: off its segment.
+  Mesh moved = f.mesh;
+  const std::size_t inputs = p.vertices.size();
+  std::size_t steiner = moved.vertices.size();
+  for (const ConstrainedEdge& e : moved.constrained_edges)
+    if (static_cast<std::size_t>(e.a) >= inputs) {
+      steiner = static_cast<std::size_t>(e.a);
+      break;
+    }
+  ASSERT_LT(steiner, moved.vertices.size());
+  moved.vertices[steiner].y += std::ldexp(1.0, -10);
+  const certify::Report off = certify::certify(p, moved, c);
+  EXPECT_FALSE(off.certified()) << certify::format_report(off);
+}
+
 }  // namespace
 }  // namespace lepp

@@ -165,6 +165,11 @@ bool receive_request(int control, std::string& payload, int fds[3]) {
     if (!receive_request(control, payload, fds)) _exit(0);  // our parent is done, or gone
     const pid_t w = fork();
     if (w == 0) {
+      // The child says it started, before anything of the body runs: a body that
+      // kills the server at once must not leave the client without the child's pid.
+      setpgid(0, 0);  // its group first: the client kills the group it is told of
+      const std::int64_t started = getpid();
+      write_pipe(fds[2], &started, sizeof started);
       close(control);
       close(ended);
       close(fds[2]);
@@ -189,10 +194,13 @@ bool receive_request(int control, std::string& payload, int fds[3]) {
     close(fds[0]);
     close(fds[1]);
     if (w > 0) setpgid(w, w);  // its own group before anyone may kill it (the child does the same)
-    const std::int64_t reply = w > 0 ? w : -static_cast<std::int64_t>(errno);
-    write_pipe(fds[2], &reply, sizeof reply);
-    if (w > 0) status_of[w] = fds[2];
-    else close(fds[2]);
+    if (w > 0) {
+      status_of[w] = fds[2];  // the child wrote its pid there; its end follows
+    } else {
+      const std::int64_t reply = -static_cast<std::int64_t>(errno);
+      write_pipe(fds[2], &reply, sizeof reply);
+      close(fds[2]);
+    }
   }
 }
 

@@ -400,7 +400,8 @@ class Certifier {
   // The listed path from a to b, if exactly one: a listed edge from a, then at each
   // Steiner point its other listed edge (it has exactly two), every vertex strictly
   // ahead of the one before along AB, strictly before B and within 2^-20 |AB| of the
-  // line, up to an input vertex, which must be b. Empty when no listed path or more
+  // line or within the walk's loosest tolerance ((k+1) ulp: far from the origin one
+  // ulp can be many times 2^-20 |AB|), up to an input vertex, which must be b. Empty when no listed path or more
   // than one leads from a to b. Where two segments leave a at a small angle and the
   // mesh is refined down to ulps of a, the first vertex of the other segment's chain
   // can be within one ulp of this segment's line and the straightest step; a walk that
@@ -410,6 +411,7 @@ class Certifier {
   std::vector<int> listed_path(int a, int b) const {
     if (listed_.empty()) return {};
     const Point &A = P(a), &B = P(b);
+    const double loose = segment_tolerance(A, B, mesh_.vertices.size());
     const auto listed = [&](int v, int w) { return listed_.count(edge_key(v, w)) != 0; };
     std::vector<int> found;
     int paths = 0;
@@ -423,7 +425,7 @@ class Certifier {
           break;
         }
         if (mesh_to_input_[static_cast<std::size_t>(v)] >= 0 || ahead(A, B, P(prev), P(v)) <= 0 || ahead(A, B, P(v), B) <= 0 ||
-            !near_line(A, B, P(v))) {
+            !(near_line(A, B, P(v)) || within(A, B, P(v), loose))) {
           path.clear();
           break;
         }
