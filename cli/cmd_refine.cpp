@@ -30,6 +30,7 @@ struct RefineArgs {
   std::string engine = "fast";
   std::string order = "fifo";
   std::uint64_t order_seed = 0;
+  int threads = 0;
   std::int64_t max_steiner = -1;
   double max_area = 0;
   bool region_areas = false;
@@ -99,6 +100,7 @@ int run_refine(const RefineArgs& args) {
   options.method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
   parse_queue_order(args.order, options.order);  // the option's check admits only known names
   options.order_seed = args.order_seed;
+  options.threads = args.threads;
   options.max_steiner = args.max_steiner;
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
@@ -242,6 +244,11 @@ void add_refine_command(CLI::App& app, int& status) {
       ->default_val("fifo")
       ->check(CLI::IsMember({"fifo", "lifo", "flip", "random", "smallest-angle", "batch"}));
   cmd->add_option("--order-seed", args->order_seed, "Seed of --order random (SplitMix64, docs/ALGORITHM.md)")->default_val(0);
+  cmd->add_option("--threads", args->threads,
+                  "Threads for --order batch's selection (fast engine; 0: the machine's cores). The mesh is the same "
+                  "for every number; the other orders run on one")
+      ->default_val(0)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-steiner", args->max_steiner, "Steiner budget; default 100000 + 1000 x (vertices + segments)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-area", args->max_area, "Size bound: a triangle larger than this is bad too (Triangle's -a)")

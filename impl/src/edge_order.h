@@ -53,10 +53,17 @@ class EdgeOrder {
 };
 
 // The longest edge of ti, computed once per triangle and cached in it.
+// The cache is read and written atomically (relaxed): the batch order's selection
+// runs Lepp searches from several threads at once, and two may fill the same
+// triangle's cache (with the same value).
 inline int longest_edge(TriMesh& m, int ti) {
   FTri& f = m.t(ti);
-  if (f.longest < 0) f.longest = EdgeOrder(m, ti).longest();
-  return f.longest;
+  std::int8_t l = __atomic_load_n(&f.longest, __ATOMIC_RELAXED);
+  if (l < 0) {
+    l = static_cast<std::int8_t>(EdgeOrder(m, ti).longest());
+    __atomic_store_n(&f.longest, l, __ATOMIC_RELAXED);
+  }
+  return l;
 }
 
 // The second-longest edge of ti.

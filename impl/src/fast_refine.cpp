@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "point_selection.h"
 #include "precision_stop.h"
 #include "quality.h"
+#include "round_picks.h"
 #include "tri_mesh.h"
 
 namespace lepp::fast {
@@ -190,6 +192,8 @@ class Refiner {
 
   // The batch order (section 7): rounds of triangles whose regions (Lepp, terminal
   // pair, the insertion's cavity and its ring) are apart, inserted in queue order.
+  // With several threads each window of the round is looked at on all threads
+  // first (round_picks.h); the members are the same.
   void run_rounds(std::vector<Keyed>& initial, RefineResult& result) {
     std::sort(initial.begin(), initial.end(), key_less);
     std::vector<Item> round, next;
@@ -198,6 +202,10 @@ class Refiner {
     std::vector<int> region, cavity;
     RoundMarks marks, queued;
     Choice choice;
+    const int threads = opt_.threads > 0 ? opt_.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const std::size_t window = kWindowPerThread * static_cast<std::size_t>(threads);
+    std::vector<std::size_t> wanted;  // the window's triangles not touched as it begins
+    std::vector<Pick> picks;          // theirs, in that order
     while (outcome_ == Outcome::Converged) {
       if (round.empty()) {
         const std::vector<Keyed> again = take_stopped();
@@ -210,28 +218,62 @@ class Refiner {
       tails.clear();
       bool closed = false;
       int members = 0;
-      for (const Item& item : round) {
+      std::size_t window_end = 0, k = 0;  // the window is round[..., window_end); wanted[k] comes next
+      bool window_picked = false;          // its untouched triangles have picks
+      for (std::size_t i = 0; i < round.size(); ++i) {
+        const Item& item = round[i];
         if (outcome_ != Outcome::Converged) break;
+        if (threads > 1 && i == window_end && !closed) {
+          window_end = std::min(round.size(), i + window), k = 0;
+          wanted.clear();
+          for (std::size_t j = i; j < window_end; ++j)
+            if (still_there(mesh_, round[j]) && !marks.touched(round[j].tri)) wanted.push_back(j);
+          // A window not worth the threads is looked at here, one by one.
+          window_picked = threads_for(wanted.size(), threads) > 1;
+          if (window_picked) pick_window(mesh_, round, wanted, marks, opt_.method, obstacles_, threads, picks);
+        }
         if (!still_there(mesh_, item)) continue;
         if (closed || marks.touched(item.tri)) {
           next.push_back(item);
           continue;
         }
-        lepp_search(mesh_, item.tri, lepp_);
-        bool apart = true;
-        for (int ti : lepp_.path) apart = apart && !marks.touched(ti);
-        if (!apart) {
-          next.push_back(item);
-          continue;
-        }
-        prefetch_around(lepp_);
-        choice = select_point(mesh_, lepp_, opt_.method);
-        if (plain_choice(mesh_, lepp_, choice, obstacles_)) {
-          region.assign(lepp_.path.begin(), lepp_.path.end());
-          if (!cavity_and_ring(mesh_, choice, marks, region, cavity)) {
+        bool plain;
+        if (window_picked && i < window_end) {
+          // Untouched now, so untouched as the window began: it has a pick.
+          while (wanted[k] != i) ++k;
+          const Pick& p = picks[k];
+          bool apart = !p.waits;
+          for (int ti : p.plain ? p.region : p.lepp.path) apart = apart && !marks.touched(ti);
+          if (!apart) {
             next.push_back(item);
             continue;
           }
+          lepp_.path.assign(p.lepp.path.begin(), p.lepp.path.end());
+          lepp_.t1 = p.lepp.t1, lepp_.e1 = p.lepp.e1, lepp_.t2 = p.lepp.t2, lepp_.e2 = p.lepp.e2;
+          lepp_.m1 = p.lepp.m1, lepp_.m2 = p.lepp.m2;
+          choice = p.choice;
+          plain = p.plain;
+          if (plain) region.assign(p.region.begin(), p.region.end());
+        } else {
+          lepp_search(mesh_, item.tri, lepp_);
+          bool apart = true;
+          for (int ti : lepp_.path) apart = apart && !marks.touched(ti);
+          if (!apart) {
+            next.push_back(item);
+            continue;
+          }
+          prefetch_around(lepp_);
+          choice = select_point(mesh_, lepp_, opt_.method);
+          plain = plain_choice(mesh_, lepp_, choice, obstacles_);
+          if (plain) {
+            region.assign(lepp_.path.begin(), lepp_.path.end());
+            if (!cavity_and_ring(mesh_, choice, marks, region, cavity)) {
+              next.push_back(item);
+              continue;
+            }
+          }
+        }
+        if (plain) {
           for (int ti : region) marks.mark(ti);
           if (!guards_pass(item, result)) break;
         } else {
@@ -421,6 +463,8 @@ class Refiner {
   Lepp lepp_;
   std::vector<Keyed> fresh_;  // the last insertion's batch
   int around_ = -1;           // a triangle of the last insertion's star
+  // The batch order's windows: this many triangles per thread (round_picks.h).
+  static constexpr std::size_t kWindowPerThread = 2048;
 };
 
 }  // namespace

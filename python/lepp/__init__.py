@@ -50,7 +50,7 @@ def validate(vertices, segments=None, holes=None, regions=None, *, convex_hull=F
 def refine(vertices, segments=None, holes=None, regions=None, *, min_angle=30, max_area=None, method="centroid",
            order="fifo", engine="fast", max_steiner=None, time_limit=None, convex_hull=False, split_crossings=False,
            trace=False, region_areas=False, edge_floor=None, vertex_markers=None, segment_markers=None,
-           order_seed=0):
+           order_seed=0, threads=0):
     """Refines a PSLG into a constrained Delaunay mesh with no angle below min_angle, as
     `lepp refine` does (same engines, same mesh), and returns a lepp.Mesh.
 
@@ -60,6 +60,8 @@ def refine(vertices, segments=None, holes=None, regions=None, *, min_angle=30, m
     A guard stop (max_steiner, time_limit, the edge floor) is an outcome (mesh.outcome), not
     an exception; bad input raises InputError. The GIL is released while the engine runs.
     order_seed: the seed of order="random" (as `lepp refine --order-seed`; other orders ignore it).
+    threads: the threads of order="batch"'s selection (as `lepp refine --threads`; 0: the machine's
+    cores). The mesh is the same for every number; the other orders run on one.
     """
     pslg = _pslg_dict(vertices, segments, holes, regions, vertex_markers, segment_markers)
     result = _lepp.refine(
@@ -77,6 +79,7 @@ def refine(vertices, segments=None, holes=None, regions=None, *, min_angle=30, m
         split_crossings=bool(split_crossings),
         trace=bool(trace),
         order_seed=int(order_seed),
+        threads=int(threads),
     )
     return Mesh(result)
 

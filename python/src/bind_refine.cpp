@@ -31,6 +31,7 @@ struct RefineCall {
   double time_limit = 0;
   bool convex_hull = false, split_crossings = false, trace = false;
   std::uint64_t order_seed = 0;
+  int threads = 0;
 };
 
 // The checks lepp refine's options make (CLI11 ranges and choices), as ValueError.
@@ -44,11 +45,13 @@ RefineOptions options_of(const RefineCall& c) {
   if (c.engine != "fast" && c.engine != "reference") throw std::invalid_argument("engine: 'fast' or 'reference'");
   if (c.max_steiner < -1) throw std::invalid_argument("max_steiner: must be >= 0 (or None)");
   if (!(c.time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");
+  if (c.threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: the machine's cores)");
   RefineOptions o;
   o.min_angle_deg = c.min_angle;
   o.method = c.method == "midpoint" ? Method::Midpoint : Method::Centroid;
   o.order = order;
   o.order_seed = c.order_seed;  // the random order's seed, as lepp refine --order-seed
+  o.threads = c.threads;        // the batch order's threads, as lepp refine --threads
   o.max_steiner = c.max_steiner;
   o.max_area = c.max_area;
   o.region_area_bounds = c.region_areas;
@@ -156,14 +159,14 @@ void bind_refine(py::module_& m) {
       "refine",
       [](const py::dict& pslg, double min_angle, double max_area, bool region_areas, const std::string& method,
          const std::string& order, const std::string& engine, std::int64_t max_steiner, double edge_floor,
-         double time_limit, bool convex_hull, bool split_crossings, bool trace, std::uint64_t order_seed) {
+         double time_limit, bool convex_hull, bool split_crossings, bool trace, std::uint64_t order_seed, int threads) {
         return run(pslg, RefineCall{min_angle, max_area, region_areas, method, order, engine, max_steiner, edge_floor,
-                                    time_limit, convex_hull, split_crossings, trace, order_seed});
+                                    time_limit, convex_hull, split_crossings, trace, order_seed, threads});
       },
       py::arg("pslg"), py::arg("min_angle") = 30.0, py::arg("max_area") = 0.0, py::arg("region_areas") = false,
       py::arg("method") = "centroid", py::arg("order") = "fifo", py::arg("engine") = "fast", py::arg("max_steiner") = -1,
       py::arg("edge_floor") = -1.0, py::arg("time_limit") = 0.0, py::arg("convex_hull") = false,
-      py::arg("split_crossings") = false, py::arg("trace") = false, py::arg("order_seed") = 0,
+      py::arg("split_crossings") = false, py::arg("trace") = false, py::arg("order_seed") = 0, py::arg("threads") = 0,
       "Validate and refine a PSLG dict; a dict of the mesh arrays, statistics and outcome.");
 }
 

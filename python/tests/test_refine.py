@@ -84,6 +84,16 @@ def test_options_as_the_cli(options, cli, workdir):
     assert_same(mesh, cli_mesh(path, str(workdir / "m"), "--min-angle", "25", *cli))
 
 
+def test_batch_threads_give_the_cli_mesh_of_one_thread(workdir):
+    # Large enough that the rounds' windows run on two threads (about 5e4 triangles).
+    path = corpus("paper", "square400.poly")
+    mesh = lepp.refine(path, min_angle=30, max_area=0.15, order="batch", threads=2)
+    assert_same(mesh, cli_mesh(path, str(workdir / "m"), "--min-angle", "30", "--max-area", "0.15", "--order", "batch",
+                               "--threads", "1"))
+    with pytest.raises(ValueError, match="threads"):
+        lepp.refine(path, order="batch", threads=-1)
+
+
 def test_random_order_seed_changes_the_mesh():
     # The seed is passed through: two seeds give two meshes (A at 25 degrees), one seed gives one.
     path = corpus("paper", "A.poly")

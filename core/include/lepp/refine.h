@@ -53,6 +53,10 @@ struct RefineOptions {
   bool region_area_bounds = false;
   QueueOrder order = QueueOrder::Fifo;
   std::uint64_t order_seed = 0;      // the random order's seed (ALGORITHM.md section 7); other orders ignore it
+  // Threads for the batch order's selection (the fast engine; ALGORITHM.md section 7):
+  // 0 the machine's cores. The mesh is the same for every number; the other orders
+  // and the reference engine run on one.
+  int threads = 0;
   std::int64_t max_steiner = -1;     // -1: default_steiner_budget()
   double edge_floor = -1;            // -1: default_edge_floor()
   double time_limit_seconds = 0;     // 0: no limit

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The batch order's threads under ThreadSanitizer (gcc, -fsanitize=thread), in
+# build-tsan/: only the test that runs the parallel selection (the same run for
+# 1, 2, 3 and 8 threads, docs/ALGORITHM.md section 7), so the step stays small.
+# The AddressSanitizer build (10-sanitizers.sh) runs everything else.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=build-tsan
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1 -DNDEBUG" \
+  -DCMAKE_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
+  -DLEPP_BUILD_BENCH=OFF -DLEPP_BUILD_FUZZ=OFF -DLEPP_LONG_TESTS=OFF >/dev/null
+start=$(date +%s)
+cmake --build "$build" -j "$(nproc)" --target impl_batch_threads_tests
+echo "thread sanitizer build: $(( $(date +%s) - start )) s"
+start=$(date +%s)
+TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" "$build/impl/tests/impl_batch_threads_tests"
+echo "thread sanitizer tests: $(( $(date +%s) - start )) s"
