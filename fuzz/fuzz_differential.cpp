@@ -2,7 +2,9 @@
 // fuzz_differential: the same input through lepp::fast and lepp::reference.
 // Findings: one engine throws or is not certified where the other is fine; on
 // input where neither met a cocircular tie, any difference in outcome, Steiner
-// count, vertices, triangles, constrained edges or unimprovable list.
+// count, vertices, triangles, constrained edges or unimprovable list. With the
+// batch order (LEPP_FUZZ_ORDER=batch) also the fast engine on one thread against
+// three with windows of one entry per thread: any difference (`threads-mismatch`).
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -82,8 +84,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const LoopGuard guard = loop_guard(pslg, kBudgetCap);
   options.max_steiner = guard.steiner_budget;
   options.edge_floor = guard.edge_floor;
+  options.threads = 1;
   const Run fast = run(Engine::Fast, pslg, options), ref = run(Engine::Reference, pslg, options);
   const std::string what = describe(input);
+  if (options.order == lepp::QueueOrder::Batch) {
+    lepp::RefineOptions split = options;
+    split.threads = 3;
+    split.batch_window = 1;  // every window of three or more entries split among the threads
+    const Run threaded = run(Engine::Fast, pslg, split);
+    if (threaded.error != fast.error)
+      finding("threads-mismatch", fmt::format("{}: order batch, 1 thread [{}] 3 threads [{}]", what, fast.error, threaded.error));
+    else if (std::string diff = first_difference(fast.result, threaded.result); !diff.empty())
+      finding("threads-mismatch", fmt::format("{}: order batch, 1 thread against 3 (windows of 1): {}", what, diff));
+  }
   if (!fast.error.empty() || !ref.error.empty()) {
     if (fast.error.empty() != ref.error.empty())
       finding("one-engine-throws", fmt::format("{}: fast [{}] reference [{}]", what, fast.error, ref.error));

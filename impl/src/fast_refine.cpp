@@ -203,7 +203,8 @@ class Refiner {
     RoundMarks marks, queued;
     Choice choice;
     const int threads = opt_.threads > 0 ? opt_.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const std::size_t window = kWindowPerThread * static_cast<std::size_t>(threads);
+    const std::size_t per_thread = opt_.batch_window > 0 ? static_cast<std::size_t>(opt_.batch_window) : kWindowPerThread;
+    const std::size_t window = per_thread * static_cast<std::size_t>(threads);
     std::vector<std::size_t> wanted;  // the window's triangles not touched as it begins
     std::vector<Pick> picks;          // theirs, in that order
     while (outcome_ == Outcome::Converged) {
@@ -229,8 +230,8 @@ class Refiner {
           for (std::size_t j = i; j < window_end; ++j)
             if (still_there(mesh_, round[j]) && !marks.touched(round[j].tri)) wanted.push_back(j);
           // A window not worth the threads is looked at here, one by one.
-          window_picked = threads_for(wanted.size(), threads) > 1;
-          if (window_picked) pick_window(mesh_, round, wanted, marks, opt_.method, obstacles_, threads, picks);
+          window_picked = threads_for(wanted.size(), threads, per_thread) > 1;
+          if (window_picked) pick_window(mesh_, round, wanted, marks, opt_.method, obstacles_, threads, per_thread, picks);
         }
         if (!still_there(mesh_, item)) continue;
         if (closed || marks.touched(item.tri)) {
@@ -463,7 +464,8 @@ class Refiner {
   Lepp lepp_;
   std::vector<Keyed> fresh_;  // the last insertion's batch
   int around_ = -1;           // a triangle of the last insertion's star
-  // The batch order's windows: this many triangles per thread (round_picks.h).
+  // The batch order's windows: this many triangles per thread (round_picks.h),
+  // unless RefineOptions::batch_window says otherwise. Measured: docs/BENCHMARKS.md.
   static constexpr std::size_t kWindowPerThread = 2048;
 };
 

@@ -33,11 +33,12 @@ struct Pick {
   std::vector<int> region;  // plain: the Lepp's path, then the cavity and its ring
 };
 
-// The threads a window of n triangles is worth: fewer for small ones (a thread's
-// start costs about as much as a few dozen Lepp searches).
-inline int threads_for(std::size_t n, int threads) {
-  constexpr std::size_t kPerThread = 512;
-  return static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads), n / kPerThread)));
+// The threads a window of n triangles is worth, with windows of `per_thread`
+// entries per thread: fewer for small ones (a thread's start costs about as much as
+// a few dozen Lepp searches), none below a quarter window per thread.
+inline int threads_for(std::size_t n, int threads, std::size_t per_thread) {
+  const std::size_t least = std::max<std::size_t>(1, per_thread / 4);
+  return static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads), n / least)));
 }
 
 // Fills picks[k] for round[which[k]], split in contiguous parts, one per thread.
@@ -46,7 +47,7 @@ inline int threads_for(std::size_t n, int threads) {
 // decides a split rounded outside the domain before the sliver clause would.
 inline void pick_window(TriMesh& m, const std::vector<Item>& round, const std::vector<std::size_t>& which,
                         const RoundMarks& marks, Method method, SliverObstacles& obstacles, int threads,
-                        std::vector<Pick>& picks) {
+                        std::size_t per_thread, std::vector<Pick>& picks) {
   if (picks.size() < which.size()) picks.resize(which.size());
   auto pick_part = [&](std::size_t begin, std::size_t end, std::vector<int>& cavity) {
     for (std::size_t k = begin; k < end; ++k) {
@@ -64,7 +65,7 @@ inline void pick_window(TriMesh& m, const std::vector<Item>& round, const std::v
     }
   };
   const std::size_t n = which.size();
-  const int t = threads_for(n, threads);
+  const int t = threads_for(n, threads, per_thread);
   std::vector<std::vector<int>> cavities(static_cast<std::size_t>(t));
   if (t == 1) {
     pick_part(0, n, cavities[0]);

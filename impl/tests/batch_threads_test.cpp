@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The batch order on several threads (docs/ALGORITHM.md section 7, "Threads"):
 // the same run, step by step and round by round, for every number of threads.
-// The inputs are large enough that the rounds' windows are split among the
-// threads (a window of fewer than 512 untouched triangles per thread is looked at
-// on one); the ThreadSanitizer build of scripts/ci.d/ runs these tests too.
+// The paper's inputs are large enough that the default windows are split among
+// the threads (a window of fewer than 512 untouched triangles per thread is looked
+// at on one); generated ones use tiny windows. The ThreadSanitizer build of
+// scripts/ci.d/ runs these tests too.
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <ostream>
 #include <string>
@@ -14,6 +16,7 @@
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
+#include "random_pslg.h"
 #include "result_diff.h"
 
 namespace lepp {
@@ -90,6 +93,24 @@ TEST(BatchThreads, PrecisionStopsAreTheSameOnTwoThreads) {
   EXPECT_GT(one.precision_stops, 0);
   EXPECT_EQ(impl_test::difference(one, two), "");
   EXPECT_EQ(impl_test::trace_difference(one.trace, two.trace), "");
+}
+
+// Random PSLGs with windows of 1 to 4 entries per thread, so that small inputs are
+// split among the threads in every round: the same run as one thread's.
+RC_GTEST_PROP(BatchThreads, TinyWindowsGiveTheSameRunOnGeneratedInputs, ()) {
+  const Pslg p = impl_test::to_pslg(*impl_test::gen_raw_pslg(16, 24));
+  RC_PRE(!p.vertices.empty());
+  const double theta = *rc::gen::inRange(15, 34);
+  const Method method = *rc::gen::element(Method::Centroid, Method::Midpoint);
+  const double max_area = *rc::gen::inRange(0, 3) == 0 ? 4.0 / *rc::gen::inRange(20, 400) : 0.0;
+  RefineOptions many = batch(theta, max_area, method, *rc::gen::inRange(2, 6));
+  many.batch_window = *rc::gen::inRange(1, 5);
+  many.max_steiner = 20000;
+  RefineOptions one = many;
+  one.threads = 1;
+  const RefineResult a = fast::refine(p, one), b = fast::refine(p, many);
+  RC_ASSERT(impl_test::difference(a, b) == "");
+  RC_ASSERT(impl_test::trace_difference(a.trace, b.trace) == "");
 }
 
 // threads = 0 is the machine's cores: the same run again.

@@ -57,6 +57,10 @@ struct RefineOptions {
   // 0 the machine's cores. The mesh is the same for every number; the other orders
   // and the reference engine run on one.
   int threads = 0;
+  // Queue entries per thread in a window of the batch order's threads (0: 2048); a
+  // window with fewer than a quarter of that per thread runs on one. Only the time
+  // depends on it: tests and fuzzers use tiny windows to split small inputs.
+  int batch_window = 0;
   std::int64_t max_steiner = -1;     // -1: default_steiner_budget()
   double edge_floor = -1;            // -1: default_edge_floor()
   double time_limit_seconds = 0;     // 0: no limit
