@@ -14,5 +14,8 @@ start=$(date +%s)
 cmake --build "$build" -j "$(nproc)" --target impl_batch_threads_tests
 echo "thread sanitizer build: $(( $(date +%s) - start )) s"
 start=$(date +%s)
-TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" "$build/impl/tests/impl_batch_threads_tests"
+# Square400, the near-duplicate points and the generated PSLGs; the other paper
+# problems run the same code and cost a minute more under the sanitizer.
+TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" "$build/impl/tests/impl_batch_threads_tests" \
+  --gtest_filter='-*rect162*:*circles240*:*A_midpoint*'
 echo "thread sanitizer tests: $(( $(date +%s) - start )) s"
