@@ -249,9 +249,7 @@ class Refiner {
             next.push_back(item);
             continue;
           }
-          lepp_.path.assign(p.lepp.path.begin(), p.lepp.path.end());
-          lepp_.t1 = p.lepp.t1, lepp_.e1 = p.lepp.e1, lepp_.t2 = p.lepp.t2, lepp_.e2 = p.lepp.e2;
-          lepp_.m1 = p.lepp.m1, lepp_.m2 = p.lepp.m2;
+          lepp_ = p.lepp;  // (the path's vector keeps its capacity)
           choice = p.choice;
           plain = p.plain;
           if (plain) region.assign(p.region.begin(), p.region.end());
