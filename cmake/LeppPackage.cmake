@@ -37,7 +37,7 @@ if(LEPP_EXPORT_GEN)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/properties/gen/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 if(TARGET lepp_audit)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/properties/audit/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/audit/include/lepp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 
 set(LEPP_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/lepp)

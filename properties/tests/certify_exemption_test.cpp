@@ -316,7 +316,7 @@ TEST(SmallAngleExemption, SameVerdictWhateverTheNumberingOrTheProgramsList) {
 // accepts it as unimprovable when a list names it.
 TEST(SmallAngleExemption, TriangleBeyondTheWedgesMouthIsRefined) {
   std::vector<std::string> warnings;
-  const Pslg p = validate(read_poly(LEPP_SOURCE_DIR "/tests/audit/inputs/small-angle-corner.poly"), warnings);
+  const Pslg p = validate(read_poly(LEPP_SOURCE_DIR "/audit/tests/mesher/inputs/small-angle-corner.poly"), warnings);
   auto has_beyond = [](const Mesh& m) {
     std::set<std::pair<double, double>> want{{10, 0}, {10, 10}, {9, 1.6}};
     for (const Tri& x : m.triangles) {

@@ -69,7 +69,7 @@ def area_of(m):
     f = m["file"]
     for prefix, area in (("impl/", "impl"), ("reference/", "reference"), ("core/", "core"),
                          ("properties/certify/", "certifier"), ("properties/gen/", "generators"),
-                         ("properties/audit/", "audit")):
+                         ("audit/", "audit")):
         if f.startswith(prefix):
             return area
     return "other"

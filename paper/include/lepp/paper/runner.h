@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One run of one mesher on one input at one angle: our Lepp engines, CGAL's
-// mesher (others/cgal_mesher.h) and Triangle (others/triangle_wasm.h), each
+// mesher (engines/others/cgal_mesher.h) and Triangle (engines/others/triangle_wasm.h), each
 // recorded as a Run with its mesh written under OPTIONS.work/meshes/.
 #pragma once
 #include <string>

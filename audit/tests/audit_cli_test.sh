@@ -22,7 +22,7 @@ python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["holds"] a
 python3 -c 'import sys,xml.dom.minidom as m; d=m.parse(sys.argv[1]); assert len(d.getElementsByTagName("testcase"))==5' \
   "$dir/junit.xml" || fail "JUnit report"
 
-"$lepp" audit --cmd "$src/properties/audit/tests/programs/crash.sh {in} {out}" "${common[@]}" --cases 2 \
+"$lepp" audit --cmd "$src/audit/tests/programs/crash.sh {in} {out}" "${common[@]}" --cases 2 \
   --junit "$dir/junit2.xml" > "$dir/report.md"; s=$?
 [ $s -eq 1 ] || { cat "$dir/report.md"; fail "crashing program: exit $s"; }
 grep -q '| 1 | certificate .*FAILED' "$dir/report.md" || { cat "$dir/report.md"; fail "certificate row not failed"; }
@@ -36,7 +36,7 @@ grep -qF "'$(readlink -f "$lepp")' audit --cmd" "$dir"/findings/certificate-1/re
 
 # The program's whole stderr is kept with the finding; the row names its last line (the
 # error), not its first (debug noise); under --no-shrink finding.md says so, not "shrunk from".
-"$lepp" audit --cmd "$src/properties/audit/tests/programs/noisy_fail.sh {in} {out}" --theta 25 --sources gen --compare none \
+"$lepp" audit --cmd "$src/audit/tests/programs/noisy_fail.sh {in} {out}" --theta 25 --sources gen --compare none \
   --cases 1 --no-shrink --out "$dir/noisy" --json > "$dir/noisy.json"; s=$?
 [ $s -eq 1 ] || fail "failing program: exit $s"
 md="$dir/noisy/certificate-1/finding.md"
@@ -51,7 +51,7 @@ python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); f=r["rows"][0]["fir
 # fresh one per run): every finding is run again, found not deterministic, and its
 # reproduce.sh warns; --repeat 2 counts the cases whose two runs differ; with the seed
 # fixed the same program is deterministic.
-seeded=(--cmd "$src/properties/audit/tests/programs/seeded.py $lepp {in} {out} {theta}" --theta 25 --sources gen
+seeded=(--cmd "$src/audit/tests/programs/seeded.py $lepp {in} {out} {theta}" --theta 25 --sources gen
         --compare none --cases 2 --no-shrink --json)
 (unset LEPP_FLAKY_SEED; "$lepp" audit "${seeded[@]}" --out "$dir/flaky" --repeat 2 > "$dir/flaky.json"); s=$?
 [ $s -eq 1 ] || fail "seeded program: exit $s"
@@ -78,7 +78,7 @@ grep -q "corpus/paper" "$dir/err" && grep -q -- "--sources" "$dir/err" || fail "
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["inputs"]==4 and r["runs"]==4, (r["inputs"], r["runs"])' \
   "$dir/paper.json" || fail "the paper's problems were not all run from an empty directory"
 
-"$lepp" audit --cmd "$src/properties/audit/tests/programs/crash.sh {in} {out} {angle}" "${common[@]}" 2> "$dir/err"; s=$?
+"$lepp" audit --cmd "$src/audit/tests/programs/crash.sh {in} {out} {angle}" "${common[@]}" 2> "$dir/err"; s=$?
 [ $s -eq 2 ] || fail "unknown placeholder: exit $s"
 grep -q 'unknown placeholder {angle}' "$dir/err" || fail "message: $(cat "$dir/err")"
 "$lepp" audit --cmd "/no/such/mesher {in} {out}" "${common[@]}" 2> "$dir/err"; s=$?
@@ -88,7 +88,7 @@ grep -q 'unknown placeholder {angle}' "$dir/err" || fail "message: $(cat "$dir/e
 
 # CGAL's mesher segfaults on this input (Debian's CGAL): isolated in a child, that is
 # one crashed run of the report (exit 1), not the end of the audit (exit 139).
-"$lepp" audit --engine cgal --inputs "$src/properties/audit/tests/inputs/cgal-crash.poly" --theta 20 --timeout 5 \
+"$lepp" audit --engine cgal --inputs "$src/audit/tests/inputs/cgal-crash.poly" --theta 20 --timeout 5 \
   --compare none --no-shrink --root "$src" --out "$dir/cgal" --json > "$dir/cgal.json"; s=$?
 [ $s -eq 1 ] || fail "CGAL crash: exit $s (the crash was not contained)"
 # Built with NDEBUG (Release, the sanitizer build) CGAL segfaults; with its assertions
@@ -107,7 +107,7 @@ assert s["crashed"]==1, s; assert ("CGAL ERROR" if sys.argv[2]=="on" else "kille
 # index of a vertex it does not have, Triangulation_ds_face_base_2.h): the mesher's data
 # structure is already inconsistent there, so one contained crash instead (the timeout
 # itself is CommandAdapter.HangIsKilledAtTheTimeout's and IsolatedEngine's business).
-timeout 60 "$lepp" audit --engine cgal --inputs "$src/properties/audit/tests/inputs/cgal-hang.poly" --theta 20 --timeout 2 \
+timeout 60 "$lepp" audit --engine cgal --inputs "$src/audit/tests/inputs/cgal-hang.poly" --theta 20 --timeout 2 \
   --compare none --no-shrink --root "$src" --out "$dir/cgal-hang" --json > "$dir/cgal-hang.json"; s=$?
 [ $s -eq 0 ] || [ $s -eq 1 ] || fail "CGAL hang: exit $s (124: the audit did not finish; the timeout did not hold)"
 if [ "$cgal_assertions" = on ]; then

@@ -2,7 +2,7 @@
 // The deviation catalogue's rules that the test mesher does not seed
 // (circumcenter, off-center, precision, unknown), the catalogue's names, and
 // Theorem 2 at a step rejecting a pair that breaks it. The seeded ones are in
-// tests/audit (test_mesher_selfcheck_test.cpp, audit_test_mesher_test.cpp).
+// audit/tests/mesher (test_mesher_selfcheck_test.cpp, audit_test_mesher_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cfloat>
@@ -54,7 +54,7 @@ TEST(DeviationCatalogue, NamesAreTheContract) {
   EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Area), "area");
 }
 
-// tests/audit/arithmetic/threshold's quad: triangle (0,0) (1,0) (x,0.5) has
+// audit/tests/mesher/arithmetic/threshold's quad: triangle (0,0) (1,0) (x,0.5) has
 // its smallest angle near 30 degrees, sin^2 = 0.25/(x^2+0.25) exactly.
 lepp::Pslg near_theta(double x) {
   lepp::Pslg p;

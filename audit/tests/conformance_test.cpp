@@ -701,7 +701,7 @@ TEST(Replay, FollowsTwoCocircularFlipsAtOneStep) {
   EXPECT_EQ(rigid.failure->step, 0u) << describe(rigid);
 }
 
-// A trace of tests/audit's lepp_test_mesher (CGAL's CDT on Epick: its
+// A trace of audit/tests/mesher's lepp_test_mesher (CGAL's CDT on Epick: its
 // insertions break cocircular ties by CGAL's symbolic perturbation, where the
 // replay leaves them), kept here so that the test does not move with the
 // mesher: `lepp_test_mesher IN.poly OUT 25 midpoint` on the polygon below.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The peers as audit engines: Shewchuk's Triangle (the triangle-wasm build under
-// node, tools/triangle) and CGAL's quality mesher (others/cgal_mesher.h). Part of
+// node, tools/triangle) and CGAL's quality mesher (engines/others/cgal_mesher.h). Part of
 // the lepp_audit_peers library (not in the find_package package: it needs the
 // source tree for Triangle).
 #pragma once

@@ -11,8 +11,8 @@ set -u
 lepp=$1; src=$2
 dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
 fail() { echo "FAIL: $*"; exit 1; }
-rec="$src/properties/audit/tests/inputs/audit-fpe"
-cmd="$src/properties/audit/tests/programs/recorded.sh $rec {in} {out}"
+rec="$src/audit/tests/inputs/audit-fpe"
+cmd="$src/audit/tests/programs/recorded.sh $rec {in} {out}"
 
 # The run as recorded, at every theta: exit 1 (findings) or 3 (internal errors), a report.
 "$lepp" audit --cmd "$cmd" --inputs "$rec/tri.poly" --theta 20,25,30 --compare none --no-shrink \

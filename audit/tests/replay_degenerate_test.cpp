@@ -24,7 +24,7 @@ using lepp::reference::Deviation;
 using lepp::reference::Replay;
 using lepp::reference::ReplayRules;
 
-const std::string kRecorded = std::string(LEPP_SOURCE_DIR) + "/properties/audit/tests/inputs/audit-fpe/";
+const std::string kRecorded = std::string(LEPP_SOURCE_DIR) + "/audit/tests/inputs/audit-fpe/";
 
 lepp::Pslg valid(const lepp::Pslg& p) {
   std::vector<std::string> warnings;

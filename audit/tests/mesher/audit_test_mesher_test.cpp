@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp audit --cmd` against lepp_test_mesher (an independent Lepp-centroid
-// program, tests/audit/test_mesher.cpp): every seeded bug is caught by the row
+// program, audit/tests/mesher/test_mesher.cpp): every seeded bug is caught by the row
 // it belongs to and shrunk to an input no larger than the one it was found on,
 // saved with a reproduce command; the program without bugs audits clean, with
 // conformance checked on every run; lepp's own engines audit clean through --cmd.
@@ -30,7 +30,7 @@ using nlohmann::json;
 
 const std::string kLepp = LEPP_CLI;
 const std::string kMesher = LEPP_TEST_MESHER;
-const std::string kInputs = LEPP_AUDIT_INPUTS;  // tests/audit/inputs: small hand-made .poly files
+const std::string kInputs = LEPP_AUDIT_INPUTS;  // audit/tests/mesher/inputs: small hand-made .poly files
 const std::string kSource = LEPP_SOURCE_DIR;
 
 std::string slurp(const fs::path& path) {
@@ -304,12 +304,12 @@ TEST(AuditEveryDeviation, TwoDeviationsInOneAudit) {
 }
 
 // A program that writes floats, or 6 digits, on an input no float holds (poly2tri's
-// polygon_test_01, tests/audit/arithmetic/): its certificate findings (input vertices
+// polygon_test_01, audit/tests/mesher/arithmetic/): its certificate findings (input vertices
 // moved, the boundary off the domain's) are named by the arithmetic first, in the row's
 // counts and each counterexample, shrunk to an input that shows the same; the
 // program writing exact doubles audits clean there.
 TEST(AuditArithmetic, NamedFirstOnTheCertificate) {
-  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic --method centroid --theta 20,25,30 --max-findings 1";
+  const std::string args = " --inputs " + kSource + "/audit/tests/mesher/arithmetic --method centroid --theta 20,25,30 --max-findings 1";
   expect_clean(audit("arithmetic-clean", mesher(), args));
   for (const std::string bug : {"single-precision", "printed-digits"}) {
     const AuditRun r = audit("arithmetic-" + bug, mesher("--bug " + bug), args);
@@ -373,7 +373,7 @@ TEST(AuditArithmetic, NamedOnThePapersProblemsAndGeneratedInputs) {
 // and counts the steps as notes. The program comparing exactly, and lepp's engine,
 // audit clean under both readings with no note.
 TEST(AuditArithmetic, InexactLengthUnderBothReadings) {
-  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic --method centroid --theta 20,25,30 --max-findings 1";
+  const std::string args = " --inputs " + kSource + "/audit/tests/mesher/arithmetic --method centroid --theta 20,25,30 --max-findings 1";
   const AuditRun exact = audit("inexact-length-exact", mesher("--bug inexact-length"), args);
   expect_caught(exact, "inexact-length", "conformance", "", nullptr, false, "inexact-length");
   EXPECT_EQ(exact.report.value("arithmetic", ""), "exact");
@@ -402,12 +402,12 @@ TEST(AuditArithmetic, InexactLengthUnderBothReadings) {
 
 // inexact-threshold and inexact-incircle (issue 30): a seeded bug's certifier
 // finding within double rounding, on inputs built so it happens
-// (tests/audit/arithmetic/threshold, incircle). Under the exact reading the
+// (audit/tests/mesher/arithmetic/threshold, incircle). Under the exact reading the
 // row fails, named in the JSON (row counts, counterexample), the markdown
 // finding and the report; the shrunk input shows the same name. Under
 // --arithmetic double the row holds and counts the triangles or edges as notes.
 void expect_inexact_named(const std::string& bug, const std::string& row_key, const std::string& dir, const std::string& theta) {
-  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic/" + dir + " --method centroid --theta " + theta +
+  const std::string args = " --inputs " + kSource + "/audit/tests/mesher/arithmetic/" + dir + " --method centroid --theta " + theta +
                            " --max-findings 1";
   const AuditRun exact = audit(bug + "-exact", mesher("--bug " + bug), args);
   expect_caught(exact, bug, row_key, bug + ": ");
@@ -459,7 +459,7 @@ TEST(AuditArithmetic, InexactIncircleUnderBothReadings) {
 // inexact-threshold, not good-triangle; accepted as a note under --arithmetic
 // double; the default tolerance (1e-3 degrees) accepts it as the paper's.
 TEST(AuditArithmetic, InexactThresholdOnTheBadSideWithAngleToleranceZero) {
-  const std::string args = " --inputs " + kSource + "/tests/audit/arithmetic/threshold --method centroid --theta 30 "
+  const std::string args = " --inputs " + kSource + "/audit/tests/mesher/arithmetic/threshold --method centroid --theta 30 "
                            "--max-findings 1 --no-shrink";
   const AuditRun exact = audit("threshold-bad-exact", mesher(), args + " --angle-tolerance 0");
   ASSERT_FALSE(exact.report.is_discarded()) << exact.err;

@@ -59,7 +59,7 @@ Engine triangle_engine(const std::string& root, std::int64_t budget) {
 }
 
 Engine cgal_engine(std::int64_t budget) {
-  // CGAL looks at the clock only between refinement steps (others/cgal_mesher.cpp),
+  // CGAL looks at the clock only between refinement steps (engines/others/cgal_mesher.cpp),
   // and a failed CGAL assertion aborts: in a child, the timeout and a crash end the
   // run, not the audit.
   return isolated_engine([budget](const Pslg& pslg, const EngineRequest& req) {

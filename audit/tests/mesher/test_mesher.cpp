@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // lepp_test_mesher: an independent Lepp-centroid / Lepp-midpoint mesher, written
 // the way an outside user would write one, with switchable seeded bugs. It is the
-// program under audit in tests/audit: it never calls lepp's engines. Only lepp's
+// program under audit in audit/tests/mesher: it never calls lepp's engines. Only lepp's
 // .poly reader and input validation are borrowed (file syntax, not the algorithm).
 //
 //   lepp_test_mesher IN.poly OUTPREFIX THETA METHOD [--bug NAME]... [--zero-based]

@@ -123,7 +123,7 @@ assert any(len(c.get("deviations", [])) >= 2 for c in conf["counterexamples"]), 
 # The declared arithmetic of doubles (--arithmetic double): the notes it counts
 # (steps accepted as inexact-length) summed like the other counts.
 split_and_compare arithmetic --cmd "$mesher {in} {out} {theta} {method} --bug inexact-length" \
-  --inputs "$src/tests/audit/arithmetic" --theta 20,25,30 --arithmetic double --compare none -j 2
+  --inputs "$src/audit/tests/mesher/arithmetic" --theta 20,25,30 --arithmetic double --compare none -j 2
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); conf=[x for x in r["rows"] if x["check"]=="conformance"][0]
 assert r["arithmetic"] == "double" and conf["inexact_steps"].get("inexact-length", 0) >= 3, conf' \
   "$dir/arithmetic-single.json" || fail "arithmetic: no inexact-length notes, as this test needs"

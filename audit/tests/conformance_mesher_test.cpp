@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The conformance check on an implementation it does not share code with:
-// tests/audit's lepp_test_mesher (CGAL Epick, coordinates for tie-breaking,
+// audit/tests/mesher's lepp_test_mesher (CGAL Epick, coordinates for tie-breaking,
 // a stack for the order, (A+B+C+D)/4, t2's edge when both are constrained).
 // Without bugs its traces conform; with the point-selection bugs they do not.
 #include <gtest/gtest.h>
@@ -66,7 +66,7 @@ TEST(ConformanceOfTestMesher, CleanTracesConformOnTheAuditInputs) {
   for (const char* name : {"box-with-crack", "box-with-points", "square-with-hole", "thin-rectangle"})
     for (Method m : {Method::Centroid, Method::Midpoint})
       for (double theta : {20.0, 25.0, 30.0}) {
-        MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/tests/audit/inputs/" + name + ".poly", theta, m);
+        MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/audit/tests/mesher/inputs/" + name + ".poly", theta, m);
         ConformanceReport report = check_conformance(r.input, r.trace, options(m, theta));
         EXPECT_TRUE(report.conforms) << name << " " << to_string(m) << " " << theta << ": " << describe(report);
       }
