@@ -2,13 +2,13 @@
 // The paper's choice at a terminal pair as one table (Select Point, New Select
 // Point, Remark 10): which points, in which order, under which condition. The
 // one definition the reference engine's Select Point (select_point.cpp) and the
-// conformance replay (audit/src/replay/paper_points.cpp) share.
+// replay of other meshers' traces (audit/src/replay/paper_points.cpp) share.
 //
 // Why sharing it weakens no test: the reference engine is the fast engine's
 // oracle, and the fast engine's Select Point (impl/) stays its own code, so a
 // wrong row here still makes the two engines differ (the differential tests)
 // and makes the fast engine's and the test mesher's traces fail the replay
-// (the conformance tests). Only the table is shared: each side evaluates it on
+// (the replay's tests). Only the table is shared: each side evaluates it on
 // its own geometry and its own edge order. The engine computes the double
 // formula and tests Remark 10 strictly, with ties broken by vertex ids; the
 // replay computes the exact rational points, branches on every tie and allows
