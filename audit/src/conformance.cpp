@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The conformance check: the trace replayed on lepp::reference::Replay.
+// The conformance check: the trace replayed on lepp::audit::Replay.
 #include "lepp/audit/conformance.h"
 
 #include <algorithm>
@@ -10,13 +10,13 @@
 
 #include <fmt/format.h>
 
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 
 namespace lepp::audit {
 
 namespace {
 
-ConformanceCandidate candidate(const reference::ReplayChoice& c) {
+ConformanceCandidate candidate(const ReplayChoice& c) {
   ConformanceCandidate out;
   out.bad = c.bad;
   out.lepp = c.lepp;
@@ -32,8 +32,8 @@ ConformanceCandidate candidate(const reference::ReplayChoice& c) {
   return out;
 }
 
-reference::ReplayRules rules_of(const ConformanceOptions& options) {
-  reference::ReplayRules rules;
+ReplayRules rules_of(const ConformanceOptions& options) {
+  ReplayRules rules;
   rules.method = options.method;
   rules.min_angle_deg = options.min_angle_deg;
   rules.angle_tolerance_deg = options.angle_tolerance_deg;
@@ -42,44 +42,44 @@ reference::ReplayRules rules_of(const ConformanceOptions& options) {
   rules.region_area_bounds = options.region_area_bounds;
   rules.follow_cocircular_flips = options.follow_cocircular_flips;
   rules.cocircular_search_budget = options.cocircular_search_budget;
-  rules.centroid = options.area_centroid ? reference::CentroidReading::Area : reference::CentroidReading::Vertex;
+  rules.centroid = options.area_centroid ? CentroidReading::Area : CentroidReading::Vertex;
   return rules;
 }
 
-reference::Deviation deviation_named(const std::string& name) {
-  for (int k = 0; k < reference::kDeviations; ++k)
-    if (name == reference::to_string(static_cast<reference::Deviation>(k))) return static_cast<reference::Deviation>(k);
-  return reference::Deviation::Unknown;
+Deviation deviation_named(const std::string& name) {
+  for (int k = 0; k < kDeviations; ++k)
+    if (name == to_string(static_cast<Deviation>(k))) return static_cast<Deviation>(k);
+  return Deviation::Unknown;
 }
 
 // A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
-bool remark10_centroid(const reference::ReplayChoice& choice) {
-  return choice.rule == Rule::CentroidInOther && choice.deviation == reference::Deviation::Unknown;
+bool remark10_centroid(const ReplayChoice& choice) {
+  return choice.rule == Rule::CentroidInOther && choice.deviation == Deviation::Unknown;
 }
 
 // From the first named step on: the replay goes on with each named variant
 // allowed (Replay::allow) and names the next deviation where a step fits none,
 // until the trace ends or a step is no variant's point (unknown, a single
 // point rule like circumcenter, a name it already allows) or cannot be inserted.
-void follow_chain(reference::Replay& replay, const std::vector<Point>& trace, std::size_t first, ConformanceFailure& f,
+void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t first, ConformanceFailure& f,
                   std::size_t& centroid_inside) {
   f.chain = {{f.deviation, first + 1, 0}};
-  reference::Deviation named = deviation_named(f.deviation);
+  Deviation named = deviation_named(f.deviation);
   std::size_t i = first;
   while (i < trace.size()) {
-    if (!reference::has_variant(named)) {
+    if (!has_variant(named)) {
       if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
-      f.chain_end = named == reference::Deviation::Unknown
+      f.chain_end = named == Deviation::Unknown
                         ? fmt::format("step {} is no rule of the catalogue", i + 1)
                         : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
       return;
     }
     replay.allow(named);
     const Point& p = trace[i];
-    reference::ReplayChoice choice;
+    ReplayChoice choice;
     if (!replay.match(p, choice)) {
-      const reference::Deviation next = replay.diagnose(p).deviation;
-      const std::string name = reference::to_string(next);
+      const Deviation next = replay.diagnose(p).deviation;
+      const std::string name = to_string(next);
       for (const DeviationLink& l : f.chain)
         if (l.deviation == name) {
           f.chain_end = fmt::format("step {} is {}'s point at a configuration the replay cannot reach with it", i + 1, name);
@@ -95,8 +95,8 @@ void follow_chain(reference::Replay& replay, const std::vector<Point>& trace, st
       f.chain_end = fmt::format("step {} cannot be inserted: {}", i + 1, e.what());
       return;
     }
-    if (choice.deviation != reference::Deviation::Unknown)
-      for (DeviationLink& l : f.chain) l.steps += l.deviation == reference::to_string(choice.deviation);
+    if (choice.deviation != Deviation::Unknown)
+      for (DeviationLink& l : f.chain) l.steps += l.deviation == to_string(choice.deviation);
     centroid_inside += remark10_centroid(choice);
     ++i;
   }
@@ -108,8 +108,8 @@ void follow_chain(reference::Replay& replay, const std::vector<Point>& trace, st
 // has (the midpoint where the centroid is inside) is remark10-reversed from
 // the ignored one's first step on.
 void merge_remark10(ConformanceFailure& f) {
-  const std::string ignored = reference::to_string(reference::Deviation::Remark10Ignored);
-  const std::string reversed = reference::to_string(reference::Deviation::Remark10Reversed);
+  const std::string ignored = to_string(Deviation::Remark10Ignored);
+  const std::string reversed = to_string(Deviation::Remark10Reversed);
   auto find = [&](const std::string& n) {
     return std::find_if(f.chain.begin(), f.chain.end(), [&](const DeviationLink& l) { return l.deviation == n; });
   };
@@ -120,7 +120,7 @@ void merge_remark10(ConformanceFailure& f) {
   f.chain.erase(re);
   if (f.deviation == ignored) {
     f.deviation = reversed;
-    f.deviation_definition = reference::definition(reference::Deviation::Remark10Reversed);
+    f.deviation_definition = definition(Deviation::Remark10Reversed);
   }
 }
 
@@ -128,11 +128,11 @@ std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2
 
 // The replay of the first `steps` points of the trace (each a choice, inserted
 // before): the mesh just before step `steps`.
-std::unique_ptr<reference::Replay> replay_up_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
-                                                const reference::ReplayRules& rules) {
-  auto replay = std::make_unique<reference::Replay>(validated, rules);
+std::unique_ptr<Replay> replay_up_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
+                                                const ReplayRules& rules) {
+  auto replay = std::make_unique<Replay>(validated, rules);
   for (std::size_t i = 0; i < steps; ++i) {
-    reference::ReplayChoice choice;
+    ReplayChoice choice;
     if (!replay->match(trace[i], choice)) break;  // cannot happen: the same replay matched it before
     replay->insert(trace[i], choice);
   }
@@ -144,27 +144,27 @@ std::unique_ptr<reference::Replay> replay_up_to(const Pslg& validated, const std
 ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
                                     const ConformanceOptions& options) {
   auto start = std::chrono::steady_clock::now();
-  const reference::ReplayRules rules = rules_of(options);
-  reference::Replay replay(validated, rules);
+  const ReplayRules rules = rules_of(options);
+  Replay replay(validated, rules);
 
   ConformanceReport report;
   report.steps = trace.size();
   report.area_centroid = options.area_centroid;
   report.arithmetic_double = options.arithmetic_double;
   if (options.arithmetic_double)
-    for (reference::Deviation d : {reference::Deviation::InexactLength, reference::Deviation::InexactThreshold}) replay.allow(d);
-  std::unique_ptr<reference::Replay> before;  // the mesh before a step whose insertion failed
+    for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
+  std::unique_ptr<Replay> before;  // the mesh before a step whose insertion failed
   std::size_t centroid_inside = 0;             // ConformanceFailure::remark10_centroid_inside_steps
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const Point& p = trace[i];
-    reference::ReplayChoice choice;
+    ReplayChoice choice;
     std::string reason;
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
       reason = "not a finite point";
     } else if (replay.match(p, choice)) {
       if (options.theorem2_every_step && choice.t2[0] >= 0) {
         ++report.theorem2_pairs_checked;
-        const reference::Theorem2Check t2 = replay.theorem2(choice);
+        const Theorem2Check t2 = replay.theorem2(choice);
         if (!t2.holds && !report.theorem2_failure) {
           Theorem2StepFailure f;
           f.step = i;
@@ -182,8 +182,8 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         replay.insert(p, choice);
         ++report.steps_checked;
         centroid_inside += remark10_centroid(choice);
-        if (choice.deviation == reference::Deviation::InexactLength || choice.deviation == reference::Deviation::InexactThreshold)
-          ++report.inexact_steps[reference::to_string(choice.deviation)];
+        if (choice.deviation == Deviation::InexactLength || choice.deviation == Deviation::InexactThreshold)
+          ++report.inexact_steps[to_string(choice.deviation)];
         continue;
       } catch (const std::runtime_error& e) {
         reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());
@@ -193,12 +193,12 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         before = replay_up_to(validated, trace, i, rules);
       }
     }
-    reference::Replay& at = before ? *before : replay;
+    Replay& at = before ? *before : replay;
     ConformanceFailure failure;
     failure.step = i;
     failure.point = p;
     failure.mesh = at.mesh();
-    std::vector<reference::ReplayChoice> all = at.all_choices(p, 20, failure.candidates_total);
+    std::vector<ReplayChoice> all = at.all_choices(p, 20, failure.candidates_total);
     for (const auto& c : all) failure.candidates.push_back(candidate(c));
     if (!all.empty()) failure.nearest_distance = all.front().distance;
     if (reason.empty()) {
@@ -214,11 +214,11 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     }
     failure.reason = reason;
     // The catalogue, on the same mesh with the same arithmetic and tolerance.
-    const reference::DeviationMatch dm = at.diagnose(p);
-    failure.deviation = reference::to_string(dm.deviation);
+    const DeviationMatch dm = at.diagnose(p);
+    failure.deviation = to_string(dm.deviation);
     failure.deviation_what = dm.what;
-    failure.deviation_definition = reference::definition(dm.deviation);
-    if (dm.deviation != reference::Deviation::Unknown) {
+    failure.deviation_definition = definition(dm.deviation);
+    if (dm.deviation != Deviation::Unknown) {
       failure.deviation_at = candidate(dm.where);
       for (const auto& c : dm.paper) failure.deviation_paper.push_back(candidate(c));
     }
@@ -233,7 +233,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     ConformanceFailure& f = *report.failure;
     follow_chain(replay, trace, f.step, f, centroid_inside);
     merge_remark10(f);
-    f.consistent_variant = f.chain_complete && f.chain.size() == 1 && reference::has_variant(deviation_named(f.deviation));
+    f.consistent_variant = f.chain_complete && f.chain.size() == 1 && has_variant(deviation_named(f.deviation));
     if (f.consistent_variant) f.variant_steps = f.chain.front().steps;
   }
   if (report.failure) {
@@ -254,7 +254,7 @@ std::string chain_text(const std::vector<DeviationLink>& chain) {
 }
 
 std::string remark10_ignored_note(const ConformanceFailure& f) {
-  const std::string ignored = reference::to_string(reference::Deviation::Remark10Ignored);
+  const std::string ignored = to_string(Deviation::Remark10Ignored);
   bool named = false;
   for (const DeviationLink& l : f.chain) named = named || l.deviation == ignored;
   if (!named) return "";

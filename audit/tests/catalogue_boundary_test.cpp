@@ -11,16 +11,16 @@
 #include <vector>
 
 #include "lepp/io.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/validate.h"
 
 namespace lepp {
 namespace {
 
-using reference::Replay;
-using reference::ReplayChoice;
-using reference::ReplayRules;
-using reference::to_string;
+using audit::Replay;
+using audit::ReplayChoice;
+using audit::ReplayRules;
+using audit::to_string;
 
 Pslg paper_input(const std::string& name) {
   std::vector<std::string> warnings;
@@ -137,7 +137,7 @@ TEST(CatalogueBoundary, PrecisionBandEndsAtAThousandTolerances) {
       const Point outside{c.point.x + sign * 1010 * c.tolerance, c.point.y};
       ReplayChoice unused;
       ASSERT_FALSE(replay.match(inside, unused)) << name << ": 990 tolerances away is no choice";
-      const reference::DeviationMatch in = replay.diagnose(inside);
+      const audit::DeviationMatch in = replay.diagnose(inside);
       EXPECT_STREQ(to_string(in.deviation), "precision") << name << " sign " << sign << ": " << in.what;
       EXPECT_STRNE(to_string(replay.diagnose(outside).deviation), "precision") << name << " sign " << sign;
     }

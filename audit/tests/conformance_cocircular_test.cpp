@@ -21,7 +21,7 @@
 #include "lepp/gen_lattice_box.h"
 #include "lepp/gen_symmetry.h"
 #include "lepp/reference.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/validate.h"
 
 namespace lepp::audit {
@@ -92,14 +92,14 @@ TEST(CocircularCells, WithoutTheSearchOneOrTwoLocalFlipsStillFollowATrace) {
             trace_under(p, gen::LatticeSymmetry{turns, mirrored}, true, Method::Centroid, QueueOrder::Fifo, 30);
         if (trace.empty()) continue;
         ++traces;
-        reference::ReplayRules rules;
+        audit::ReplayRules rules;
         rules.method = Method::Centroid;
         rules.min_angle_deg = 30;
         rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
         rules.cocircular_search_budget = 0;
-        reference::Replay replay(p, rules);
+        audit::Replay replay(p, rules);
         for (std::size_t i = 0; i < trace.size(); ++i) {
-          reference::ReplayChoice choice;
+          audit::ReplayChoice choice;
           const std::int64_t before = replay.cocircular_flips();
           if (!replay.match(trace[i], choice)) break;  // needs the search (the 4 x 3 turned: step 0)
           const std::int64_t flips = replay.cocircular_flips() - before;
@@ -144,15 +144,15 @@ bool is_cdt(const Pslg& p, const Mesh& m, std::string& why) {
 // trace.size().
 std::size_t replay_checking_the_mesh(const Pslg& p, const std::vector<Point>& trace, Method m, double theta,
                                      std::string& why) {
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.method = m;
   rules.min_angle_deg = theta;
   rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const std::int64_t flips = replay.cocircular_flips();
     const std::size_t vertices = replay.mesh().vertices.size();
-    reference::ReplayChoice choice;
+    audit::ReplayChoice choice;
     if (!replay.match(trace[i], choice)) return i;
     if (replay.cocircular_flips() != flips) {
       Mesh mesh = replay.mesh();
@@ -338,14 +338,14 @@ TEST(CocircularCells, EveryBudgetBelowTheNeededOneGivesUpAndLeavesTheMesh) {
   const std::vector<Point> trace = trace_under(p, {3, false}, true, Method::Centroid, QueueOrder::Fifo, 30);
   ASSERT_FALSE(trace.empty());
   const Mesh initial = reference::build_cdt(p);
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.method = Method::Centroid;
   rules.min_angle_deg = 30;
   rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
   auto follows = [&](std::size_t budget, bool& exhausted, Mesh& mesh) {
     rules.cocircular_search_budget = budget;
-    reference::Replay replay(p, rules);
-    reference::ReplayChoice choice;
+    audit::Replay replay(p, rules);
+    audit::ReplayChoice choice;
     const bool ok = replay.match(trace[0], choice);
     exhausted = replay.cocircular_search_exhausted();
     mesh = replay.mesh();

@@ -3,7 +3,7 @@
 // (lepp/trace_io.h): lepp's own traces conform, in every order and method;
 // exactly rounded choices conform; points moved too far, the triangle's
 // centroid, ignoring Remark 10 and a Lepp along shortest edges do not; both
-// resolutions of a tie do. The replay (lepp/reference_replay.h) follows a mesh
+// resolutions of a tie do. The replay (lepp/audit/replay.h) follows a mesh
 // two cocircular flips away, or CGAL's tie rule, and reports a choice it
 // cannot insert.
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@
 #include "lepp/gen.h"
 #include "lepp/io.h"
 #include "lepp/reference.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
 
@@ -227,14 +227,14 @@ TEST(Conformance, ABoundaryEdgeIsSplitFromItsDomainSide) {
 // choices (the one nearest a fixed point: an arbitrary processing order),
 // rounded to the nearest double from the exact rational.
 std::vector<Point> exactly_rounded_trace(const Pslg& p, Method m, double theta, std::size_t max_steps) {
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.method = m;
   rules.min_angle_deg = theta;
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   std::vector<Point> trace;
   for (std::size_t i = 0; i < max_steps; ++i) {
     std::size_t total = 0;
-    std::vector<reference::ReplayChoice> c = replay.all_choices({0.123, 0.456}, 1, total);
+    std::vector<audit::ReplayChoice> c = replay.all_choices({0.123, 0.456}, 1, total);
     if (c.empty()) break;
     replay.insert(c[0].point, c[0]);
     trace.push_back(c[0].point);
@@ -675,12 +675,12 @@ TEST(Replay, FollowsTwoCocircularFlipsAtOneStep) {
   for (const TraceStep& s : r.trace) trace.push_back(reflect(s.point));
   ASSERT_FALSE(trace.empty());
 
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.method = Method::Centroid;
   rules.min_angle_deg = 25;
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   EdgeSet before = edges_of(replay.mesh());
-  reference::ReplayChoice choice;
+  audit::ReplayChoice choice;
   ASSERT_TRUE(replay.match(trace[0], choice));
   EXPECT_EQ(replay.cocircular_flips(), 2);
   EdgeSet after = edges_of(replay.mesh());
@@ -732,15 +732,15 @@ TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
   ASSERT_EQ(p.vertices.size(), 36u);
   const std::vector<Point>& trace = kConvex36MidpointTrace;
 
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.method = Method::Midpoint;
   rules.min_angle_deg = 25;
   rules.angle_tolerance_deg = ConformanceOptions().angle_tolerance_deg;
   rules.cocircular_search_budget = 0;  // the fallback: one or two flips, then CGAL's rule
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   std::size_t switched = trace.size(), flipped_on_insert = trace.size();
   for (std::size_t i = 0; i < trace.size(); ++i) {
-    reference::ReplayChoice choice;
+    audit::ReplayChoice choice;
     std::int64_t f0 = replay.cocircular_flips();
     ASSERT_TRUE(replay.match(trace[i], choice)) << "step " << i;
     std::int64_t f1 = replay.cocircular_flips();
@@ -771,9 +771,9 @@ TEST(Replay, SwitchesToCgalsTieRuleAndKeepsIt) {
   // With the search of the cells: the same trace conforms, following only the
   // cells the points need (no switch: insertions never flip).
   rules.cocircular_search_budget = ConformanceOptions().cocircular_search_budget;
-  reference::Replay cells(p, rules);
+  audit::Replay cells(p, rules);
   for (std::size_t i = 0; i < trace.size(); ++i) {
-    reference::ReplayChoice choice;
+    audit::ReplayChoice choice;
     ASSERT_TRUE(cells.match(trace[i], choice)) << "step " << i;
     std::int64_t f1 = cells.cocircular_flips();
     cells.insert(trace[i], choice);
@@ -810,15 +810,15 @@ TEST(Replay, ReportsAChoiceThatCannotBeInserted) {
 TEST(Replay, AllChoicesFollowALeppToAConstrainedEnd) {
   Pslg p = polygon({{0, 0}, {10, 0}, {5, 3}, {-0.25, 0.875}});
   for (Method m : {Method::Centroid, Method::Midpoint}) {
-    reference::ReplayRules rules;
+    audit::ReplayRules rules;
     rules.method = m;
     rules.min_angle_deg = 25;
-    reference::Replay replay(p, rules);
+    audit::Replay replay(p, rules);
     std::size_t total = 0;
-    std::vector<reference::ReplayChoice> all = replay.all_choices({5, 0}, 10, total);
+    std::vector<audit::ReplayChoice> all = replay.all_choices({5, 0}, 10, total);
     ASSERT_EQ(total, 1u);
     ASSERT_EQ(all.size(), 1u);
-    const reference::ReplayChoice& c = all[0];
+    const audit::ReplayChoice& c = all[0];
     EXPECT_EQ(c.rule, Rule::TerminalConstrainedMidpoint);
     EXPECT_EQ(c.point, (Point{5, 0}));
     EXPECT_EQ(c.distance, 0);
@@ -860,24 +860,24 @@ TEST(Replay, RejectsANonChoiceAtAndAfterTheSwitchToCgalsTieRule) {
 // match() says no, insert() throws, the mesh stays as it was.
 TEST(Replay, InsertAndMatchRefuseWhatCannotBeInserted) {
   Pslg p = polygon({{0, 10}, {-1, 0}, {1, 0}});  // skinny: the legs' midpoints are choices
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.min_angle_deg = 20;
-  reference::Replay replay(p, rules);
-  reference::ReplayChoice choice;
+  audit::Replay replay(p, rules);
+  audit::ReplayChoice choice;
   const double nan = std::nan("");
   for (Point q : {Point{nan, 1}, Point{1, nan}, Point{HUGE_VAL, 0}}) {
     EXPECT_FALSE(replay.match(q, choice));
-    EXPECT_THROW(replay.insert(q, reference::ReplayChoice{}), std::runtime_error);
+    EXPECT_THROW(replay.insert(q, audit::ReplayChoice{}), std::runtime_error);
   }
-  EXPECT_THROW(replay.insert({0, 10}, reference::ReplayChoice{}), std::runtime_error);  // a vertex
-  reference::ReplayChoice not_an_edge;
+  EXPECT_THROW(replay.insert({0, 10}, audit::ReplayChoice{}), std::runtime_error);  // a vertex
+  audit::ReplayChoice not_an_edge;
   not_an_edge.split_edge = {0, 0};
   EXPECT_THROW(replay.insert({0, 5}, not_an_edge), std::runtime_error);
   EXPECT_EQ(replay.steiner_points(), 0u);
   EXPECT_EQ(replay.mesh().triangles.size(), 1u);
   // A report for a point with one coordinate not finite: every choice infinitely far.
   std::size_t total = 0;
-  std::vector<reference::ReplayChoice> all = replay.all_choices({0.5, nan}, 5, total);
+  std::vector<audit::ReplayChoice> all = replay.all_choices({0.5, nan}, 5, total);
   ASSERT_EQ(total, 2u);
   for (const auto& c : all) EXPECT_EQ(c.distance, HUGE_VAL);
   // And the real choice still goes in.
@@ -956,12 +956,12 @@ TEST(Replay, AllChoicesNeverWalksRoundAVertex) {
   p.vertices.push_back({0, 0});
   std::vector<std::string> warnings;
   p = validate(p, warnings);
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.min_angle_deg = 20;  // the six thin triangles (16.3 degrees at the centre) are bad
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   ASSERT_EQ(replay.mesh().triangles.size(), 12u);
   std::size_t total = 0;
-  std::vector<reference::ReplayChoice> all = replay.all_choices({0, 0}, 1000, total);
+  std::vector<audit::ReplayChoice> all = replay.all_choices({0, 0}, 1000, total);
   ASSERT_GT(total, 6u);
   std::size_t longest = 0;
   for (const auto& c : all) {
@@ -985,11 +985,11 @@ TEST(Replay, AllChoicesCapsTheEndsOfOneLepp) {
     p.segments.push_back({int(i), int((i + 1) % p.vertices.size()), 0});
   std::vector<std::string> warnings;
   p = validate(p, warnings);
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.min_angle_deg = 30;  // the strip's triangles: 36.9 degrees at the apex, good
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   std::size_t total = 0;
-  std::vector<reference::ReplayChoice> all = replay.all_choices({0, 0}, 100000, total);
+  std::vector<audit::ReplayChoice> all = replay.all_choices({0, 0}, 100000, total);
   ASSERT_EQ(all.size(), total);
   std::map<Tri, std::size_t> per_bad;
   for (const auto& c : all) ++per_bad[c.bad];

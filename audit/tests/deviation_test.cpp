@@ -10,15 +10,15 @@
 #include <set>
 
 #include "lepp/angle.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/validate.h"
 
 namespace {
 
 using lepp::Point;
-using lepp::reference::Deviation;
-using lepp::reference::Replay;
-using lepp::reference::ReplayRules;
+using lepp::audit::Deviation;
+using lepp::audit::Replay;
+using lepp::audit::ReplayRules;
 
 // A quadrilateral whose CDT has a skinny triangle: a long, flat box with a
 // vertex pushed in.
@@ -40,18 +40,18 @@ double min_angle(const Point& a, const Point& b, const Point& c) {
 
 TEST(DeviationCatalogue, NamesAreTheContract) {
   std::set<std::string> names;
-  for (int k = 0; k < lepp::reference::kDeviations; ++k) {
+  for (int k = 0; k < lepp::audit::kDeviations; ++k) {
     const auto d = static_cast<Deviation>(k);
-    names.insert(lepp::reference::to_string(d));
-    EXPECT_GT(std::string(lepp::reference::definition(d)).size(), 10u);
+    names.insert(lepp::audit::to_string(d));
+    EXPECT_GT(std::string(lepp::audit::definition(d)).size(), 10u);
   }
   for (const char* n : {"area-centroid", "triangle-centroid", "terminal-midpoint", "centroid-not-midpoint", "remark10-ignored", "remark10-reversed", "inexact-length", "inexact-threshold",
                         "other-second-longest", "good-triangle", "circumcenter", "off-center", "precision", "unknown"})
     EXPECT_TRUE(names.count(n)) << n;
-  EXPECT_EQ(names.size(), static_cast<std::size_t>(lepp::reference::kDeviations));
+  EXPECT_EQ(names.size(), static_cast<std::size_t>(lepp::audit::kDeviations));
   // The two readings of the quad centroid, by the names `--centroid` takes.
-  EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Vertex), "vertex");
-  EXPECT_STREQ(lepp::reference::to_string(lepp::reference::CentroidReading::Area), "area");
+  EXPECT_STREQ(lepp::audit::to_string(lepp::audit::CentroidReading::Vertex), "vertex");
+  EXPECT_STREQ(lepp::audit::to_string(lepp::audit::CentroidReading::Area), "area");
 }
 
 // audit/tests/mesher/arithmetic/threshold's quad: triangle (0,0) (1,0) (x,0.5) has
@@ -77,7 +77,7 @@ TEST(DeviationCatalogue, InexactThresholdJustInsideAndJustOutsideTheBound) {
     rules.min_angle_deg = 30;
     rules.angle_tolerance_deg = 0;
     Replay replay(near_theta(x), rules);
-    lepp::reference::ReplayChoice choice;
+    lepp::audit::ReplayChoice choice;
     EXPECT_FALSE(replay.match({0.5, 0}, choice));
     EXPECT_EQ(replay.diagnose({0.5, 0}).deviation, inside ? Deviation::InexactThreshold : Deviation::GoodTriangle);
     replay.allow(Deviation::InexactThreshold);
@@ -112,7 +112,7 @@ TEST(DeviationCatalogue, CircumcenterOffCenterPrecisionUnknown) {
   const double d = 2 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
   const double ux = ((a.x * a.x + a.y * a.y) * (b.y - c.y) + (b.x * b.x + b.y * b.y) * (c.y - a.y) + (c.x * c.x + c.y * c.y) * (a.y - b.y)) / d;
   const double uy = ((a.x * a.x + a.y * a.y) * (c.x - b.x) + (b.x * b.x + b.y * b.y) * (a.x - c.x) + (c.x * c.x + c.y * c.y) * (b.x - a.x)) / d;
-  lepp::reference::ReplayChoice choice;
+  lepp::audit::ReplayChoice choice;
   ASSERT_FALSE(replay.match({ux, uy}, choice));
   EXPECT_EQ(replay.diagnose({ux, uy}).deviation, Deviation::Circumcenter);
   // Off-center: on the bisector of the shortest edge, angle theta at the point.
@@ -154,7 +154,7 @@ TEST(DeviationCatalogue, Theorem2CheckRejectsAnObtusePair) {
   std::vector<std::string> warnings;
   const lepp::Pslg pslg = lepp::validate(p, warnings);
   Replay replay(pslg, ReplayRules{});
-  lepp::reference::ReplayChoice pair;
+  lepp::audit::ReplayChoice pair;
   pair.terminal_edge = {0, 1};
   pair.t1 = {0, 1, 2};  // the angle at (1, 0.2) is about 157 degrees
   pair.t2 = {0, 1, 3};

@@ -11,14 +11,14 @@
 
 #include "lepp/input.h"
 #include "lepp/validate.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 
 namespace lepp {
 namespace {
 
-using reference::Replay;
-using reference::ReplayChoice;
-using reference::ReplayRules;
+using audit::Replay;
+using audit::ReplayChoice;
+using audit::ReplayRules;
 
 Pslg validated(Pslg p) {
   std::vector<std::string> warnings;

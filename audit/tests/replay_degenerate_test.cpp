@@ -13,16 +13,16 @@
 
 #include "lepp/audit/conformance.h"
 #include "lepp/io.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
 
 namespace {
 
 using lepp::Point;
-using lepp::reference::Deviation;
-using lepp::reference::Replay;
-using lepp::reference::ReplayRules;
+using lepp::audit::Deviation;
+using lepp::audit::Replay;
+using lepp::audit::ReplayRules;
 
 const std::string kRecorded = std::string(LEPP_SOURCE_DIR) + "/audit/tests/inputs/audit-fpe/";
 
@@ -40,7 +40,7 @@ TEST(ReplayDegenerate, RecordedRunIsDiagnosedNotASignal) {
   const std::vector<Point> trace = lepp::read_trace(kRecorded + "rec.trace");
   ASSERT_GT(trace.size(), 100u);
   std::set<std::string> names;
-  for (int k = 0; k < lepp::reference::kDeviations; ++k) names.insert(lepp::reference::to_string(static_cast<Deviation>(k)));
+  for (int k = 0; k < lepp::audit::kDeviations; ++k) names.insert(lepp::audit::to_string(static_cast<Deviation>(k)));
   int not_insertable = 0;
   for (double theta : {20.0, 25.0, 30.0}) {
     lepp::audit::ConformanceOptions o;
@@ -74,7 +74,7 @@ TEST(ReplayDegenerate, ACircumcenterBeyondTheDoublesMatchesNothing) {
   Replay replay(valid(p), rules);
   // Far from every other rule's point (their tolerance is about 1e185 here).
   const Point far{5e199, 3e199};
-  lepp::reference::ReplayChoice choice;
+  lepp::audit::ReplayChoice choice;
   EXPECT_FALSE(replay.match(far, choice));
   EXPECT_EQ(replay.diagnose(far).deviation, Deviation::Unknown);
 }

@@ -20,7 +20,7 @@
 #include "lepp/fast.h"
 #include "lepp/io.h"
 #include "lepp/reference.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/validate.h"
 #include "random_pslg.h"
 #include "result_diff.h"
@@ -131,15 +131,15 @@ std::string rounds_commute(const Pslg& p, double theta, Method method, double ma
   o.max_area = max_area;
   o.max_steiner = 3000;
   const RefineResult r = fast::refine(p, o);
-  reference::ReplayRules rules;
+  audit::ReplayRules rules;
   rules.method = method;
   rules.min_angle_deg = theta;
   rules.max_area = max_area;
-  reference::Replay replay(p, rules);
+  audit::Replay replay(p, rules);
   std::size_t step = 0;
   for (const auto& [round, steps] : by_round(r)) {
     for (auto it = steps.rbegin(); it != steps.rend(); ++it, ++step) {
-      reference::ReplayChoice choice;
+      audit::ReplayChoice choice;
       if (!replay.match((*it)->point, choice))
         return fmt::format("round {}, reversed: step {} ({:.17g}, {:.17g}) is no choice of the paper", round, step,
                            (*it)->point.x, (*it)->point.y);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lepp/rounding.h"
+#include "paper_choices.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
@@ -47,37 +48,27 @@ bool strictly_inside(FH f, const Point& p) {
 Selection select_point(const Lepp& lepp, Method method) {
   FH t1 = lepp.t1, t2 = lepp.t2;
   int l = lepp.edge;
-  if (t2 == FH()) return edge_midpoint(Rule::TerminalConstrainedMidpoint, t1, l);
-
-  int s1 = second_longest_of(lepp, false), s2 = second_longest_of(lepp, true);
-  bool c1 = t1->is_constrained(s1), c2 = t2->is_constrained(s2);
-
-  if (method == Method::Midpoint) {
-    if (!c1 && !c2) return edge_midpoint(Rule::TerminalMidpoint, t1, l);
-    return c1 ? edge_midpoint(Rule::SecondLongestMidpoint, t1, s1) : edge_midpoint(Rule::SecondLongestMidpoint, t2, s2);
-  }
-
-  // Centroid method. A, B: the terminal edge; C, D: the apexes of t1, t2.
-  VH a = t1->vertex(Cdt::ccw(l)), b = t1->vertex(Cdt::cw(l)), c = t1->vertex(l);
-  VH d = t2->vertex(t2->index(t1));
-  if (!c1 && !c2) {
+  const bool has_t2 = t2 != FH();
+  int s1 = has_t2 ? second_longest_of(lepp, false) : -1, s2 = has_t2 ? second_longest_of(lepp, true) : -1;
+  bool c1 = has_t2 && t1->is_constrained(s1), c2 = has_t2 && t2->is_constrained(s2);
+  // The centroid of the quad: A, B the terminal edge, C, D the apexes of t1, t2.
+  auto quad_centroid = [&] { return centroid(t1->vertex(Cdt::ccw(l)), t1->vertex(Cdt::cw(l)), t1->vertex(l), t2->vertex(t2->index(t1))); };
+  // The first row of the paper's table (paper_choices.h) whose condition holds.
+  for (const PaperOption& o : paper_options(method, has_t2, c1, c2)) {
+    if (o.point == PaperPoint::TerminalEdgeMidpoint) return edge_midpoint(o.rule, t1, l);
+    if (o.when != PaperCondition::Always) {
+      // Remark 10: is the centroid strictly inside the triangle other than t*?
+      FH other = o.triangle == 1 ? t2 : t1;
+      if (strictly_inside(other, quad_centroid()) != (o.when == PaperCondition::CentroidInsideOther)) continue;
+    }
+    if (o.point == PaperPoint::SecondLongestMidpoint)
+      return o.triangle == 1 ? edge_midpoint(o.rule, t1, s1) : edge_midpoint(o.rule, t2, s2);
     Selection s;
-    s.rule = Rule::QuadCentroid;
-    s.point = centroid(a, b, c, d);
+    s.rule = o.rule;
+    s.point = quad_centroid();
     return s;
   }
-  if (c1 && c2) return edge_midpoint(Rule::BothSecondLongestMidpoint, t1, s1);
-  // Exactly one, t*, has a constrained second-longest edge; o is the other.
-  FH star = c1 ? t1 : t2, other = c1 ? t2 : t1;
-  int star_edge = c1 ? s1 : s2;
-  Point g = centroid(a, b, c, d);
-  if (strictly_inside(other, g)) {
-    Selection s;
-    s.rule = Rule::CentroidInOther;
-    s.point = g;
-    return s;
-  }
-  return edge_midpoint(Rule::SecondLongestMidpoint, star, star_edge);
+  throw std::logic_error("reference: no row of the paper's table applies");  // every configuration has one that holds
 }
 
 namespace {

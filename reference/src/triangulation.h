@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Private to the reference engine: the CGAL types and the bookkeeping around
-// them. CGAL stays in reference/src; the public header speaks plain doubles.
+// Private to the reference engine (and the replay built on it through
+// lepp_reference_internals): the CGAL types and the bookkeeping around them.
+// CGAL stays out of every public header; reference.h speaks plain doubles.
 #pragma once
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>

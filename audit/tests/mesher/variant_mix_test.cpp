@@ -14,15 +14,15 @@
 #include <vector>
 
 #include "lepp/io.h"
-#include "lepp/reference_replay.h"
+#include "lepp/audit/replay.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
 
 namespace fs = std::filesystem;
-using lepp::reference::Deviation;
-using lepp::reference::Replay;
-using lepp::reference::ReplayChoice;
-using lepp::reference::ReplayRules;
+using lepp::audit::Deviation;
+using lepp::audit::Replay;
+using lepp::audit::ReplayChoice;
+using lepp::audit::ReplayRules;
 
 namespace {
 
@@ -84,7 +84,7 @@ TEST(VariantMix, TwoDeviationsFitNeitherVariantAlone) {
       r.variant = one;
       Replay alone(pslg, r);
       EXPECT_LT(steps_fitting(alone, trace), trace.size())
-          << name << ": a trace with both deviations fits " << lepp::reference::to_string(one) << " alone";
+          << name << ": a trace with both deviations fits " << lepp::audit::to_string(one) << " alone";
     }
   }
   EXPECT_GT(mixed, 0u) << "no paper input gave a trace mixing the two deviations";

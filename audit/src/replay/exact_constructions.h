@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Private to the reference engine: the exact constructions of the conformance
-// replay and its deviation catalogue that can divide by zero or meet a value
+// Private to the conformance replay: the exact constructions of the replay
+// and of its deviation catalogue that can divide by zero or meet a value
 // beyond the doubles, each with a defined answer on degenerate input instead
 // of a signal. GMP raises SIGFPE on a division by zero and on an infinity or
 // a NaN made into a rational (issue 30: `lepp audit` died on a program's
@@ -13,9 +13,11 @@
 #include <optional>
 #include <utility>
 
-#include "triangulation.h"
+#include "triangulation.h"  // reference/src: the exact engine's CGAL types
 
-namespace lepp::reference::detail {
+namespace lepp::audit::replay_detail {
+
+using namespace lepp::reference::detail;
 
 // The circumcenter of abc, exactly; none when the three points are collinear
 // (repeated points included): no circle passes through them, and CGAL's
@@ -61,4 +63,4 @@ inline double round_nearest(const FT& x) {
   return (bits & 1) ? hi : lo;
 }
 
-}  // namespace lepp::reference::detail
+}  // namespace lepp::audit::replay_detail

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Private to the replay: the cocircular cells of a constrained Delaunay mesh
+// Private to the conformance replay: the cocircular cells of a constrained Delaunay mesh
 // and the triangles their retriangulations make. A cell is a maximal set of
 // domain triangles joined by unconstrained edges whose quads are exactly
 // cocircular: a convex polygon inscribed in one empty circle. Every
@@ -14,9 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "triangulation.h"
+#include "triangulation.h"  // reference/src: the exact engine's CDT (lepp_reference_internals)
 
-namespace lepp::reference::detail {
+namespace lepp::audit::replay_detail {
+
+// The replay works on the reference engine's triangulation and insertion.
+using namespace lepp::reference::detail;
 
 bool in_domain(const Triangulation& tr, FH f);
 // An unconstrained edge between two domain triangles whose four points are
@@ -72,4 +75,4 @@ bool realize(Triangulation& tr, const CellMap& cells, const std::vector<CellTri>
 // Reverses the logged flips, last first.
 void undo_flips(Triangulation& tr, std::vector<EdgeIds>& flips);
 
-}  // namespace lepp::reference::detail
+}  // namespace lepp::audit::replay_detail

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The guarded exact constructions of the conformance replay and its deviation
-// catalogue (src/exact_constructions.h, issue 30): on degenerate input each has
+// catalogue (audit/src/replay/exact_constructions.h, issue 30): on degenerate input each has
 // a defined answer. Without the guards these cases are a GMP division by zero
 // or an infinity made into a rational: SIGFPE, which ends this test program.
 #include <gtest/gtest.h>
@@ -9,15 +9,15 @@
 #include <cmath>
 #include <limits>
 
-#include "../src/exact_constructions.h"
+#include "../src/replay/exact_constructions.h"
 
 namespace {
 
-using lepp::reference::detail::CPoint;
-using lepp::reference::detail::FT;
-using lepp::reference::detail::guarded_area_centroid;
-using lepp::reference::detail::guarded_circumcenter;
-using lepp::reference::detail::round_nearest;
+using lepp::audit::replay_detail::CPoint;
+using lepp::audit::replay_detail::FT;
+using lepp::audit::replay_detail::guarded_area_centroid;
+using lepp::audit::replay_detail::guarded_circumcenter;
+using lepp::audit::replay_detail::round_nearest;
 
 TEST(ReplayGuards, CircumcenterOfCollinearOrRepeatedPointsIsNone) {
   EXPECT_FALSE(guarded_circumcenter(CPoint(0, 0), CPoint(1, 1), CPoint(2, 2)));

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <set>
 
-namespace lepp::reference::detail {
+namespace lepp::audit::replay_detail {
 
 bool in_domain(const Triangulation& tr, FH f) { return !tr.cdt.is_infinite(f) && f->info().in_domain; }
 
@@ -213,4 +213,4 @@ void undo_flips(Triangulation& tr, std::vector<EdgeIds>& flips) {
   flips.clear();
 }
 
-}  // namespace lepp::reference::detail
+}  // namespace lepp::audit::replay_detail

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Replays a list of Steiner points on the exact reference (CGAL CDT on Epeck)
-// and says, before each insertion, which of the paper's choices the point is:
-// the stepping API behind the conformance check (lepp/audit/conformance.h).
-// Every decision is exact; only the point tolerance is measured in doubles.
+// Replays a list of Steiner points on the exact reference's mesh (CGAL CDT on
+// Epeck) and says, before each insertion, which of the paper's choices the
+// point is, or which deviation of the catalogue: the stepping API behind the
+// conformance check (lepp/audit/conformance.h). Every decision is exact; only
+// the point tolerance is measured in doubles.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -10,52 +11,18 @@
 #include <string>
 #include <vector>
 
+#include "lepp/audit/deviations.h"
 #include "lepp/mesh.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
 
-namespace lepp::reference {
+namespace lepp::audit {
 
 // How "the centroid of the quad" is read: the paper's, the average of the
 // four vertices (A+B+C+D)/4 as in the proof of Lemma 11, or the quad's area
 // centroid (its centre of mass), which a user may declare (`--centroid area`).
 enum class CentroidReading { Vertex, Area };
 const char* to_string(CentroidReading reading);  // "vertex", "area"
-
-// The deviation catalogue (docs/CONFORMANCE.md, "Deviations"): the other rules
-// a Lepp implementation plausibly follows, each computed exactly like the
-// paper's choices on the same mesh and matched with the same tolerance.
-// The order is the order they are tried in: the first that matches names it.
-enum class Deviation {
-  AreaCentroid,         // the terminal quad's area centroid (vertex reading)
-  VertexCentroid,       // the vertex average (declared area reading)
-  TriangleCentroid,     // the centroid of one terminal triangle
-  TerminalMidpoint,     // the terminal edge's midpoint where the paper chooses otherwise
-  CentroidNotMidpoint,  // the quad centroid where the paper asks for a midpoint (not Remark 10's case)
-  // Before Remark10Reversed: a centroid outside the other triangle is both
-  // programs' point; only a midpoint where the centroid is inside tells
-  // reversed (the conformance check merges the two then: docs/CONFORMANCE.md).
-  Remark10Ignored,      // the quad centroid wherever exactly one second-longest edge is constrained
-  Remark10Reversed,     // Remark 10 the wrong way round
-  OtherSecondLongest,   // the midpoint of another edge of a terminal triangle
-  Circumcenter,         // the bad triangle's circumcenter
-  OffCenter,            // the bad triangle's off-center (Ungor)
-  // The paper's choice for the Lepp of a triangle that is not bad but whose
-  // smallest angle alpha is within double rounding of theta (sin^2 alpha below
-  // the certified sin^2 theta's upper end + 16 DBL_EPSILON, exactly): a double
-  // program's threshold. Before GoodTriangle: it is the narrower explanation.
-  InexactThreshold,
-  GoodTriangle,         // the paper's choice for the Lepp of a triangle that is not bad
-  // The paper's choice for a Lepp reached by taking length comparisons the
-  // other way where the exact squared lengths differ by no more than a double
-  // computation of them may err (8 DBL_EPSILON relative): a double program's ties.
-  InexactLength,
-  Precision,            // within 1000 times the tolerance of a paper choice
-  Unknown,              // none of these
-};
-constexpr int kDeviations = 15;
-const char* to_string(Deviation deviation);   // "area-centroid", ..., "unknown"
-const char* definition(Deviation deviation);  // one sentence, as in docs/CONFORMANCE.md
 
 // What counts as the paper's choice (docs/AUDIT.md, "Conformance").
 struct ReplayRules {
@@ -93,9 +60,6 @@ struct ReplayRules {
   // set. Replay::allow adds more, part way through a trace.
   Deviation variant = Deviation::Unknown;
 };
-
-// The deviations that are a whole rule set (ReplayRules::variant).
-bool has_variant(Deviation deviation);
 
 // One choice the paper allows at this moment.
 struct ReplayChoice {
@@ -180,4 +144,4 @@ class Replay {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace lepp::reference
+}  // namespace lepp::audit

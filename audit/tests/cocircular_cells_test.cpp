@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The replay's cocircular cells, white-box (reference/src/cocircular_cells.h):
+// The replay's cocircular cells, white-box (audit/src/replay/cocircular_cells.h):
 // on an octagon inscribed in one circle, the cell's ring, the overlap test of
 // two of its triangles (crossing chords, the same triangle named twice, a
 // shared side), the triangles across a diagonal, across a segment (none) and
@@ -12,10 +12,10 @@
 #include <algorithm>
 #include <set>
 
-#include "../src/cocircular_cells.h"
+#include "../src/replay/cocircular_cells.h"
 #include "lepp/validate.h"
 
-namespace lepp::reference::detail {
+namespace lepp::audit::replay_detail {
 namespace {
 
 // The eight lattice points at distance sqrt(10) from the origin, counter-clockwise
@@ -161,4 +161,4 @@ TEST(CocircularCells, NoCocircularEdgeOutsideTheDomain) {
 }
 
 }  // namespace
-}  // namespace lepp::reference::detail
+}  // namespace lepp::audit::replay_detail

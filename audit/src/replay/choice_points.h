@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The exact points a choice may be (the paper's and the deviation catalogue's):
+// a terminal configuration, a candidate point with its scale for the point
+// tolerance, and the constructions both kinds of choice are made of.
+#pragma once
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "exact_constructions.h"
+#include "lepp/audit/replay.h"
+#include "tie_order.h"
+
+namespace lepp::audit::replay_detail {
+
+// A terminal configuration: terminal edge l of t1, and t2 across it (null if l is constrained).
+struct Terminal {
+  FH t1, t2;
+  int l = -1;
+};
+
+// A point a rule may choose there.
+struct Candidate {
+  Rule rule;
+  CPoint point;
+  double scale = 0;        // largest |coordinate| of the vertices defining the point
+  VH split_a, split_b;     // the constrained edge it splits, or null
+  Deviation deviation = Deviation::Unknown;  // Unknown: the paper's choice; else the catalogue rule that made it
+};
+
+inline double abs_max(const CPoint& p) {
+  return std::max(std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())));
+}
+
+// The point tolerance for a choice of this scale (ReplayRules::point_tolerance_ulps).
+inline double point_tolerance(const ReplayRules& rules, double scale) {
+  double ulps = std::max(rules.point_tolerance_ulps, 0.0);
+  return std::max(ulps * DBL_EPSILON * scale, ulps * std::numeric_limits<double>::denorm_min());
+}
+
+// The exact centroid of a triangle.
+inline CPoint triangle_centroid(const CPoint& a, const CPoint& b, const CPoint& c) {
+  return CPoint((a.x() + b.x() + c.x()) / 3, (a.y() + b.y() + c.y()) / 3);
+}
+
+// The exact midpoint of edge i of f, with the edge when it is constrained (a split).
+template <class T>
+Candidate midpoint(Rule rule, const T& f, int i) {
+  VH a = vtx(f, Cdt::ccw(i)), b = vtx(f, Cdt::cw(i));
+  Candidate c{rule, CGAL::midpoint(a->point(), b->point()), std::max(abs_max(a->point()), abs_max(b->point())), {}, {}};
+  if (constrained(f, i)) c.split_a = a, c.split_b = b;
+  return c;
+}
+
+// The quad's centroid under the given reading, and its scale for the
+// tolerance. The area centroid's rounding error in doubles grows with M / |ab|
+// (its weights are cross products: eps M^2 absolute error on an area of size
+// |ab|^2), so its scale is M * max(1, M / |ab|).
+template <class T>
+std::optional<Candidate> quad_centroid(Rule rule, const T& t1, const T& t2, int l, CentroidReading reading) {
+  VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
+  VH d = vtx(t2, index_off(t2, a, b));
+  double scale = std::max({abs_max(a->point()), abs_max(b->point()), abs_max(c->point()), abs_max(d->point())});
+  if (reading == CentroidReading::Vertex) {
+    CPoint g(((a->point().x() + b->point().x()) + (c->point().x() + d->point().x())) / 4,
+             ((a->point().y() + b->point().y()) + (c->point().y() + d->point().y())) / 4);
+    return Candidate{rule, g, scale, {}, {}};
+  }
+  double ab = std::sqrt(CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
+  if (ab > 0 && scale / ab > 1) scale *= scale / ab;
+  const std::optional<CPoint> g = guarded_area_centroid(a->point(), b->point(), c->point(), d->point());
+  if (!g) return std::nullopt;  // a flat quad has no area centroid: no such choice
+  return Candidate{rule, *g, scale, {}, {}};
+}
+
+// 1 strictly inside f farther than tol from its boundary, -1 not strictly
+// inside and farther than tol from it, 0 within tol of the boundary.
+template <class T>
+int inside_status(const T& f, const CPoint& p, double tol) {
+  bool strictly = true, near = false;
+  for (int i = 0; i < 3; ++i) {
+    const CPoint &u = vtx(f, Cdt::ccw(i))->point(), &v = vtx(f, Cdt::cw(i))->point();
+    if (CGAL::orientation(u, v, p) != CGAL::LEFT_TURN) strictly = false;
+    // Distance |det| / |uv| <= tol, squared and exact: in doubles the cross product
+    // and the squared length of subnormal coordinates underflow to 0 (0/0 is never near).
+    FT det = (v.x() - u.x()) * (p.y() - u.y()) - (v.y() - u.y()) * (p.x() - u.x());
+    if (det * det <= FT(tol) * FT(tol) * CGAL::squared_distance(u, v)) near = true;
+  }
+  if (near) return 0;
+  return strictly ? 1 : -1;
+}
+
+}  // namespace lepp::audit::replay_detail

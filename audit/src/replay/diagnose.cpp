@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The deviation catalogue's diagnosis of a point that is no choice
+// (Replay::diagnose): every triangle's Lepp walked, the catalogue's points
+// and the paper's choices for good triangles and at 1000 times the tolerance
+// tried, the first rule in catalogue order (lepp/audit/deviations.h) names it.
+#include <cmath>
+#include <limits>
+
+#include "replayer.h"
+
+namespace lepp::audit::replay_detail {
+
+// One table (catalogue_points, triangle_points, the paper's choices for good
+// triangles and at 1000 times the tolerance), one loop: the first rule in
+// catalogue order with a point within its tolerance of p names it.
+DeviationMatch Replayer::diagnose(const Point& p) const {
+  DeviationMatch best;
+  int best_rank = kDeviations;
+  double best_d = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return best;
+  auto consider = [&](const Candidate& c, double tol, const Terminal* t, const std::vector<FH>& lepp) {
+    const int rank = static_cast<int>(c.deviation);
+    if (rank > best_rank) return;
+    // A point out of the doubles' range (the circumcenter of a nearly flat
+    // triangle) has an infinite scale: it would match every point.
+    if (!std::isfinite(tol)) return;
+    const double d = distance(p, c.point);
+    if (!(d <= tol) || (rank == best_rank && d >= best_d)) return;
+    best_rank = rank, best_d = d;
+    best.deviation = c.deviation;
+    best.paper.clear();
+    if (t) {
+      best.where = describe(*t, c, p, lepp);
+      for (const Candidate& k : paper_candidates(rules, *t)) best.paper.push_back(describe(*t, k, p, lepp));
+      if (!best.paper.empty()) best.where.rule = best.paper.front().rule;
+    } else {
+      ReplayChoice r;
+      r.bad = ccw_ids(lepp.front());
+      r.lepp = {r.bad};
+      r.point = {round_nearest(c.point.x()), round_nearest(c.point.y())};
+      r.distance = d;
+      r.euclidean = euclidean(p, c.point);
+      best.where = r;
+    }
+    best.where.tolerance = tol;
+  };
+  for (FH f : tr.cdt.finite_face_handles()) {
+    if (!in_domain(f)) continue;
+    const bool bad = maybe_bad(f);
+    std::vector<FH> path{f};
+    std::vector<std::pair<std::vector<FH>, Terminal>> ends;
+    lepp_ends(f, -1, path, ends, 64);
+    if (bad)
+      for (const Candidate& c : triangle_points(rules, f)) consider(c, tolerance(c.scale), nullptr, path);
+    for (const auto& [lepp, t] : ends) {
+      if (!bad) {
+        // Good by no more than double rounding: the program's threshold rounded, not wrong.
+        const Deviation good = within_rounding_of_theta(f) ? Deviation::InexactThreshold : Deviation::GoodTriangle;
+        for (Candidate c : paper_candidates(rules, t)) {
+          c.deviation = good;
+          consider(c, tolerance(c.scale), &t, lepp);
+        }
+        continue;
+      }
+      for (const Candidate& c : catalogue_points(rules, t)) consider(c, tolerance(c.scale), &t, lepp);
+      for (Candidate c : paper_candidates(rules, t)) {
+        c.deviation = Deviation::Precision;
+        consider(c, 1000 * tolerance(c.scale), &t, lepp);
+      }
+    }
+  }
+  // The paper's choices again, with the lengths' near ties as ties: only when
+  // no rule before it matched (another walk of every Lepp).
+  if (best_rank > static_cast<int>(Deviation::InexactLength)) {
+    LengthTiesWithinRounding relaxed(true);
+    for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
+      for (Candidate c : paper_candidates(rules, t)) {
+        c.deviation = Deviation::InexactLength;
+        consider(c, tolerance(c.scale), &t, lepp);
+      }
+    });
+  }
+  best.what = match_text(best.deviation, best.where.terminal_edge, best.where.bad);
+  return best;
+}
+
+}  // namespace lepp::audit::replay_detail

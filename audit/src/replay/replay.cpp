@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// lepp::audit::Replay (lepp/audit/replay.h): the public face of the replay,
+// each call handed to its state and searches (replayer.h).
+#include "lepp/audit/replay.h"
+
+#include "replayer.h"
+
+namespace lepp::audit {
+
+struct Replay::Impl : replay_detail::Replayer {
+  using Replayer::Replayer;
+};
+
+const char* to_string(CentroidReading reading) { return reading == CentroidReading::Area ? "area" : "vertex"; }
+
+Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_unique<Impl>(pslg, rules)) {}
+Replay::~Replay() = default;
+bool Replay::match(const Point& p, ReplayChoice& choice) { return impl_->match(p, choice); }
+void Replay::insert(const Point& p, const ReplayChoice& choice) { impl_->insert(p, choice); }
+void Replay::allow(Deviation variant) { impl_->allow(variant); }
+std::vector<ReplayChoice> Replay::all_choices(const Point& p, std::size_t limit, std::size_t& total) {
+  return impl_->all_choices(p, limit, total);
+}
+DeviationMatch Replay::diagnose(const Point& p) const { return impl_->diagnose(p); }
+Theorem2Check Replay::theorem2(const ReplayChoice& choice) const { return impl_->theorem2(choice); }
+Mesh Replay::mesh() const { return replay_detail::extract_mesh(impl_->tr); }
+std::size_t Replay::steiner_points() const { return impl_->tr.vertex.size() - impl_->tr.input_vertices; }
+std::int64_t Replay::cocircular_ties() const { return impl_->tr.cocircular_ties; }
+std::int64_t Replay::cocircular_flips() const { return impl_->cocircular_flips_; }
+bool Replay::cocircular_search_exhausted() const { return impl_->search_exhausted_; }
+
+}  // namespace lepp::audit
