@@ -8,9 +8,8 @@
 #include <fmt/format.h>
 
 #include "cgal_mesher.h"
-#include "lepp/fast.h"
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
-#include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "triangle_wasm.h"
 
@@ -32,20 +31,21 @@ std::vector<int> quality_histogram(const Mesh& mesh) {
 }
 
 RefineResult Runner::refine(const Pslg& pslg, const RefineOptions& options) {
-  bool fast = options_.engine == "fast" || (options_.engine == "auto" && fast::available());
-  engine_ = fast ? "fast" : "reference";
-  return fast ? fast::refine(pslg, options) : reference::refine(pslg, options);
+  // auto: the fast engine.
+  const engines::Engine which = engines::parse_engine(options_.engine, engines::lepp_engines()).value_or(engines::Engine::Fast);
+  engine_ = engines::to_string(which);
+  return engines::refine(which, pslg, options);
 }
 
 Run Runner::lepp_run(const std::string& problem, const std::string& reading, const Pslg& pslg, const std::string& method,
                      double theta, const std::string& order) {
   Run r = start(problem, reading, method, theta);
   r.order = order;
-  if (order != "fifo") r.mesh_prefix += "-" + order;
   RefineOptions o;
   o.min_angle_deg = theta;
-  o.method = method == "midpoint" ? Method::Midpoint : Method::Centroid;
-  o.order = order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+  o.method = engines::parse_method(method).value();
+  o.order = engines::parse_order(order).value();
+  if (o.order != QueueOrder::Fifo) r.mesh_prefix += "-" + order;
   o.max_steiner = options_.budget;
   o.time_limit_seconds = options_.time_limit;
   try {

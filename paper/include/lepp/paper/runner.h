@@ -22,12 +22,12 @@ class Runner {
   // Keeps a reference to `options`: it must outlive the runner.
   explicit Runner(const Options& options) : options_(options) {}
 
-  // The engine the study uses: fast when it exists, else the exact reference.
+  // The engine the options name (auto: fast), by the registry (lepp/engines/registry.h).
   RefineResult refine(const Pslg& pslg, const RefineOptions& options);
   // The engine of the last refine ("reference" before any).
   const std::string& engine() const { return engine_; }
 
-  // method: centroid or midpoint; order: fifo or lifo. An engine's exception
+  // method: centroid or midpoint; order: a processing order's name. An engine's exception
   // becomes the outcome "engine error: ...".
   Run lepp_run(const std::string& problem, const std::string& reading, const Pslg& pslg, const std::string& method,
                double theta, const std::string& order = "fifo");
