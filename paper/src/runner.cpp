@@ -12,6 +12,7 @@
 #include "lepp/io.h"
 #include "lepp/stats.h"
 #include "triangle_wasm.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 namespace {
@@ -65,7 +66,7 @@ Run Runner::lepp_run(const std::string& problem, const std::string& reading, con
 }
 
 Run Runner::cgal_run(const std::string& problem, const std::string& reading, const Pslg& pslg, double theta) {
-  Run r = start(problem, reading, "cgal", theta);
+  Run r = start(problem, reading, cgal_name(), theta);
   others::CgalMeshLimits limits;
   limits.max_steiner = options_.budget;
   limits.time_limit_seconds = std::min(options_.time_limit, 20.0);
@@ -80,7 +81,7 @@ Run Runner::cgal_run(const std::string& problem, const std::string& reading, con
 
 Run Runner::triangle_run(const std::string& problem, const std::string& reading, const std::string& poly, const Pslg& pslg,
                          double theta) {
-  Run r = start(problem, reading, "triangle", theta);
+  Run r = start(problem, reading, triangle_name(), theta);
   // -S: Triangle's own Steiner budget, so that a run above its range ends too.
   others::TriangleRun tr = others::run_triangle(options_.root, poly, theta, options_.triangle_budget, r.mesh_prefix);
   r.seconds = tr.seconds;
@@ -117,7 +118,7 @@ Run Runner::start(const std::string& problem, const std::string& reading, const 
 void Runner::finish(Run& r, const Mesh& mesh, const Pslg& pslg) const {
   r.stats = mesh_stats(mesh, pslg);
   r.q_hist = quality_histogram(mesh);
-  if (r.method != "triangle") write_mesh(r.mesh_prefix, mesh);
+  if (r.method != triangle_name()) write_mesh(r.mesh_prefix, mesh);
 }
 
 }  // namespace lepp::paper
