@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The --cmd template adapter: any program, run by /bin/sh once per case, as an audit engine.
 #include "lepp/engines/command_engine.h"
 
 #include <sys/stat.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Triangle (triangle-wasm under node) and CGAL's mesher as audit engines.
 #include "lepp/engines/peer_engines.h"
 
 #include <chrono>
