@@ -17,9 +17,9 @@
 #include <map>
 
 #include "lepp/audit/audit.h"
-#include "lepp/audit/builtin_engines.h"
+#include "lepp/engines/builtin_engines.h"
 #include "lepp/audit/checks.h"
-#include "lepp/audit/command_engine.h"
+#include "lepp/engines/command_engine.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"
 #include "problems.h"

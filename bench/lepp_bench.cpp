@@ -14,6 +14,7 @@
 
 #include "bench_main.h"
 #include "cgal_mesher.h"
+#include "lepp/engines/registry.h"
 #include "lepp/fast.h"
 #include "lepp/reference.h"
 #include "memory_probe.h"
@@ -117,9 +118,9 @@ void register_all() {
       b->Unit(benchmark::kMillisecond);
       if (i >= paper) b->Iterations(1);
     };
-    add("fast", &fast_engine);
-    if (!big && p->name.rfind("random", 0) != 0) add("reference", &reference_engine);
-    if (!very_big) add("cgal", &cgal_engine);
+    add(engines::to_string(engines::Engine::Fast), &fast_engine);
+    if (!big && p->name.rfind("random", 0) != 0) add(engines::to_string(engines::Engine::Reference), &reference_engine);
+    if (!very_big) add(engines::to_string(engines::Engine::Cgal), &cgal_engine);
   }
 }
 

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,16 +21,14 @@
 
 #include "commands.h"
 #include "lepp/audit/audit.h"
-#include "lepp/audit/builtin_engines.h"
-#include "lepp/audit/command_engine.h"
 #include "lepp/audit/data_root.h"
-#include "lepp/audit/isolated_engine.h"
-#include "lepp/audit/peer_engines.h"
 #include "lepp/audit/points_cache.h"
 #include "lepp/audit/report.h"
 #include "lepp/audit/shard.h"
 #include "lepp/audit/subprocess.h"
-#include "lepp/fast.h"
+#include "lepp/engines/audited_engines.h"
+#include "lepp/engines/command_engine.h"
+#include "lepp/engines/registry.h"
 #include "lepp/version.h"
 
 namespace lepp::cli {
@@ -37,8 +36,8 @@ namespace {
 
 struct AuditArgs {
   std::string cmd, engine;
-  std::string method = "centroid";
-  std::string order = "fifo";
+  std::string method = to_string(Method::Centroid);
+  std::string order = to_string(QueueOrder::Fifo);
   std::vector<double> thetas = {20, 25, 30};
   std::size_t cases = 300;
   std::uint64_t seed = 1;
@@ -68,6 +67,12 @@ struct MergeArgs {
   std::string out = "audit-out";
   std::string junit, json;  // json: the JSON report to this file ("-": on stdout instead of the markdown)
 };
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
 
 std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> parts;
@@ -120,43 +125,40 @@ int run_audit_command(const AuditArgs& args) {
     const std::string self = audit::executable_path();
     const std::string lepp_word = self.empty() ? "lepp" : audit::shell_quote(self);
     audit::AuditOptions o;
-    o.method = a.method == "midpoint" ? Method::Midpoint : Method::Centroid;
-    QueueOrder order = a.order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+    // The options' checks admit only the registry's names.
+    o.method = *engines::parse_method(a.method);
+    const QueueOrder order = *engines::parse_order(a.order);
     // lepp's engines in a child process unless --no-isolate (CGAL's always is: peer_engines.h).
-    auto lepp_engine = [&a](audit::Engine e) { return a.no_isolate ? e : audit::isolated_engine(std::move(e)); };
+    const bool isolate = !a.no_isolate;
     audit::Engine engine;
     if (!a.cmd.empty()) {
       engine = audit::command_engine(a.cmd);
       o.engine_name = a.cmd;
       o.reproduce_prefix = lepp_word + " audit --cmd " + audit::shell_quote(a.cmd);
     } else {
-      if (a.engine == "fast") engine = lepp_engine(audit::fast_engine(order));
-      else if (a.engine == "reference") engine = lepp_engine(audit::reference_engine(order));
-      else if (a.engine == "triangle") engine = audit::triangle_engine(a.root);
-      else if (a.engine == "cgal") engine = audit::cgal_engine();
-      o.engine_name = a.engine == "fast" || a.engine == "reference" ? "lepp " + a.engine + (a.order == "lifo" ? " (lifo)" : "")
-                      : a.engine == "triangle"                     ? "Triangle (triangle-wasm)"
-                                                                   : "CGAL refine_Delaunay_mesh_2";
-      o.reproduce_prefix = lepp_word + " audit --engine " + a.engine + (a.order == "lifo" ? " --order lifo" : "");
-      if (a.engine == "triangle") o.reproduce_prefix += " --root " + audit::shell_quote(std::filesystem::absolute(a.root).string());
+      const engines::Engine which = *engines::parse_engine(a.engine, engines::audit_engines());
+      engine = engines::audited_engine(which, order, isolate, a.root);
+      o.engine_name = engines::audit_title(which, order);
+      o.reproduce_prefix = lepp_word + " audit --engine " + a.engine +
+                           (order == QueueOrder::Fifo ? "" : std::string(" --order ") + to_string(order));
+      if (which == engines::Engine::Triangle)
+        o.reproduce_prefix += " --root " + audit::shell_quote(std::filesystem::absolute(a.root).string());
     }
-    std::vector<std::string> compare = a.compare == "auto" ? std::vector<std::string>{"reference", "triangle"} : split(a.compare);
+    const bool automatic = a.compare == "auto";
+    const std::vector<std::string> compare = automatic ? engines::names(engines::auto_comparisons()) : split(a.compare);
     for (const std::string& c : compare) {
       if (c == "none") continue;
+      const std::optional<engines::Engine> which = engines::parse_engine(c, engines::comparison_engines());
+      if (!which)
+        throw audit::UsageError("--compare: unknown engine " + c + " (" + join(engines::names(engines::comparison_engines())) +
+                                ", none)");
       // Cache keys name the engine's build: a new lepp or Triangle budget is a new entry.
       const std::string build = fmt::format("{} {}", kVersion, git_commit());
-      if (c == "reference")
-        o.comparisons.push_back({"lepp reference", lepp_engine(audit::reference_points_engine()), "lepp-reference " + build});
-      else if (c == "fast") o.comparisons.push_back({"lepp fast", lepp_engine(audit::fast_engine()), "lepp-fast " + build});
-      else if (c == "cgal") o.comparisons.push_back({"CGAL", audit::cgal_engine(), "cgal " + std::string(cgal_version())});
-      else if (c == "triangle") {
-        try {
-          o.comparisons.push_back({"Triangle", audit::triangle_engine(a.root), "triangle-wasm -S20000 " + build});
-        } catch (const audit::UsageError&) {
-          if (a.compare != "auto") throw;  // asked for explicitly: say it is missing
-        }
-      } else {
-        throw audit::UsageError("--compare: unknown engine " + c + " (reference, fast, triangle, cgal, none)");
+      try {
+        o.comparisons.push_back(engines::comparison_engine(*which, isolate, a.root, build));
+      } catch (const audit::UsageError&) {
+        // Triangle missing: asked for explicitly, say so; under auto, compare without it.
+        if (!automatic || *which != engines::Engine::Triangle) throw;
       }
     }
     o.thetas = a.thetas;
@@ -241,9 +243,11 @@ void add_audit_command(CLI::App& app, int& status) {
   auto* cmd = app.add_subcommand("audit", "Audit a mesher (any program, or a built-in engine) against the paper's statements");
   cmd->add_option("--cmd", a->cmd, "Command template run per case: {in} .poly, {out} output prefix, {theta}, {method}");
   cmd->add_option("--engine", a->engine, "A built-in engine instead of --cmd")
-      ->check(CLI::IsMember({"fast", "reference", "triangle", "cgal"}));
-  cmd->add_option("--method", a->method, "centroid or midpoint")->default_val("centroid")->check(CLI::IsMember({"centroid", "midpoint"}));
-  cmd->add_option("--order", a->order, "Queue order of the built-in lepp engines")->default_val("fifo")->check(CLI::IsMember({"fifo", "lifo"}));
+      ->check(CLI::IsMember(engines::names(engines::audit_engines())));
+  cmd->add_option("--method", a->method, "centroid or midpoint")->default_val(a->method)->check(CLI::IsMember(engines::method_names()));
+  cmd->add_option("--order", a->order, "Queue order of the built-in lepp engines")
+      ->default_val(a->order)
+      ->check(CLI::IsMember(engines::order_names(engines::audit_orders())));
   cmd->add_option("--theta", a->thetas, "Smallest angles, degrees, comma-separated")->delimiter(',')->default_str("20,25,30");
   cmd->add_option("--cases", a->cases, "Runs at most (inputs x angles)")->default_val(300);
   cmd->add_option("--seed", a->seed, "Seed of the generated inputs")->default_val(1);

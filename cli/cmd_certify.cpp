@@ -13,6 +13,7 @@
 #include "lepp/certify.h"
 #include "lepp/certify_json.h"
 #include "lepp/certify_svg.h"
+#include "lepp/engines/registry.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
@@ -30,7 +31,7 @@ struct CertifyArgs {
   bool exempt = false;
   bool exempt_precision = false;
   bool ties_by_ids = false;
-  std::string method = "centroid";
+  std::string method = to_string(Method::Centroid);
   double max_area = 0;
   bool region_areas = false;
   std::size_t max_listed = 50;
@@ -75,7 +76,7 @@ int run_certify(const CertifyArgs& args) {
   options.exempt_small_input_angles = args.exempt;
   options.exempt_precision_limited = args.exempt_precision;
   options.precision_ties_by_ids = args.ties_by_ids;
-  options.precision_method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
+  options.precision_method = *engines::parse_method(args.method);  // the option admits only the registry's names
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
   const certify::Report report = certify::certify(input, mesh, options);
@@ -119,8 +120,8 @@ void add_certify_command(CLI::App& app, int& status) {
                 "lengths decided by vertex ids, as lepp's engines decide them; reads numbering, so only for lepp's own "
                 "meshes, no certificate for another mesher (docs/CERTIFIER.md section 5c, Finding)");
   cmd->add_option("--method", args->method, "The Select Point of the precision-limit exemption: centroid or midpoint")
-      ->default_val("centroid")
-      ->check(CLI::IsMember({"centroid", "midpoint"}));
+      ->default_val(args->method)
+      ->check(CLI::IsMember(engines::method_names()));
   cmd->add_option("--max-area", args->max_area,
                   "Every triangle's area must be <= this (as refine --max-area, Triangle's -a X; exact)")
       ->check(CLI::NonNegativeNumber);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "commands.h"
+#include "lepp/engines/registry.h"
 #include "lepp/paper/orders.h"
 #include "lepp/paper/reproduce.h"
 #include "lepp/paper/summary_table.h"
@@ -47,7 +48,8 @@ struct OrdersArgs {
 
 int run_orders(const paper::Options& options, OrdersArgs& a, const std::string& command) {
   a.study.root = options.root;
-  a.study.engine = options.engine == "reference" ? "reference" : "fast";
+  // auto: the fast engine.
+  a.study.engine = engines::to_string(engines::parse_engine(options.engine, engines::lepp_engines()).value_or(engines::Engine::Fast));
   a.study.angles.clear();
   double lo = 0, hi = 0;
   if (std::sscanf(a.angles.c_str(), "%lf:%lf", &lo, &hi) == 2 && lo <= hi) {
@@ -76,6 +78,13 @@ int run_orders(const paper::Options& options, OrdersArgs& a, const std::string& 
   return 0;
 }
 
+// --engine: auto (the fast engine), or one of lepp's engines by name.
+std::vector<std::string> engine_choices() {
+  std::vector<std::string> choices = {"auto"};
+  for (const std::string& name : engines::names(engines::lepp_engines())) choices.push_back(name);
+  return choices;
+}
+
 }  // namespace
 
 void add_paper_command(CLI::App& app, int& status) {
@@ -86,7 +95,7 @@ void add_paper_command(CLI::App& app, int& status) {
   cmd->add_option("--root", args->root, "The source tree (corpus/paper, paper/plots.py, tools/triangle)")->default_val(".");
   cmd->add_option("--engine", args->engine, "auto (fast if implemented, else reference), fast or reference")
       ->default_val("auto")
-      ->check(CLI::IsMember({"auto", "fast", "reference"}));
+      ->check(CLI::IsMember(engine_choices()));
   cmd->add_option("--budget", args->budget, "Steiner points per run (ours, CGAL) before it counts as not finished")
       ->default_val(300000)
       ->check(CLI::PositiveNumber);
@@ -113,8 +122,8 @@ void add_paper_command(CLI::App& app, int& status) {
       ->default_val(20)
       ->check(CLI::PositiveNumber);
   cmd->add_option("--orders-methods", orders->study.methods, "The order study's methods")
-      ->default_val(std::vector<std::string>{"centroid", "midpoint"})
-      ->check(CLI::IsMember({"centroid", "midpoint"}));
+      ->default_val(engines::method_names())
+      ->check(CLI::IsMember(engines::method_names()));
   cmd->add_option("--orders-problems", orders->study.problems, "The order study's problems (corpus/paper keys; default all four)")
       ->check(CLI::IsMember({"square400", "circles240", "rect162", "A"}));
   cmd->add_option("--orders-from", orders->from_json, "Rewrite the order section from this orders.json instead of running");

@@ -10,11 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "lepp/fast.h"
+#include "lepp/engines/registry.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/mesh_output.h"
-#include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
@@ -26,9 +25,9 @@ namespace {
 struct RefineArgs {
   std::string input, output;
   double min_angle = 30;
-  std::string method = "centroid";
-  std::string engine = "fast";
-  std::string order = "fifo";
+  std::string method = to_string(Method::Centroid);
+  std::string engine = engines::to_string(engines::Engine::Fast);
+  std::string order = to_string(QueueOrder::Fifo);
   std::uint64_t order_seed = 0;
   int threads = 0;
   std::int64_t max_steiner = -1;
@@ -97,8 +96,9 @@ int run_refine(const RefineArgs& args) {
 
   RefineOptions options;
   options.min_angle_deg = args.min_angle;
-  options.method = args.method == "midpoint" ? Method::Midpoint : Method::Centroid;
-  parse_queue_order(args.order, options.order);  // the option's check admits only known names
+  // The options' checks admit only the registry's names.
+  options.method = *engines::parse_method(args.method);
+  options.order = *engines::parse_order(args.order);
   options.order_seed = args.order_seed;
   options.threads = args.threads;
   options.max_steiner = args.max_steiner;
@@ -113,16 +113,7 @@ int run_refine(const RefineArgs& args) {
     options.on_progress = [](std::int64_t n) { std::fprintf(stderr, "\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
   }
 
-  RefineResult result;
-  if (args.engine == "fast") {
-    if (!fast::available()) {
-      std::fprintf(stderr, "lepp refine: the fast engine is not implemented yet; use --engine reference\n");
-      return 1;
-    }
-    result = fast::refine(input, options);
-  } else {
-    result = reference::refine(input, options);
-  }
+  RefineResult result = engines::refine(*engines::parse_engine(args.engine, engines::lepp_engines()), input, options);
   if (options.on_progress) std::fprintf(stderr, "\r\033[K");
   const MeshLabels labels = label_refined_mesh(result.mesh, input, args.domain);
   try {
@@ -232,17 +223,17 @@ void add_refine_command(CLI::App& app, int& status) {
       ->default_val(30)
       ->check(CLI::Range(0.0, 60.0));
   cmd->add_option("--method", args->method, "Point selection: centroid (the paper's Lepp-centroid) or midpoint (Lepp-midpoint)")
-      ->default_val("centroid")
-      ->check(CLI::IsMember({"centroid", "midpoint"}));
+      ->default_val(args->method)
+      ->check(CLI::IsMember(engines::method_names()));
   cmd->add_option("--engine", args->engine, "fast (optimized) or reference (exact CGAL Epeck, slow)")
-      ->default_val("fast")
-      ->check(CLI::IsMember({"fast", "reference"}));
+      ->default_val(args->engine)
+      ->check(CLI::IsMember(engines::names(engines::lepp_engines())));
   cmd->add_option("--order", args->order,
                   "Processing order of bad triangles: fifo (default), lifo, flip (in the order the insertion's flips "
                   "create them), random (--order-seed), smallest-angle, or batch (rounds of independent insertions) "
                   "(docs/ALGORITHM.md section 7)")
-      ->default_val("fifo")
-      ->check(CLI::IsMember({"fifo", "lifo", "flip", "random", "smallest-angle", "batch"}));
+      ->default_val(args->order)
+      ->check(CLI::IsMember(engines::order_names()));
   cmd->add_option("--order-seed", args->order_seed, "Seed of --order random (SplitMix64, docs/ALGORITHM.md)")->default_val(0);
   cmd->add_option("--threads", args->threads,
                   "Threads for --order batch's selection (fast engine; 0: the machine's cores). The mesh is the same "

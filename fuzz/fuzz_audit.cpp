@@ -20,13 +20,14 @@
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include "lepp/audit/checks.h"
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
-#include "support/engines.h"
 #include "support/finding.h"
 #include "support/fuzz_input.h"
 
 using namespace lepp::fuzz;
+using lepp::engines::Engine;
 
 namespace {
 
@@ -126,7 +127,7 @@ void edit(lepp::audit::EngineRun& run, FuzzedDataProvider& fdp, std::string& wha
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (!engine_available(Engine::Fast) || size < 2) return 0;
+  if (size < 2) return 0;
   const std::size_t pslg_size = std::min<std::size_t>(size - 2, data[0] | (data[1] << 8));
   FuzzInput input = decode(data + 2, pslg_size);
   apply_environment(input);

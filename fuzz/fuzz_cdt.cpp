@@ -9,15 +9,16 @@
 
 #include <fmt/format.h>
 
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
 #include "support/certify_result.h"
 #include "support/cgal_cdt.h"
-#include "support/engines.h"
 #include "support/finding.h"
 #include "support/fuzz_input.h"
 #include "support/pslg_mutator.h"
 
 using namespace lepp::fuzz;
+using lepp::engines::Engine;
 
 namespace {
 void finding(const std::string& cls, const std::string& what) { report_finding("fuzz_cdt", cls, what); }
@@ -44,7 +45,6 @@ std::string first_difference(const lepp::Mesh& fast, const lepp::Mesh& cgal) {
 LEPP_FUZZ_PSLG_MUTATOR
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (!engine_available(Engine::Fast)) return 0;
   FuzzInput input = decode(data, size);
   apply_environment(input);  // LEPP_FUZZ_PRECISION (method and theta do not matter here)
   const std::optional<lepp::Pslg> valid = valid_pslg(input);

@@ -11,9 +11,9 @@
 
 #include <fmt/format.h>
 
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
 #include "support/certify_result.h"
-#include "support/engines.h"
 #include "support/finding.h"
 #include "support/fuzz_input.h"
 #include "support/known_loops.h"
@@ -21,6 +21,7 @@
 #include "support/pslg_mutator.h"
 
 using namespace lepp::fuzz;
+using lepp::engines::Engine;
 
 namespace {
 constexpr std::int64_t kBudgetCap = 3000;  // the reference is exact and slow
@@ -74,7 +75,6 @@ std::string first_difference(const lepp::RefineResult& f, const lepp::RefineResu
 LEPP_FUZZ_PSLG_MUTATOR
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (!engine_available(Engine::Fast) || !engine_available(Engine::Reference)) return 0;
   FuzzInput input = decode(data, size);
   apply_environment(input);
   const std::optional<lepp::Pslg> valid = valid_pslg(input);

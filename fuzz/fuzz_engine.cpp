@@ -29,7 +29,7 @@
 #include <unistd.h>
 
 #include "lepp/audit/checks.h"
-#include "lepp/audit/command_engine.h"
+#include "lepp/engines/command_engine.h"
 #include "lepp/io.h"
 #include "support/finding.h"
 #include "support/fuzz_input.h"

@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
       shape.theta_tenths = setting.theta_tenths;
       shape.method = setting.method;
       const std::vector<std::uint8_t> bytes = lepp::fuzz::encode(shape);
-      const std::string file = name + "-" + (setting.method ? "midpoint" : "centroid") + "-" +
+      const std::string file = name + "-" + lepp::to_string(setting.method ? lepp::Method::Midpoint : lepp::Method::Centroid) + "-" +
                                std::to_string(setting.theta_tenths / 10) + ".bin";
       std::ofstream(out / file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
                                                        static_cast<std::streamsize>(bytes.size()));

@@ -17,7 +17,6 @@
 
 #include <fmt/format.h>
 
-#include "lepp/audit/command_engine.h"
 #include "lepp/audit/finding.h"
 #include "lepp/audit/parallel.h"
 #include "lepp/audit/points_cache.h"
@@ -25,6 +24,7 @@
 #include "lepp/audit/shrink.h"
 #include "lepp/audit/signature.h"
 #include "lepp/audit/subprocess.h"
+#include "lepp/audit/theta_text.h"
 #include "lepp/io.h"
 
 namespace fs = std::filesystem;

@@ -3,8 +3,8 @@
 
 #include <fmt/format.h>
 
-#include "lepp/audit/command_engine.h"
 #include "lepp/audit/shard.h"
+#include "lepp/audit/theta_text.h"
 #include "xml_escape.h"
 
 namespace lepp::audit {

@@ -241,7 +241,8 @@ AuditReport merge_shards(const std::vector<MergeInput>& shards, const std::strin
   // 2. What every shard says alike, then the sums.
   AuditReport rep;
   rep.engine = first["engine"].get<std::string>();
-  rep.method = first["method"].get<std::string>() == "midpoint" ? Method::Midpoint : Method::Centroid;
+  rep.method = Method::Centroid;  // unless the shard names another
+  parse_method(first["method"].get<std::string>(), rep.method);
   rep.thetas = first["thetas"].get<std::vector<double>>();
   rep.seed = first["seed"].get<std::uint64_t>();
   rep.inputs = first["inputs"].get<std::size_t>();

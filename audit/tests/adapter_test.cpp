@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "lepp/audit/checks.h"
-#include "lepp/audit/command_engine.h"
+#include "lepp/engines/command_engine.h"
 #include "lepp/audit/subprocess.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"

@@ -12,7 +12,7 @@
 
 #include "audit_test_support.h"
 #include "lepp/audit/audit.h"
-#include "lepp/audit/builtin_engines.h"
+#include "lepp/engines/builtin_engines.h"
 #include "lepp/audit/finding.h"
 #include "lepp/audit/report.h"
 

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "audit_test_support.h"
-#include "lepp/audit/peer_engines.h"
+#include "lepp/engines/peer_engines.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
 #include "triangle_wasm.h"

@@ -24,7 +24,7 @@
 #include <gtest/gtest.h>
 
 #include "lepp/audit/audit.h"
-#include "lepp/audit/builtin_engines.h"
+#include "lepp/engines/builtin_engines.h"
 #include "lepp/audit/report.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"

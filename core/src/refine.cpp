@@ -103,6 +103,17 @@ const char* to_string(Rule rule) {
 }
 
 const char* to_string(Method method) { return method == Method::Centroid ? "centroid" : "midpoint"; }
+const std::vector<Method>& all_methods() {
+  static const std::vector<Method> methods = {Method::Centroid, Method::Midpoint};
+  return methods;
+}
+
+bool parse_method(const std::string& name, Method& method) {
+  for (Method m : all_methods())
+    if (name == to_string(m)) return method = m, true;
+  return false;
+}
+
 const char* to_string(QueueOrder order) {
   switch (order) {
     case QueueOrder::Fifo: return "fifo";

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One property, written the way another mesher's CI would: for every generated
-// PSLG, the mesh under test (here lepp's reference CDT; put yours instead)
+// PSLG, the mesh under test (here lepp's reference CDT, by the engine registry; put yours instead)
 // certifies exactly as a constrained Delaunay triangulation, Theorem 2 included.
 #include <cstdio>
 #include <vector>
@@ -8,8 +8,8 @@
 #include <rapidcheck.h>
 
 #include "lepp/certify.h"
+#include "lepp/engines/registry.h"
 #include "lepp/gen.h"
-#include "lepp/reference.h"
 #include "lepp/validate.h"
 
 int main() {
@@ -17,7 +17,7 @@ int main() {
     std::vector<std::string> warnings;
     const lepp::Pslg pslg = lepp::validate(*lepp::gen::anyPslg(), warnings);
     RC_TAG(pslg.source);
-    const lepp::Mesh mesh = lepp::reference::build_cdt(pslg);
+    const lepp::Mesh mesh = lepp::engines::build_cdt(lepp::engines::Engine::Reference, pslg);
     const lepp::certify::Report report = lepp::certify::certify(pslg, mesh);
     if (!report.certified()) RC_FAIL(lepp::certify::format_report(report));
   });

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
 
@@ -173,7 +174,8 @@ void apply_environment(FuzzInput& input) {
       return std::pair<int, int>{dx == 0 && dy == 0 ? 1 : dx, dy};
     });
   }
-  if (const char* m = std::getenv("LEPP_FUZZ_METHOD")) input.method = std::string(m) == "midpoint" ? 1 : 0;
+  if (const char* m = std::getenv("LEPP_FUZZ_METHOD"))
+    input.method = lepp::engines::parse_method(m).value_or(Method::Centroid) == Method::Midpoint ? 1 : 0;
   if (const char* band = std::getenv("LEPP_FUZZ_THETA")) {
     double lo = 10, hi = 36;
     if (std::sscanf(band, "%lf:%lf", &lo, &hi) == 2 && lo <= hi) {
@@ -239,7 +241,7 @@ RefineOptions options_of(const FuzzInput& in) {
   o.method = in.method == 1 ? Method::Midpoint : Method::Centroid;
   o.order = in.order == 1 ? QueueOrder::Lifo : QueueOrder::Fifo;
   // LEPP_FUZZ_ORDER=batch (any order's name) fuzzes one order whatever the input says.
-  if (const char* order = std::getenv("LEPP_FUZZ_ORDER")) parse_queue_order(order, o.order);
+  if (const char* order = std::getenv("LEPP_FUZZ_ORDER")) o.order = lepp::engines::parse_order(order).value_or(o.order);
   return o;
 }
 
@@ -327,8 +329,10 @@ void mutate(FuzzInput& in, std::mt19937& rng) {
 
 std::string describe(const FuzzInput& in) {
   std::string s = fmt::format("method={} theta={} order={} engine={} grid={} scale={} vertices=[",
-                              in.method ? "midpoint" : "centroid", theta_deg(in), in.order ? "lifo" : "fifo",
-                              in.engine ? "reference" : "fast", in.grid, scales()[static_cast<std::size_t>(in.scale)]);
+                              to_string(in.method ? Method::Midpoint : Method::Centroid), theta_deg(in),
+                              to_string(in.order ? QueueOrder::Lifo : QueueOrder::Fifo),
+                              lepp::engines::to_string(in.engine ? lepp::engines::Engine::Reference : lepp::engines::Engine::Fast),
+                              in.grid, scales()[static_cast<std::size_t>(in.scale)]);
   for (const GridPoint& p : in.vertices) s += fmt::format("({},{})", p.x, p.y);
   s += "] segments=[";
   for (const GridSegment& g : in.segments) s += fmt::format("({},{})", g.a, g.b);

@@ -43,7 +43,7 @@ std::string band_label(double theta_deg) {
 
 std::string known_finding_key(const std::string& target, const std::string& finding_class, Method method,
                               double theta_deg) {
-  return target + "-" + finding_class + "-" + (method == Method::Midpoint ? "midpoint" : "centroid") + "-theta" +
+  return target + "-" + finding_class + "-" + to_string(method) + "-theta" +
          band_label(theta_deg);
 }
 

@@ -469,8 +469,6 @@ class Refiner {
 
 }  // namespace
 
-bool available() { return true; }
-
 Mesh build_cdt(const Pslg& pslg) {
   SegmentMembership mem = make_membership(pslg);
   Mesh mesh = build_initial_cdt(pslg, mem, 0, 0).to_mesh(mem);

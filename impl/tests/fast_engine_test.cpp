@@ -45,8 +45,6 @@ bool certified(const Pslg& p, const RefineResult& r, const RefineOptions& o) {
   return certify::certify(p, r.mesh, certify_options(o, r)).certified();
 }
 
-TEST(FastEngine, IsAvailable) { EXPECT_TRUE(fast::available()); }
-
 TEST(FastEngine, InitialCdtHoldsTheInvariants) {
   for (const char* name : {"A", "square400", "circles240", "rect162"}) {
     Pslg p = load(name);

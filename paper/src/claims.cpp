@@ -10,6 +10,7 @@
 
 #include "lepp/paper/measures.h"
 #include "lepp/paper/numbers.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 
@@ -20,10 +21,10 @@ std::string claims_section(const Results& res, const std::vector<double>& angles
   md << "| problem | centroid | midpoint | Triangle | CGAL |\n|---|---:|---:|---:|---:|\n";
   auto show = [](std::optional<double> t) { return t ? fmt::format("{:g}°", *t) : std::string("–"); };
   for (const auto& p : paper_problems())
-    md << fmt::format("| {} | {} | {} | {} | {} |\n", p.name, show(converges_up_to(res, p.key, "centroid", angles)),
-                      show(converges_up_to(res, p.key, "midpoint", angles)),
-                      show(converges_up_to(res, p.key, "triangle", angles)),
-                      show(converges_up_to(res, p.key, "cgal", angles)));
+    md << fmt::format("| {} | {} | {} | {} | {} |\n", p.name, show(converges_up_to(res, p.key, centroid_name(), angles)),
+                      show(converges_up_to(res, p.key, midpoint_name(), angles)),
+                      show(converges_up_to(res, p.key, triangle_name(), angles)),
+                      show(converges_up_to(res, p.key, cgal_name(), angles)));
   md << "\nThe paper: Lepp-centroid works up to 36°, Lepp-midpoint up to 30°, Triangle up to 35° (Sections 5.2, 6).\n\n";
 
   // Fewer points: centroid vs midpoint (all angles), centroid vs Triangle (theta > 25).
@@ -31,14 +32,14 @@ std::string claims_section(const Results& res, const std::vector<double>& angles
   std::vector<std::string> tri_exceptions;
   for (const auto& p : paper_problems())
     for (double theta : angles) {
-      const Run* c = res.find(p.key, "centroid", theta);
+      const Run* c = res.find(p.key, centroid_name(), theta);
       if (!c || !c->finished) continue;
-      const Run* m = res.find(p.key, "midpoint", theta);
+      const Run* m = res.find(p.key, midpoint_name(), theta);
       if (m && m->finished) {
         ++pairs_mid;
         fewer_mid += c->steiner < m->steiner;
       }
-      const Run* t = res.find(p.key, "triangle", theta);
+      const Run* t = res.find(p.key, triangle_name(), theta);
       if (theta > 25 && t) {
         ++pairs_tri;
         // A Triangle run that did not finish counts as more points.
@@ -57,8 +58,8 @@ std::string claims_section(const Results& res, const std::vector<double>& angles
   int better_avg = 0, pairs_avg = 0;
   for (const auto& p : paper_problems())
     for (double theta : angles) {
-      const Run* c = res.find(p.key, "centroid", theta);
-      const Run* m = res.find(p.key, "midpoint", theta);
+      const Run* c = res.find(p.key, centroid_name(), theta);
+      const Run* m = res.find(p.key, midpoint_name(), theta);
       if (!c || !m || !c->finished || !m->finished) continue;
       ++pairs_avg;
       better_avg += c->stats.avg_min_angle_deg > m->stats.avg_min_angle_deg;
@@ -67,7 +68,7 @@ std::string claims_section(const Results& res, const std::vector<double>& angles
                     "than midpoint's in {} of {} pairs.\n", better_avg, pairs_avg);
   double lo = INFINITY, hi = 0;
   for (const Run& r : res.runs())
-    if (r.reading.empty() && (r.method == "centroid" || r.method == "midpoint") && r.finished && r.avg_lepp > 0)
+    if (r.reading.empty() && (r.method == centroid_name() || r.method == midpoint_name()) && r.finished && r.avg_lepp > 0)
       lo = std::min(lo, r.avg_lepp), hi = std::max(hi, r.avg_lepp);
   if (hi > 0)
     md << fmt::format("- *\"the average Lepp size remains between 3 and 5\"*: ours ranges from {:.2f} to {:.2f} triangles per "

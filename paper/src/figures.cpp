@@ -10,6 +10,7 @@
 
 #include "lepp/io.h"
 #include "lepp/render.h"
+#include "mesher_names.h"
 #include "shell_command.h"
 
 namespace fs = std::filesystem;
@@ -23,7 +24,7 @@ bool make_plots(const std::string& root, const std::string& figdir, std::string&
 }
 
 void draw_fig13(const Results& res, const std::string& figdir, const std::function<void(const std::string&)>& note) {
-  for (const std::string method : {"centroid", "triangle"}) {
+  for (const std::string method : {centroid_name(), triangle_name()}) {
     const Run* r = res.find("circles240", method, 32);
     fs::path svg = fs::path(figdir) / fmt::format("fig13_circles240_{}_32.svg", method);
     if (!r || r->stats.triangles == 0) {
@@ -35,7 +36,7 @@ void draw_fig13(const Results& res, const std::string& figdir, const std::functi
     options.highlight_bad = true;
     options.min_angle_deg = 32;
     options.width = 700;
-    options.title = fmt::format("Circles240, {}, 32°", method == "centroid" ? "Lepp-centroid" : "Triangle");
+    options.title = fmt::format("Circles240, {}, 32°", method == centroid_name() ? "Lepp-centroid" : "Triangle");
     try {
       std::string drawing = render::render_svg(read_mesh(r->mesh_prefix), options);
       std::ofstream out(svg);

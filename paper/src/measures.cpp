@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lepp/paper/numbers.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 
@@ -12,7 +13,7 @@ std::optional<Gap> median_relative_gap(const Results& res, const std::string& pr
                                        const std::string& reading) {
   std::vector<double> gaps;
   for (int theta : table_angles()) {
-    const Run* r = res.find(problem, method, theta, "fifo", reading);
+    const Run* r = res.find(problem, method, theta, fifo_name(), reading);
     auto p = paper_number(problem, method, theta);
     if (!r || !p || !r->finished) continue;
     gaps.push_back(std::abs(static_cast<double>(r->steiner - *p)) / *p);

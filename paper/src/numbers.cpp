@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lepp/paper/numbers.h"
 
+#include "mesher_names.h"
+
 namespace lepp::paper {
 
 const std::vector<int>& table_angles() {
@@ -20,12 +22,12 @@ const std::vector<PaperProblem>& paper_problems() {
 
 const std::vector<Fig12Number>& fig12_numbers() {
   static const std::vector<Fig12Number> numbers = {
-      {"midpoint", 10, 230}, {"centroid", 10, 185}, {"midpoint", 25, 668}, {"centroid", 25, 491}};
+      {midpoint_name(), 10, 230}, {centroid_name(), 10, 185}, {midpoint_name(), 25, 668}, {centroid_name(), 25, 491}};
   return numbers;
 }
 
 std::optional<int> paper_number(const std::string& problem, const std::string& method, double theta) {
-  if (problem == "square400" && (method == "midpoint" || method == "centroid"))
+  if (problem == "square400" && (method == midpoint_name() || method == centroid_name()))
     for (const auto& f : fig12_numbers())
       if (f.method == method && f.theta == theta) return f.points;
   const std::vector<int>& angles = table_angles();
@@ -33,7 +35,7 @@ std::optional<int> paper_number(const std::string& problem, const std::string& m
     if (p.key != problem) continue;
     for (std::size_t i = 0; i < angles.size(); ++i) {
       if (angles[i] != theta) continue;
-      int v = method == "centroid" ? p.centroid[i] : method == "triangle" ? p.triangle[i] : -1;
+      int v = method == centroid_name() ? p.centroid[i] : method == triangle_name() ? p.triangle[i] : -1;
       if (v >= 0) return v;
     }
   }

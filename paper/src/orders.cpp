@@ -5,11 +5,10 @@
 #include <ctime>
 #include <filesystem>
 
-#include "lepp/fast.h"
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
 #include "lepp/paper/numbers.h"
 #include "lepp/paper/orders.h"
-#include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "lepp/validate.h"
 
@@ -49,6 +48,8 @@ OrderStudy run_order_study(const OrderStudyOptions& options, const std::function
     if (q != QueueOrder::Random) orders.push_back({q, 0});
   for (int s = 1; s <= o.random_orders; ++s) orders.push_back({QueueOrder::Random, static_cast<std::uint64_t>(s)});
 
+  // Any name but reference (the options say fast) is the fast engine.
+  const engines::Engine engine = engines::parse_engine(o.engine, engines::lepp_engines()).value_or(engines::Engine::Fast);
   for (const std::string& problem : o.problems) {
     std::vector<std::string> warnings;
     const Pslg pslg = validate(read_poly((fs::path(o.root) / "corpus" / "paper" / (problem + ".poly")).string()), warnings);
@@ -57,13 +58,13 @@ OrderStudy run_order_study(const OrderStudyOptions& options, const std::function
         for (const auto& [order, seed] : orders) {
           RefineOptions ro;
           ro.min_angle_deg = theta;
-          ro.method = method == "midpoint" ? Method::Midpoint : Method::Centroid;
+          ro.method = engines::parse_method(method).value();
           ro.order = order;
           ro.order_seed = seed;
           ro.max_steiner = order_budget(problem, theta, o.budget_factor);
           ro.time_limit_seconds = o.time_limit;
           const auto t0 = std::chrono::steady_clock::now();
-          RefineResult res = o.engine == "reference" ? reference::refine(pslg, ro) : fast::refine(pslg, ro);
+          RefineResult res = engines::refine(engine, pslg, ro);
           OrderRun r;
           r.problem = problem, r.method = method, r.order = to_string(order), r.theta = theta, r.seed = seed;
           r.steiner = res.steiner_points, r.budget = ro.max_steiner;

@@ -14,11 +14,19 @@
 
 #include "lepp/paper/numbers.h"
 #include "lepp/paper/orders.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 namespace {
 
-const std::vector<std::string> kNamed = {"fifo", "lifo", "flip", "smallest-angle", "batch"};
+// The named orders: every order but random (whose runs are named by their seed).
+std::vector<std::string> named_orders() {
+  std::vector<std::string> names;
+  for (QueueOrder o : all_queue_orders())
+    if (o != QueueOrder::Random) names.push_back(to_string(o));
+  return names;
+}
+const std::vector<std::string> kNamed = named_orders();
 
 std::string problem_name(const std::string& key) {
   for (const auto& p : paper_problems())
@@ -134,7 +142,7 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
         }
         md << (hi > 0 ? fmt::format(" {} |", percent((hi - lo) / lo)) : std::string(" none converge |"));
         if (failed && some_fails == "–") some_fails = fmt::format("{:g}°", t);
-        const OrderRun* f = cells.named(p, m, t, "fifo");
+        const OrderRun* f = cells.named(p, m, t, fifo_name());
         if (f && !f->converged && fifo_fails == "–") fifo_fails = fmt::format("{:g}°", t);
         if (random_total > 0 && 2 * random_conv < random_total && half == "–") half = fmt::format("{:g}°", t);
       }
@@ -149,7 +157,7 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
   std::vector<std::string> exact;
   for (const std::string& p : {std::string("square400"), std::string("A")})
     if (std::find(o.problems.begin(), o.problems.end(), p) != o.problems.end()) exact.push_back(p);
-  if (!table_in_grid.empty() && !exact.empty() && has_method(o, "centroid")) {
+  if (!table_in_grid.empty() && !exact.empty() && has_method(o, centroid_name())) {
     std::vector<std::string> at_text;
     for (double t : table_in_grid) at_text.push_back(fmt::format("{:g}", t));
     md << fmt::format(
@@ -170,7 +178,7 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
       for (double t : table_in_grid)
         for (const std::string& p : exact) {
           const OrderRun* r = find(p, t);
-          auto paper = paper_number(p, "centroid", t);
+          auto paper = paper_number(p, centroid_name(), t);
           double e = r && r->converged && paper ? std::fabs(double(r->steiner) - *paper) / *paper : INFINITY;
           g.worst = std::max(g.worst, e);
           g.by_angle[t] = std::max(g.by_angle[t], e);
@@ -178,9 +186,9 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
       return g;
     };
     for (const std::string& name : kNamed)
-      gaps.push_back(gap_of([&](const std::string& p, double t) { return cells.named(p, "centroid", t, name); }, name));
+      gaps.push_back(gap_of([&](const std::string& p, double t) { return cells.named(p, centroid_name(), t, name); }, name));
     for (int s = 1; s <= o.random_orders; ++s)
-      gaps.push_back(gap_of([&](const std::string& p, double t) { return cells.seeded(p, "centroid", t, std::uint64_t(s)); },
+      gaps.push_back(gap_of([&](const std::string& p, double t) { return cells.seeded(p, centroid_name(), t, std::uint64_t(s)); },
                             fmt::format("random {}", s)));
     auto show = [&](const Gap& g) {
       md << "| " << g.label << " | " << (std::isinf(g.worst) ? "∞" : percent(g.worst)) << " |";
@@ -289,7 +297,7 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
     for (const std::string& p : o.problems)
       for (double t : o.angles) {
         const OrderRun* r = find(p, t);
-        const OrderRun* f = cells.named(p, m, t, "fifo");
+        const OrderRun* f = cells.named(p, m, t, fifo_name());
         if (!r || !r->converged) continue;
         ++s.converged;
         if (f && f->converged) s.log_ratio += std::log(double(r->steiner) / double(f->steiner)), ++s.both;
@@ -317,10 +325,10 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
   }
   md << "\n";
   for (const std::string& m : o.methods) {
-    const Score& fifo = scores[m]["fifo"];
+    const Score& fifo = scores[m][fifo_name()];
     for (const std::string& name : kNamed) {
       const Score& s = scores[m][name];
-      if (name == "fifo" || s.converged <= fifo.converged || !s.both || std::exp(s.log_ratio / s.both) >= 1) continue;
+      if (name == fifo_name() || s.converged <= fifo.converged || !s.both || std::exp(s.log_ratio / s.both) >= 1) continue;
       md << fmt::format(
           "- Lepp-{}: **{}** converges in more cells than fifo ({} vs {}) with fewer points where both converge "
           "(×{:.3f}). We propose it for Lepp-{} on this evidence; the default stays fifo (users script against "
@@ -337,17 +345,17 @@ std::string order_section(const OrderStudy& study, const std::string& command) {
       md << "Points added (a run that did not converge: the guard that stopped it and the smallest angle it reached); "
             "random: the share of seeds that converged, the median [min, max] of their points, the smallest angle any "
             "seed reached, and the mean of the converged meshes' average smallest angle.\n\n";
-      md << "| θ (°) | budget |" << (m == "centroid" ? " paper |" : "");
+      md << "| θ (°) | budget |" << (m == centroid_name() ? " paper |" : "");
       for (const std::string& name : kNamed) md << " " << name << " |";
-      md << " random: converged | points | smallest ∠ | avg smallest ∠ |\n|---:|---:|" << (m == "centroid" ? "---:|" : "");
+      md << " random: converged | points | smallest ∠ | avg smallest ∠ |\n|---:|---:|" << (m == centroid_name() ? "---:|" : "");
       for (std::size_t i = 0; i < kNamed.size(); ++i) md << "---:|";
       md << "---:|---:|---:|---:|\n";
       for (double t : o.angles) {
         const std::vector<const OrderRun*>& runs = cells.at(p, m, t);
         if (runs.empty()) continue;
         md << fmt::format("| {:g} | {} |", t, runs.front()->budget);
-        if (m == "centroid") {
-          auto paper = paper_number(p, "centroid", t);
+        if (m == centroid_name()) {
+          auto paper = paper_number(p, centroid_name(), t);
           md << " " << (paper ? std::to_string(*paper) : std::string()) << " |";
         }
         for (const std::string& name : kNamed) md << " " << cell(cells.named(p, m, t, name)) << " |";

@@ -13,6 +13,7 @@
 #include "lepp/paper/claims.h"
 #include "lepp/paper/measures.h"
 #include "lepp/paper/numbers.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 
@@ -46,7 +47,7 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
   for (int theta : table_angles()) {
     md << "| " << theta << " |";
     for (const auto& p : paper_problems()) {
-      for (const std::string method : {"centroid", "triangle"}) {
+      for (const std::string method : {centroid_name(), triangle_name()}) {
         const Run* r = res.find(p.key, method, theta);
         auto paper = paper_number(p.key, method, theta);
         md << " " << (r ? points_cell(r) : std::string("–")) << " / " << (paper ? std::to_string(*paper) : "–") << " |";
@@ -66,13 +67,13 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
     md << "| θ (°) | centroid | paper | Δ | min∠ | midpoint | min∠ | Triangle | paper | Δ | min∠ | CGAL | min∠ |\n";
     md << "|---|---:|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|\n";
     for (double theta : angles) {
-      const Run* c = res.find(p.key, "centroid", theta);
-      const Run* m = res.find(p.key, "midpoint", theta);
-      const Run* t = res.find(p.key, "triangle", theta);
-      const Run* g = res.find(p.key, "cgal", theta);
+      const Run* c = res.find(p.key, centroid_name(), theta);
+      const Run* m = res.find(p.key, midpoint_name(), theta);
+      const Run* t = res.find(p.key, triangle_name(), theta);
+      const Run* g = res.find(p.key, cgal_name(), theta);
       if (!c && !m && !t && !g) continue;
-      auto pc = paper_number(p.key, "centroid", theta);
-      auto pt = paper_number(p.key, "triangle", theta);
+      auto pc = paper_number(p.key, centroid_name(), theta);
+      auto pt = paper_number(p.key, triangle_name(), theta);
       auto ang = [](const Run* r) { return r && r->stats.triangles ? fmt::format("{:.2f}", r->stats.min_angle_deg) : std::string(); };
       md << fmt::format("| {:g} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", theta, points_cell(c),
                         pc ? std::to_string(*pc) : "", difference_cell(c, pc), ang(c), points_cell(m), ang(m), points_cell(t),
@@ -94,8 +95,8 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
   md << "| problem | centroid | Triangle |\n|---|---:|---:|\n";
   for (const auto& p : paper_problems()) {
     auto gap = [](std::optional<Gap> g) { return g ? fmt::format("{:.1f}% ({} angles)", 100 * g->median, g->angles) : "–"; };
-    md << fmt::format("| {} | {} | {} |\n", p.name, gap(median_relative_gap(res, p.key, "centroid", "")),
-                      gap(median_relative_gap(res, p.key, "triangle", "")));
+    md << fmt::format("| {} | {} | {} |\n", p.name, gap(median_relative_gap(res, p.key, centroid_name(), "")),
+                      gap(median_relative_gap(res, p.key, triangle_name(), "")));
   }
   md << "\nTriangle's column measures the geometry: Triangle is the same program the paper ran, so where it "
         "matches (Square400, A) our input is the paper's, and where it does not (Circles240, Rectangle162) the "
@@ -115,8 +116,8 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
       if (!any) continue;
       auto row = [&](const std::string& reading, const std::string& label) {
         auto gap = [](std::optional<Gap> g) { return g ? fmt::format("{:.1f}% ({})", 100 * g->median, g->angles) : "–"; };
-        md << fmt::format("| {} | {} | {} | {} |\n", p.name, label, gap(median_relative_gap(res, p.key, "triangle", reading)),
-                          gap(median_relative_gap(res, p.key, "centroid", reading)));
+        md << fmt::format("| {} | {} | {} | {} |\n", p.name, label, gap(median_relative_gap(res, p.key, triangle_name(), reading)),
+                          gap(median_relative_gap(res, p.key, centroid_name(), reading)));
       };
       row("", "corpus/paper (" + p.key + ".poly)");
       for (const auto& rd : readings)
@@ -129,7 +130,7 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
       for (const auto& rd : readings)
         if (rd.problem == p.key) stems.push_back(rd.stem);
       if (stems.size() == 1) continue;
-      for (const std::string method : {"triangle", "centroid"}) {
+      for (const std::string method : {triangle_name(), centroid_name()}) {
         std::string best;
         double best_gap = INFINITY;
         int best_n = 0;
@@ -139,7 +140,7 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
         }
         if (std::isfinite(best_gap))
           md << fmt::format("- {}: closest to the paper's {} column: {} ({:.1f}% over {} angles).\n", p.name,
-                            method == "triangle" ? "Triangle" : "centroid",
+                            method == triangle_name() ? "Triangle" : centroid_name(),
                             best.empty() ? "the corpus reading" : "`" + best + "`", 100 * best_gap, best_n);
       }
     }
@@ -171,10 +172,10 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
   md << "| problem | θ (°) | fifo | lifo | paper |\n|---|---:|---:|---:|---:|\n";
   for (const auto& p : paper_problems())
     for (double theta : {34.0, 35.0, 36.0}) {
-      const Run* f = res.find(p.key, "centroid", theta, "fifo");
-      const Run* l = res.find(p.key, "centroid", theta, "lifo");
+      const Run* f = res.find(p.key, centroid_name(), theta, fifo_name());
+      const Run* l = res.find(p.key, centroid_name(), theta, lifo_name());
       if (!f && !l) continue;
-      auto pc = paper_number(p.key, "centroid", theta);
+      auto pc = paper_number(p.key, centroid_name(), theta);
       md << fmt::format("| {} | {:g} | {} | {} | {} |\n", p.name, theta, points_cell(f), points_cell(l), pc ? std::to_string(*pc) : "");
     }
   md << "\n";

@@ -8,11 +8,11 @@
 #include <fmt/format.h>
 
 #include "cgal_mesher.h"
-#include "lepp/fast.h"
+#include "lepp/engines/registry.h"
 #include "lepp/io.h"
-#include "lepp/reference.h"
 #include "lepp/stats.h"
 #include "triangle_wasm.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 namespace {
@@ -32,20 +32,21 @@ std::vector<int> quality_histogram(const Mesh& mesh) {
 }
 
 RefineResult Runner::refine(const Pslg& pslg, const RefineOptions& options) {
-  bool fast = options_.engine == "fast" || (options_.engine == "auto" && fast::available());
-  engine_ = fast ? "fast" : "reference";
-  return fast ? fast::refine(pslg, options) : reference::refine(pslg, options);
+  // auto: the fast engine.
+  const engines::Engine which = engines::parse_engine(options_.engine, engines::lepp_engines()).value_or(engines::Engine::Fast);
+  engine_ = engines::to_string(which);
+  return engines::refine(which, pslg, options);
 }
 
 Run Runner::lepp_run(const std::string& problem, const std::string& reading, const Pslg& pslg, const std::string& method,
                      double theta, const std::string& order) {
   Run r = start(problem, reading, method, theta);
   r.order = order;
-  if (order != "fifo") r.mesh_prefix += "-" + order;
   RefineOptions o;
   o.min_angle_deg = theta;
-  o.method = method == "midpoint" ? Method::Midpoint : Method::Centroid;
-  o.order = order == "lifo" ? QueueOrder::Lifo : QueueOrder::Fifo;
+  o.method = engines::parse_method(method).value();
+  o.order = engines::parse_order(order).value();
+  if (o.order != QueueOrder::Fifo) r.mesh_prefix += "-" + order;
   o.max_steiner = options_.budget;
   o.time_limit_seconds = options_.time_limit;
   try {
@@ -65,7 +66,7 @@ Run Runner::lepp_run(const std::string& problem, const std::string& reading, con
 }
 
 Run Runner::cgal_run(const std::string& problem, const std::string& reading, const Pslg& pslg, double theta) {
-  Run r = start(problem, reading, "cgal", theta);
+  Run r = start(problem, reading, cgal_name(), theta);
   others::CgalMeshLimits limits;
   limits.max_steiner = options_.budget;
   limits.time_limit_seconds = std::min(options_.time_limit, 20.0);
@@ -80,7 +81,7 @@ Run Runner::cgal_run(const std::string& problem, const std::string& reading, con
 
 Run Runner::triangle_run(const std::string& problem, const std::string& reading, const std::string& poly, const Pslg& pslg,
                          double theta) {
-  Run r = start(problem, reading, "triangle", theta);
+  Run r = start(problem, reading, triangle_name(), theta);
   // -S: Triangle's own Steiner budget, so that a run above its range ends too.
   others::TriangleRun tr = others::run_triangle(options_.root, poly, theta, options_.triangle_budget, r.mesh_prefix);
   r.seconds = tr.seconds;
@@ -117,7 +118,7 @@ Run Runner::start(const std::string& problem, const std::string& reading, const 
 void Runner::finish(Run& r, const Mesh& mesh, const Pslg& pslg) const {
   r.stats = mesh_stats(mesh, pslg);
   r.q_hist = quality_histogram(mesh);
-  if (r.method != "triangle") write_mesh(r.mesh_prefix, mesh);
+  if (r.method != triangle_name()) write_mesh(r.mesh_prefix, mesh);
 }
 
 }  // namespace lepp::paper

@@ -8,6 +8,7 @@
 #include "lepp/paper/numbers.h"
 #include "lepp/paper/runner.h"
 #include "lepp/validate.h"
+#include "mesher_names.h"
 
 namespace fs = std::filesystem;
 
@@ -49,7 +50,7 @@ Study run_study(const Options& options, const StudyEvents& events) {
     note(p.name);
     // Ours: every angle of the list, then higher until a run does not finish;
     // after a run that does not finish, higher angles are not tried.
-    for (const std::string method : {"centroid", "midpoint"}) {
+    for (const std::string method : {centroid_name(), midpoint_name()}) {
       bool failed = false;
       for (double theta = angles.front(); theta <= max_theta && !failed;) {
         Run r = runner.lepp_run(p.key, "", pslg, method, theta);
@@ -61,7 +62,7 @@ Study run_study(const Options& options, const StudyEvents& events) {
       }
     }
     // Queue-order sensitivity at the top of the range.
-    for (double theta : {34.0, 35.0, 36.0}) record(runner.lepp_run(p.key, "", pslg, "centroid", theta, "lifo"));
+    for (double theta : {34.0, 35.0, 36.0}) record(runner.lepp_run(p.key, "", pslg, centroid_name(), theta, lifo_name()));
     if (study.triangle_ran) {
       for (double theta : angles) {
         Run r = runner.triangle_run(p.key, "", poly, pslg, theta);
@@ -84,7 +85,7 @@ Study run_study(const Options& options, const StudyEvents& events) {
     note("reading " + rd.stem);
     for (int theta : table_angles()) {
       if (study.triangle_ran) record(runner.triangle_run(rd.problem, rd.stem, rd.path, pslg, theta));
-      record(runner.lepp_run(rd.problem, rd.stem, pslg, "centroid", theta));
+      record(runner.lepp_run(rd.problem, rd.stem, pslg, centroid_name(), theta));
     }
   }
   study.engine = runner.engine();

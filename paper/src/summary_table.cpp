@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lepp/paper/numbers.h"
+#include "mesher_names.h"
 
 namespace lepp::paper {
 namespace {
@@ -30,7 +31,7 @@ std::string summary_table(const Results& res, const std::vector<double>& angles)
   std::string out = printf_line("%-12s %-9s %5s %9s %7s %10s %s\n", "problem", "method", "theta", "steiner", "paper",
                                 "min_angle", "outcome");
   for (const auto& p : paper_problems())
-    for (const std::string method : {"centroid", "midpoint", "triangle", "cgal"})
+    for (const std::string method : {centroid_name(), midpoint_name(), triangle_name(), cgal_name()})
       for (double theta : angles) {
         const Run* r = res.find(p.key, method, theta);
         if (!r) continue;

@@ -21,9 +21,8 @@
 #include <string>
 
 #include "lepp/certify.h"
-#include "lepp/fast.h"
+#include "lepp/engines/registry.h"
 #include "lepp/gen.h"
-#include "lepp/reference.h"
 #include "lepp/validate.h"
 
 namespace lepp {
@@ -33,14 +32,10 @@ inline void showValue(Method m, std::ostream& os) { os << to_string(m); }
 
 namespace {
 
-enum class Engine { Reference, Fast };
+// lepp's engines by the registry: refine and build_cdt found by argument-dependent lookup.
+using engines::Engine;
 
-const char* name(Engine e) { return e == Engine::Reference ? "reference" : "fast"; }
-
-Mesh build_cdt(Engine e, const Pslg& p) { return e == Engine::Reference ? reference::build_cdt(p) : fast::build_cdt(p); }
-RefineResult refine(Engine e, const Pslg& p, const RefineOptions& o) {
-  return e == Engine::Reference ? reference::refine(p, o) : fast::refine(p, o);
-}
+const char* name(Engine e) { return engines::to_string(e); }
 
 Pslg validated(const Pslg& p) {
   std::vector<std::string> warnings;
@@ -159,19 +154,15 @@ RC_GTEST_PROP(ReferenceEngine, AnyInputEndsWithCertifiedMesh, ()) { any_input_en
 RC_GTEST_PROP(ReferenceEngine, Theorem2OnEveryIntermediateMesh, ()) { every_intermediate_mesh_certifies(Engine::Reference); }
 
 RC_GTEST_PROP(FastEngine, CdtCertifiesAndTheorem2Holds, ()) {
-  RC_PRE(fast::available());
   cdt_certifies(Engine::Fast);
 }
 RC_GTEST_PROP(FastEngine, WellShapedInputConvergesWithinBudgetAndCertifies, ()) {
-  RC_PRE(fast::available());
   converges_within_budget(Engine::Fast);
 }
 RC_GTEST_PROP(FastEngine, AnyInputEndsWithCertifiedMesh, ()) {
-  RC_PRE(fast::available());
   any_input_ends_certified(Engine::Fast);
 }
 RC_GTEST_PROP(FastEngine, Theorem2OnEveryIntermediateMesh, ()) {
-  RC_PRE(fast::available());
   every_intermediate_mesh_certifies(Engine::Fast);
 }
 

@@ -55,7 +55,6 @@ void engine_meshes_certify(bool fast_engine) {
 
 TEST(CertifyPaperMeshes, ReferenceEngine) { engine_meshes_certify(false); }
 TEST(CertifyPaperMeshes, FastEngine) {
-  if (!fast::available()) GTEST_SKIP() << "fast engine not available";
   engine_meshes_certify(true);
 }
 
@@ -72,7 +71,6 @@ TEST(CertifyHostileMeshes, FarFromOriginAt33Degrees) {
   const RefineResult ref = reference::refine(p, o);
   ASSERT_EQ(ref.outcome, Outcome::Converged);
   expect_certified(p, ref.mesh, c, "reference");
-  if (!fast::available()) return;
   const RefineResult fast_result = fast::refine(p, o);
   ASSERT_EQ(fast_result.outcome, Outcome::Converged);
   expect_certified(p, fast_result.mesh, c, "fast");

@@ -15,9 +15,10 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "lepp/audit/audit.h"
-#include "lepp/audit/builtin_engines.h"
 #include "lepp/audit/data_root.h"
 #include "lepp/audit/report.h"
+#include "lepp/engines/builtin_engines.h"
+#include "lepp/engines/registry.h"
 
 namespace lepp::python {
 namespace {
@@ -101,9 +102,10 @@ struct AuditCall {
 
 py::tuple run(py::object engine, const AuditCall& c) {
   audit::AuditOptions o;
-  if (c.method != "centroid" && c.method != "midpoint") throw std::invalid_argument("method: 'centroid' or 'midpoint'");
+  const std::optional<Method> method = engines::parse_method(c.method);
+  if (!method) throw std::invalid_argument("method: " + engines::quoted_choices(engines::method_names()));
   o.engine_name = c.name;
-  o.method = c.method == "midpoint" ? Method::Midpoint : Method::Centroid;
+  o.method = *method;
   o.thetas = c.thetas;
   o.cases = c.cases;
   o.inputs.seed = c.seed;
@@ -117,10 +119,18 @@ py::tuple run(py::object engine, const AuditCall& c) {
     else if (s == "corpus") o.inputs.corpus = true;
     else throw std::invalid_argument("sources: unknown source " + s + " (gen, paper, corpus)");
   }
+  // In process only: lepp's own engines among the comparisons, in their order.
+  std::vector<engines::Engine> comparisons;
+  std::string choices;
+  for (engines::Engine e : engines::comparison_engines())
+    if (engines::is_lepp_engine(e)) {
+      comparisons.push_back(e);
+      choices += (choices.empty() ? "" : ", ") + std::string(engines::to_string(e));
+    }
   for (const std::string& e : c.compare) {
-    if (e == "reference") o.comparisons.push_back({"lepp reference", audit::reference_engine()});
-    else if (e == "fast") o.comparisons.push_back({"lepp fast", audit::fast_engine()});
-    else throw std::invalid_argument("compare: unknown engine " + e + " (reference, fast)");
+    const std::optional<engines::Engine> which = engines::parse_engine(e, comparisons);
+    if (!which) throw std::invalid_argument("compare: unknown engine " + e + " (" + choices + ")");
+    o.comparisons.push_back({engines::comparison_title(*which), engines::lepp_audit_engine(*which)});
   }
   o.timeout_seconds = c.timeout;
   o.checks.angle_tolerance_deg = c.angle_tolerance;

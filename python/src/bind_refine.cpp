@@ -3,6 +3,7 @@
 // the mesh comes back as arrays owning the engine's vectors. A guard stop
 // (Steiner budget, edge floor, time limit) is an outcome, never an exception.
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,11 +12,10 @@
 
 #include "arrays.h"
 #include "bindings.h"
-#include "lepp/fast.h"
+#include "lepp/engines/registry.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/mesh_output.h"
-#include "lepp/reference.h"
 #include "lepp/stats.h"
 
 namespace lepp::python {
@@ -25,7 +25,8 @@ struct RefineCall {
   double min_angle = 30;
   double max_area = 0;
   bool region_areas = false;
-  std::string method = "centroid", order = "fifo", engine = "fast";
+  std::string method = to_string(Method::Centroid), order = to_string(QueueOrder::Fifo),
+              engine = engines::to_string(engines::Engine::Fast);
   std::int64_t max_steiner = -1;
   double edge_floor = -1;
   double time_limit = 0;
@@ -38,18 +39,19 @@ struct RefineCall {
 RefineOptions options_of(const RefineCall& c) {
   if (!(c.min_angle >= 0 && c.min_angle <= 60)) throw std::invalid_argument("min_angle: must be in [0, 60] degrees");
   if (!(c.max_area >= 0) || std::isinf(c.max_area)) throw std::invalid_argument("max_area: must be a positive number (or None)");
-  if (c.method != "centroid" && c.method != "midpoint") throw std::invalid_argument("method: 'centroid' or 'midpoint'");
-  QueueOrder order = QueueOrder::Fifo;
-  if (!parse_queue_order(c.order, order))
-    throw std::invalid_argument("order: 'fifo', 'lifo', 'flip', 'random', 'smallest-angle' or 'batch'");
-  if (c.engine != "fast" && c.engine != "reference") throw std::invalid_argument("engine: 'fast' or 'reference'");
+  const std::optional<Method> method = engines::parse_method(c.method);
+  if (!method) throw std::invalid_argument("method: " + engines::quoted_choices(engines::method_names()));
+  const std::optional<QueueOrder> order = engines::parse_order(c.order);
+  if (!order) throw std::invalid_argument("order: " + engines::quoted_choices(engines::order_names()));
+  if (!engines::parse_engine(c.engine, engines::lepp_engines()))
+    throw std::invalid_argument("engine: " + engines::quoted_choices(engines::names(engines::lepp_engines())));
   if (c.max_steiner < -1) throw std::invalid_argument("max_steiner: must be >= 0 (or None)");
   if (!(c.time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");
   if (c.threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: the machine's cores)");
   RefineOptions o;
   o.min_angle_deg = c.min_angle;
-  o.method = c.method == "midpoint" ? Method::Midpoint : Method::Centroid;
-  o.order = order;
+  o.method = *method;
+  o.order = *order;
   o.order_seed = c.order_seed;  // the random order's seed, as lepp refine --order-seed
   o.threads = c.threads;        // the batch order's threads, as lepp refine --threads
   o.max_steiner = c.max_steiner;
@@ -78,12 +80,7 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
   {
     py::gil_scoped_release release;
     input = validate(raw, domain, warnings);
-    if (call.engine == "fast") {
-      if (!fast::available()) throw std::runtime_error("the fast engine is not implemented yet; use engine='reference'");
-      result = fast::refine(input, options);
-    } else {
-      result = reference::refine(input, options);
-    }
+    result = engines::refine(*engines::parse_engine(call.engine, engines::lepp_engines()), input, options);
     stats = mesh_stats(result.mesh, input);
     // Markers and regions, and the segment ids as lepp refine writes them.
     labels = label_refined_mesh(result.mesh, input, domain);
@@ -164,7 +161,8 @@ void bind_refine(py::module_& m) {
                                     time_limit, convex_hull, split_crossings, trace, order_seed, threads});
       },
       py::arg("pslg"), py::arg("min_angle") = 30.0, py::arg("max_area") = 0.0, py::arg("region_areas") = false,
-      py::arg("method") = "centroid", py::arg("order") = "fifo", py::arg("engine") = "fast", py::arg("max_steiner") = -1,
+      py::arg("method") = to_string(Method::Centroid), py::arg("order") = to_string(QueueOrder::Fifo),
+      py::arg("engine") = engines::to_string(engines::Engine::Fast), py::arg("max_steiner") = -1,
       py::arg("edge_floor") = -1.0, py::arg("time_limit") = 0.0, py::arg("convex_hull") = false,
       py::arg("split_crossings") = false, py::arg("trace") = false, py::arg("order_seed") = 0, py::arg("threads") = 0,
       "Validate and refine a PSLG dict; a dict of the mesh arrays, statistics and outcome.");

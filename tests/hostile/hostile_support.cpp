@@ -3,11 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <stdexcept>
-
-#include "lepp/fast.h"
-#include "lepp/reference.h"
+#include "lepp/engines/registry.h"
 #ifdef LEPP_HAVE_CERTIFY
 #include "lepp/certify.h"
 #endif
@@ -18,16 +14,8 @@ bool finished(Outcome outcome) { return outcome == Outcome::Converged || outcome
 
 std::vector<EngineRun> run_engines(const Pslg& validated, const RefineOptions& options, bool reference) {
   std::vector<EngineRun> runs;
-  auto attempt = [&](const char* name, auto&& refine) {
-    try {
-      runs.push_back({name, refine(validated, options)});
-    } catch (const std::logic_error& e) {
-      if (std::string(e.what()).find("not implemented") == std::string::npos) throw;
-      std::printf("[ note     ] the %s engine is not implemented yet: not run\n", name);
-    }
-  };
-  if (reference) attempt("reference", [](const Pslg& p, const RefineOptions& o) { return lepp::reference::refine(p, o); });
-  if (lepp::fast::available()) attempt("fast", [](const Pslg& p, const RefineOptions& o) { return lepp::fast::refine(p, o); });
+  for (engines::Engine e : engines::lepp_engines())
+    if (reference || e != engines::Engine::Reference) runs.push_back({engines::to_string(e), engines::refine(e, validated, options)});
   return runs;
 }
 

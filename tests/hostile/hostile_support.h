@@ -15,13 +15,12 @@ namespace lepp::hostile {
 enum class Expect { Converge, AnyOutcome };
 
 struct EngineRun {
-  std::string engine;  // "reference" or "fast"
+  std::string engine;  // the registry's name
   RefineResult result;
 };
 
-// Refines with every engine available (the reference always; fast when
-// lepp::fast::available()), each with `options`. An engine that is still a
-// placeholder (throws "not implemented") is left out; the list may be empty.
+// Refines with each of lepp's engines in the registry (the reference only when
+// `reference`), each with `options`.
 std::vector<EngineRun> run_engines(const Pslg& validated, const RefineOptions& options, bool reference = true);
 
 // Certifies a result: a valid CDT of the domain always, and the angle bound

@@ -127,6 +127,9 @@ const char* to_string(Outcome outcome);
 const char* to_string(Rule rule);
 const char* to_string(Method method);
 const char* to_string(QueueOrder order);
+// Both methods, centroid first, and the one named (centroid, midpoint); false for an unknown name.
+const std::vector<Method>& all_methods();
+bool parse_method(const std::string& name, Method& method);
 // Every order, the default first, and the one named (fifo, lifo, flip, random, smallest-angle);
 // false for an unknown name.
 const std::vector<QueueOrder>& all_queue_orders();

@@ -14,7 +14,4 @@ Mesh build_cdt(const Pslg& pslg);
 // Builds the CDT and refines it as docs/ALGORITHM.md says.
 RefineResult refine(const Pslg& pslg, const RefineOptions& options);
 
-// False until the engine is implemented; the CLI says so instead of running it.
-bool available();
-
 }  // namespace lepp::fast

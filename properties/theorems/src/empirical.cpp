@@ -10,8 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "lepp/fast.h"
-#include "lepp/reference.h"
+#include "lepp/engines/registry.h"
 #include "lepp/refine.h"
 #include "lepp/stats.h"
 #include "lepp/validate.h"
@@ -74,6 +73,9 @@ Pslg paper_class_pslg(int i) {
   return validate(g, warnings);
 }
 
+// The engine of the statistics rows, named in their text.
+constexpr engines::Engine kEngine = engines::Engine::Fast;
+
 struct Run {
   bool ok = false;  // converged (or only unimprovable triangles left)
   std::int64_t steiner = 0;
@@ -85,7 +87,7 @@ Run refine_with(const Pslg& g, Method m, double theta) {
   o.method = m;
   o.max_steiner = 20000;
   o.time_limit_seconds = 20;
-  RefineResult r = fast::available() ? fast::refine(g, o) : reference::refine(g, o);
+  RefineResult r = engines::refine(kEngine, g, o);
   Run run;
   run.ok = r.outcome == Outcome::Converged || r.outcome == Outcome::Unimprovable;
   run.steiner = r.steiner_points;
@@ -129,7 +131,7 @@ std::string centroid_vs_midpoint(Claim claim, int inputs, bool* holds) {
                                        "method in {}",
                                        stopped_c, stopped_m)
                          : "",
-                     fast::available() ? "fast" : "reference");
+                     engines::to_string(kEngine));
 }
 
 std::string centroid_converges(double theta, int inputs, bool* holds) {
@@ -142,7 +144,7 @@ std::string centroid_converges(double theta, int inputs, bool* holds) {
   }
   *holds = ok == inputs;
   return fmt::format("converged on {}/{} inputs at theta = {} (at most {} Steiner points); engine {}", ok, inputs, theta,
-                     most, fast::available() ? "fast" : "reference");
+                     most, engines::to_string(kEngine));
 }
 
 Statement statistic_row(std::string where, std::string suite, std::string name, std::string interpretation,

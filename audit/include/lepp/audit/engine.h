@@ -2,8 +2,9 @@
 // The engine under audit, seen from the audit: a callable from a validated
 // PSLG and a request (method, theta, limits, a directory to work in) to what
 // came out (a mesh, an optional trace, how the run ended). The command adapter
-// (command_engine.h), lepp's own engines and the peers (builtin_engines.h)
-// all have this shape, and so can any C++ engine (examples/audit_engine).
+// and lepp's own engines (engines/: lepp/engines/command_engine.h, builtin_engines.h)
+// and the peers (peer_engines.h) all have this shape, and so can any C++ engine
+// (examples/audit_engine).
 #pragma once
 #include <cstddef>
 #include <cstdint>

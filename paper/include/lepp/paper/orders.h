@@ -12,13 +12,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lepp/engines/registry.h"
+
 namespace lepp::paper {
 
 struct OrderStudyOptions {
   std::string root = ".";              // the source tree (corpus/paper)
-  std::string engine = "fast";         // fast or reference
+  std::string engine = engines::to_string(engines::Engine::Fast);  // fast or reference
   std::vector<std::string> problems;   // corpus keys; empty: the paper's four
-  std::vector<std::string> methods = {"centroid", "midpoint"};
+  std::vector<std::string> methods = engines::method_names();
   std::vector<double> angles;          // empty: 28, 29, ..., 38
   int random_orders = 100;             // seeds 1..N of the random order
   double budget_factor = 20;           // budget = factor x the paper's count (order_budget)

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lepp/refine.h"
 #include "lepp/stats.h"
 
 namespace lepp::paper {
@@ -20,7 +21,7 @@ struct Run {
   std::string problem;   // corpus key, or reading name
   std::string reading;   // "" for the corpus file, else the reading's file stem
   std::string method;    // centroid, midpoint, triangle, cgal
-  std::string order = "fifo";
+  std::string order = to_string(QueueOrder::Fifo);
   double theta = 0;
   std::int64_t steiner = 0;
   bool finished = false;
@@ -43,8 +44,8 @@ class Results {
   void add(const Run& r) { runs_.push_back(r); }
   const std::vector<Run>& runs() const { return runs_; }
   // The first run with these keys, or nullptr.
-  const Run* find(const std::string& problem, const std::string& method, double theta, const std::string& order = "fifo",
-                  const std::string& reading = "") const;
+  const Run* find(const std::string& problem, const std::string& method, double theta,
+                  const std::string& order = to_string(QueueOrder::Fifo), const std::string& reading = "") const;
 
  private:
   std::vector<Run> runs_;

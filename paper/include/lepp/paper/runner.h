@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lepp/engines/registry.h"
 #include "lepp/mesh.h"
 #include "lepp/paper/options.h"
 #include "lepp/paper/run.h"
@@ -22,15 +23,15 @@ class Runner {
   // Keeps a reference to `options`: it must outlive the runner.
   explicit Runner(const Options& options) : options_(options) {}
 
-  // The engine the study uses: fast when it exists, else the exact reference.
+  // The engine the options name (auto: fast), by the registry (lepp/engines/registry.h).
   RefineResult refine(const Pslg& pslg, const RefineOptions& options);
-  // The engine of the last refine ("reference" before any).
+  // The engine of the last refine (the reference before any).
   const std::string& engine() const { return engine_; }
 
-  // method: centroid or midpoint; order: fifo or lifo. An engine's exception
+  // method: centroid or midpoint; order: a processing order's name. An engine's exception
   // becomes the outcome "engine error: ...".
   Run lepp_run(const std::string& problem, const std::string& reading, const Pslg& pslg, const std::string& method,
-               double theta, const std::string& order = "fifo");
+               double theta, const std::string& order = to_string(QueueOrder::Fifo));
   Run cgal_run(const std::string& problem, const std::string& reading, const Pslg& pslg, double theta);
   // poly: the file Triangle reads (the same input as pslg).
   Run triangle_run(const std::string& problem, const std::string& reading, const std::string& poly, const Pslg& pslg,
@@ -44,7 +45,7 @@ class Runner {
   void finish(Run& r, const Mesh& mesh, const Pslg& pslg) const;
 
   const Options& options_;
-  std::string engine_ = "reference";
+  std::string engine_ = engines::to_string(engines::Engine::Reference);
 };
 
 }  // namespace lepp::paper

@@ -1,12 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // lepp's own engines as audit engines, in process, with their trace points:
-// fast (lepp::fast) and reference (lepp::reference). The timeout becomes the
+// fast (lepp::fast) and reference (lepp::reference), chosen in the registry. The timeout becomes the
 // engine's wall-clock limit; a run stopped by a guard (Steiner budget, edge
 // floor, time limit) is RunStatus::Stopped (TimedOut for the time limit).
 #pragma once
 #include <string>
 
 #include "lepp/audit/engine.h"
+#include "lepp/engines/registry.h"
+
+namespace lepp::engines {
+
+// lepp's engine WHICH (fast or reference: is_lepp_engine) as an audit engine.
+audit::Engine lepp_audit_engine(Engine which, QueueOrder order = QueueOrder::Fifo);
+
+}  // namespace lepp::engines
 
 namespace lepp::audit {
 
@@ -14,7 +22,7 @@ Engine fast_engine(QueueOrder order = QueueOrder::Fifo);
 Engine reference_engine(QueueOrder order = QueueOrder::Fifo);
 
 // Adapts any function with lepp's refine signature (for C++ engines built on lepp's types).
-using RefineFunction = RefineResult (*)(const Pslg&, const RefineOptions&);
+using RefineFunction = engines::RefineFunction;
 Engine refine_engine(RefineFunction refine, QueueOrder order = QueueOrder::Fifo);
 
 // The reference engine's mesh for the points comparison (`--compare reference`),

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "lepp/audit/command_engine.h"
+// The --cmd template adapter: any program, run by /bin/sh once per case, as an audit engine.
+#include "lepp/engines/command_engine.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/subprocess.h"
+#include "lepp/audit/theta_text.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"
 
@@ -86,8 +88,6 @@ std::string last_line(const std::string& text) {
 }
 
 }  // namespace
-
-std::string theta_text(double theta) { return fmt::format("{}", theta); }
 
 void check_command_template(const std::string& t) {
   bool has_in = false, has_out = false;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lepp/audit/engine.h"
+#include "lepp/audit/theta_text.h"  // {theta}
 
 namespace lepp::audit {
 
@@ -38,8 +39,5 @@ Engine command_engine(const std::string& command_template);
 bool write_engine_input(const Pslg& pslg, const EngineRequest& request, std::string& in, std::string& out,
                         EngineRun& failed);
 EngineRun run_command(const std::string& shell_command, const std::string& out, const EngineRequest& request);
-
-// theta as the command sees it: shortest form that reads back the same ("30", "22.5").
-std::string theta_text(double theta);
 
 }  // namespace lepp::audit

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "lepp/audit/peer_engines.h"
+// Triangle (triangle-wasm under node) and CGAL's mesher as audit engines.
+#include "lepp/engines/peer_engines.h"
 
 #include <chrono>
 #include <exception>
@@ -10,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "cgal_mesher.h"
-#include "lepp/audit/command_engine.h"
+#include "lepp/engines/command_engine.h"
 #include "lepp/audit/isolated_engine.h"
 #include "lepp/io.h"
 #include "triangle_wasm.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The peers as audit engines: Shewchuk's Triangle (the triangle-wasm build under
 // node, tools/triangle) and CGAL's quality mesher (engines/others/cgal_mesher.h). Part of
-// the lepp_audit_peers library (not in the find_package package: it needs the
+// the lepp_peer_engines library (not in the find_package package: it needs the
 // source tree for Triangle).
 #pragma once
 #include <cstdint>

@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "lepp/audit/builtin_engines.h"
+// lepp's engines as audit engines: options in, mesh, trace and status out.
+#include "lepp/engines/builtin_engines.h"
 
 #include <chrono>
 #include <exception>
 
-#include "lepp/fast.h"
-#include "lepp/reference.h"
+namespace lepp::engines {
+
+audit::Engine lepp_audit_engine(Engine which, QueueOrder order) { return audit::refine_engine(refine_function(which), order); }
+
+}  // namespace lepp::engines
 
 namespace lepp::audit {
 
@@ -58,7 +62,7 @@ Engine reference_points_engine() {
     o.time_limit_seconds = req.timeout_seconds > 0 ? req.timeout_seconds : 0;
     const auto t0 = std::chrono::steady_clock::now();
     try {
-      RefineResult r = fast::refine(pslg, o);
+      RefineResult r = engines::refine(engines::Engine::Fast, pslg, o);
       if (r.cocircular_ties == 0 && (r.outcome == Outcome::Converged || r.outcome == Outcome::Unimprovable)) {
         EngineRun run;
         run.mesh = std::move(r.mesh);
@@ -74,7 +78,7 @@ Engine reference_points_engine() {
   };
 }
 
-Engine fast_engine(QueueOrder order) { return refine_engine(&fast::refine, order); }
-Engine reference_engine(QueueOrder order) { return refine_engine(&reference::refine, order); }
+Engine fast_engine(QueueOrder order) { return engines::lepp_audit_engine(engines::Engine::Fast, order); }
+Engine reference_engine(QueueOrder order) { return engines::lepp_audit_engine(engines::Engine::Reference, order); }
 
 }  // namespace lepp::audit
