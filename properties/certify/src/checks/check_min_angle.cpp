@@ -11,6 +11,7 @@
 #include "../small_input_angles_internal.h"
 #include "lepp/angle.h"
 #include "lepp/certify/checks.h"
+#include "lepp/stats.h"
 #include "small_angle_exemption.h"
 
 namespace lepp::certify {

@@ -2,7 +2,7 @@
 // The Theorem 2 check on the built index: no angle over 120 degrees at an unconstrained terminal edge.
 #include "../exact.h"
 #include "../passes.h"
-#include "lepp/angle.h"
+#include "lepp/stats.h"
 #include "lepp/certify/checks.h"
 
 namespace lepp::certify {
