@@ -66,7 +66,6 @@ void check_listed_constrained_edges(Certification& cert) {
     }
 }
 
-
 void constraints(Certification& cert) {
   check_split_points(cert);
   check_listed_constrained_edges(cert);

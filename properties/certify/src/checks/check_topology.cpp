@@ -11,6 +11,7 @@
 namespace lepp::certify {
 namespace pass {
 
+// A Steiner vertex in no triangle (input vertices are the input check's).
 void check_unused_vertices(Certification& cert) {
   const MeshIndex& ix = cert.index;
   for (std::size_t v = 0; v < ix.mesh.vertices.size(); ++v) {
@@ -22,7 +23,6 @@ void check_unused_vertices(Certification& cert) {
               {static_cast<int>(v)}, {}, -1});
   }
 }
-
 
 // Coverage: with every triangle CCW and every interior edge used once each way,
 // the number of triangles over a point is the winding number of the mesh's

@@ -43,5 +43,4 @@ inline int ahead(const Point& a, const Point& b, const Point& p, const Point& q)
   });
 }
 
-
 }  // namespace lepp::certify

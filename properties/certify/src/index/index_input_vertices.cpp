@@ -77,5 +77,4 @@ void index_input_vertices(Certification& cert) {
               fmt::format("the mesh claims {} input vertices, the input has {}", ix.mesh.input_vertices, n), {}, {}, {}, {}, -1});
 }
 
-
 }  // namespace lepp::certify::pass
