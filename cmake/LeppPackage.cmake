@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Install and export lepp as a CMake package: find_package(lepp) gives
 # lepp::core (data model, formats, validation), lepp::version (lepp/version.h), lepp::certify (the exact
-# certifier), lepp::render (SVG drawings), lepp::gen (RapidCheck generators, when RapidCheck was found),
+# certifier), lepp::certify_report (its JSON and SVG reports), lepp::render (SVG drawings),
+# lepp::gen (RapidCheck generators, when RapidCheck was found),
 # lepp::reference and lepp::impl (the two engines), lepp::engines (every engine by name, lepp/engines/registry.h),
 # lepp::audit (`lepp audit` as a library: the engine interface, the rows; with RapidCheck) and lepp::audit_engines
 # (lepp's engines and the command adapter as audit engines; with lepp::audit). examples/outside_project uses it;
@@ -12,7 +13,7 @@ include(CMakePackageConfigHelpers)
 set_target_properties(lepp_core PROPERTIES EXPORT_NAME core)
 set_target_properties(lepp_reference PROPERTIES EXPORT_NAME reference)
 set_target_properties(lepp_impl PROPERTIES EXPORT_NAME impl)
-set(LEPP_EXPORTED_TARGETS lepp_core lepp_version lepp_certify lepp_render lepp_reference lepp_impl lepp_engines)
+set(LEPP_EXPORTED_TARGETS lepp_core lepp_version lepp_certify lepp_certify_report lepp_render lepp_reference lepp_impl lepp_engines)
 set(LEPP_EXPORT_GEN OFF)
 if(TARGET lepp_gen)
   list(APPEND LEPP_EXPORTED_TARGETS lepp_gen)
@@ -29,6 +30,7 @@ install(TARGETS ${LEPP_EXPORTED_TARGETS} EXPORT leppTargets
 install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/core/include/lepp
     ${PROJECT_SOURCE_DIR}/properties/certify/include/lepp
+    ${PROJECT_SOURCE_DIR}/properties/certify/report/include/lepp
     ${PROJECT_SOURCE_DIR}/render/include/lepp
     ${PROJECT_SOURCE_DIR}/reference/include/lepp
     ${PROJECT_SOURCE_DIR}/impl/include/lepp

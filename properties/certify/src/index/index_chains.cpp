@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The mesh index's segment layer: vertex adjacency, and each input segment's chain of mesh edges.
+#include <algorithm>
+#include <utility>
+
+#include "../passes.h"
+#include "chain_predicates.h"
+#include "segment_walk.h"
+
+namespace lepp::certify::pass {
+namespace {
+
+void build_adjacency(MeshIndex& ix) {
+  ix.adj_begin.assign(ix.mesh.vertices.size() + 1, 0);
+  for (const auto& e : ix.edges) {
+    ++ix.adj_begin[static_cast<std::size_t>(e[0]) + 1];
+    ++ix.adj_begin[static_cast<std::size_t>(e[1]) + 1];
+  }
+  for (std::size_t i = 1; i < ix.adj_begin.size(); ++i) ix.adj_begin[i] += ix.adj_begin[i - 1];
+  ix.adj.assign(static_cast<std::size_t>(ix.adj_begin.back()), 0);
+  std::vector<int> fill(ix.adj_begin.begin(), ix.adj_begin.end() - 1);
+  for (const auto& e : ix.edges) {
+    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = e[1];
+    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = e[0];
+  }
+  for (const ConstrainedEdge& e : ix.mesh.constrained_edges) ix.listed[edge_key(e.a, e.b)] = e.segment;
+}
+
+}  // namespace
+
+// Each segment's chain of mesh edges (segment_walk.h), its edges and its Steiner vertices.
+void index_chains(Certification& cert) {
+  MeshIndex& ix = cert.index;
+  build_adjacency(ix);
+  ix.chains.assign(ix.pslg.segments.size(), {});
+  ix.vertex_segment.assign(ix.mesh.vertices.size(), -1);
+  ix.constrained_half.assign(ix.mesh.triangles.size() * 3, 0);
+  for (std::size_t s = 0; s < ix.pslg.segments.size(); ++s) {
+    const int a = ix.input_to_mesh[static_cast<std::size_t>(ix.pslg.segments[s].a)];
+    const int b = ix.input_to_mesh[static_cast<std::size_t>(ix.pslg.segments[s].b)];
+    const bool in_domain = ix.domain.segment_sides[s] != 0;
+    if (a < 0 || b < 0 || !ix.used[static_cast<std::size_t>(a)] || !ix.used[static_cast<std::size_t>(b)]) {
+      if (in_domain)
+        cert.add({Reason::SegmentMissing, fmt::format("segment {} ({}-{}): an endpoint is not in the mesh", s, ix.pslg.segments[s].a, ix.pslg.segments[s].b),
+                  {}, {}, {}, {}, static_cast<int>(s)});
+      continue;
+    }
+    std::vector<int> chain = walk(ix, a, b);
+    if (chain.front() == -1) {
+      const int stuck = chain.back();
+      if (in_domain)
+        cert.add({Reason::SegmentMissing,
+                  fmt::format("segment {} {}-{} {} {} is not a chain of mesh edges: no edge continues it from vertex {} {}", s, a, b,
+                              pt(ix.P(a)), pt(ix.P(b)), stuck, pt(ix.P(stuck))),
+                  {}, {}, {a, b, stuck}, {}, static_cast<int>(s)});
+      continue;
+    }
+    const std::size_t interior = chain.size() - 2;
+    const double tol = segment_tolerance(ix.P(a), ix.P(b), interior);
+    for (std::size_t k = 1; k + 1 < chain.size(); ++k) {
+      const int v = chain[k];
+      if (!within(ix.P(a), ix.P(b), ix.P(v), tol))
+        cert.add({Reason::SteinerOffSegment,
+                  fmt::format("vertex {} {} of segment {} {}-{} {} {} is off the segment by more than the tolerance {} per coordinate", v,
+                              pt(ix.P(v)), s, a, b, pt(ix.P(a)), pt(ix.P(b)), tol),
+                  {}, {}, {v, a, b}, {}, static_cast<int>(s)});
+      ix.vertex_segment[static_cast<std::size_t>(v)] = static_cast<int>(s);  // a Steiner point: the walk takes no input vertex
+    }
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) ix.chain_edge[edge_key(chain[k], chain[k + 1])] = static_cast<int>(s);
+    ix.chains[s] = std::move(chain);
+  }
+  for (std::size_t h = 0; h < ix.constrained_half.size(); ++h)
+    if (ix.tri_ok[h / 3] && ix.chain_edge.count(edge_key(ix.from(static_cast<int>(h)), ix.to(static_cast<int>(h))))) ix.constrained_half[h] = 1;
+  cert.report.stats.constrained_edges = ix.chain_edge.size();
+  // Sorted: the checks and reports that scan them do not depend on the hash's order.
+  std::vector<std::pair<std::uint64_t, int>> keyed(ix.chain_edge.begin(), ix.chain_edge.end());
+  std::sort(keyed.begin(), keyed.end());
+  for (const auto& [key, seg] : keyed) {
+    const std::array<int, 2> e = edge_ends(key);
+    ix.chain_edges.push_back(e);
+    ix.chain_edge_segment.push_back(seg);
+    ix.chain_segments.segments.push_back({ix.P(e[0]), ix.P(e[1])});
+  }
+}
+
+}  // namespace lepp::certify::pass

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The mesh index's input layer: the expected domain, and which mesh vertex each input vertex is.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "../passes.h"
+
+namespace lepp::certify::pass {
+namespace {
+
+// A crossing point another mesher rounded otherwise: the mesh vertex nearest
+// to ours, if within 2^-40 of it (relative). Only a candidate: check_split_points
+// then holds it to the chain tolerance of both segments. Linear: crossing
+// points missing exactly are few.
+int nearest_mesh_vertex(const MeshIndex& ix, const Point& p) {
+  const double radius = std::ldexp(std::max({1.0, std::abs(p.x), std::abs(p.y)}), -40);
+  int best = -1;
+  double best_d = radius;
+  for (std::size_t v = 0; v < ix.mesh.vertices.size(); ++v) {
+    const double d = std::max(std::abs(ix.mesh.vertices[v].x - p.x), std::abs(ix.mesh.vertices[v].y - p.y));
+    if (d <= best_d) best = static_cast<int>(v), best_d = d;
+  }
+  return best;
+}
+
+}  // namespace
+
+// The expected domain, and the input outside it: vertices on no domain triangle,
+// segments with the domain on neither side (the precision exemption's sliver clause).
+void index_domain(Certification& cert) {
+  MeshIndex& ix = cert.index;
+  ix.domain = expected_domain(ix.pslg);
+  for (std::size_t i = 0; i < ix.pslg.vertices.size(); ++i)
+    if (!ix.domain.vertex_in_domain[i]) ix.outside.vertices.push_back(ix.pslg.vertices[i]);
+  for (std::size_t s = 0; s < ix.pslg.segments.size(); ++s)
+    if (ix.domain.segment_sides[s] == 0)
+      ix.outside.segments.push_back({ix.pslg.vertices[static_cast<std::size_t>(ix.pslg.segments[s].a)],
+                                   ix.pslg.vertices[static_cast<std::size_t>(ix.pslg.segments[s].b)]});
+}
+
+void index_input_vertices(Certification& cert) {
+  MeshIndex& ix = cert.index;
+  const std::size_t n = ix.pslg.vertices.size();
+  ix.input_to_mesh.assign(n, -1);
+  ix.mesh_to_input.assign(ix.mesh.vertices.size(), -1);
+  std::unordered_map<Point, int, PointHash> where;
+  where.reserve(ix.mesh.vertices.size() * 2);
+  for (std::size_t i = ix.mesh.vertices.size(); i-- > 0;)
+    if (!ix.merged[i]) where[ix.mesh.vertices[i]] = static_cast<int>(i);  // the first copy not merged away
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& p = ix.pslg.vertices[i];
+    if (i < ix.mesh.input_vertices) {
+      // The mesh promises vertex i is input vertex i: coordinates must be bit-identical.
+      if (i >= ix.mesh.vertices.size() || ix.mesh.vertices[i] != p) {
+        cert.add({Reason::InputVertexMoved,
+                  fmt::format("input vertex {} {} is mesh vertex {} at {}", i, pt(p), i,
+                              i < ix.mesh.vertices.size() ? pt(ix.mesh.vertices[i]) : std::string("(absent)")),
+                  {}, {}, {static_cast<int>(i)}, {p}, -1});
+      }
+      if (i < ix.mesh.vertices.size()) ix.input_to_mesh[i] = static_cast<int>(i);
+    } else {
+      auto it = where.find(p);
+      if (it != where.end()) ix.input_to_mesh[i] = it->second;
+      else if (i + ix.pslg.crossing_vertices >= n) ix.input_to_mesh[i] = nearest_mesh_vertex(ix, p);
+    }
+    const int m = ix.input_to_mesh[i];
+    if (m >= 0) ix.mesh_to_input[static_cast<std::size_t>(m)] = static_cast<int>(i);
+    const bool moved = m >= 0 && ix.mesh.vertices[static_cast<std::size_t>(m)] != p;
+    const bool present = m >= 0 && ix.used[static_cast<std::size_t>(m)];
+    if (!present && (!moved || i + ix.pslg.crossing_vertices >= n) && ix.domain.vertex_in_domain[i])
+      cert.add({Reason::InputVertexMissing, fmt::format("input vertex {} {} (in the domain) is not a vertex of any triangle", i, pt(p)),
+                {}, {}, {static_cast<int>(i)}, {p}, -1});
+  }
+  if (ix.mesh.input_vertices > n)
+    cert.add({Reason::InputVertexMoved,
+              fmt::format("the mesh claims {} input vertices, the input has {}", ix.mesh.input_vertices, n), {}, {}, {}, {}, -1});
+}
+
+}  // namespace lepp::certify::pass
