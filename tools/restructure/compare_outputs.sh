@@ -15,17 +15,19 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 rm -rf "$work" && mkdir -p "$work/old" "$work/new"
 work=$(realpath "$work")
 
-# Timings, the version's commit, paths of the two work folders and RapidCheck's own
+# Timings, the version's commit, paths of the two work folders, the program's own path
+# (help's Usage line), the source tree a build finds its corpus in, and RapidCheck's own
 # seed of an unseeded run (`lepp theorems` prints it) are masked.
-mask() {
-  sed -E -e 's#'"$work"'/(old|new)#WORK#g' \
-    -e 's/("[a-z_]*(seconds|_s|_ms|time)[a-z_]*"[[:space:]]*:[[:space:]]*)[0-9.eE+-]+/\1T/g' \
-    -e 's/[0-9]+(\.[0-9]+)?( ?)(s|ms|seconds)\b/T\2\3/g' \
-    -e 's/(commit|git)[ :]+[0-9a-f]{7,40}(-dirty)?/\1 C/g' \
-    -e 's/time="[0-9.]+"/time="T"/g' \
-    -e 's/^((seconds|time)[[:space:]]+)[0-9.]+/\1T/' \
-    -e 's/Using configuration: seed=[0-9]+/Using configuration: seed=S/'
-}
+masks=(-e "s#$work/(old|new)#WORK#g"
+  -e 's/("[a-z_]*(seconds|_s|_ms|time)[a-z_]*"[[:space:]]*:[[:space:]]*)[0-9.eE+-]+/\1T/g'
+  -e 's/[0-9]+(\.[0-9]+)?( ?)(s|ms|seconds)\b/T\2\3/g'
+  -e 's/(commit|git)[ :]+[0-9a-f]{7,40}(-dirty)?/\1 C/g'
+  -e 's/time="[0-9.]+"/time="T"/g'
+  -e 's/^((seconds|time)[[:space:]]+)[0-9.]+/\1T/'
+  -e 's/^Usage: [^ ]+/Usage: lepp/'
+  -e 's#/[^ "()]*/corpus/#ROOT/corpus/#g'
+  -e 's/Using configuration: seed=[0-9]+/Using configuration: seed=S/')
+mask() { sed -E "${masks[@]}"; }
 # run NAME CMD...: runs CMD with {lepp} replaced by each build, in WORK/SIDE/NAME/.
 n=0
 run() {
@@ -39,8 +41,8 @@ run() {
     (cd "$dir" && "${args[@]}" > stdout.raw 2> stderr.raw; echo $? > status)
     for f in stdout stderr; do mask < "$dir/$f.raw" > "$dir/$f"; rm "$dir/$f.raw"; done
     # files written: JSON and text masked in place, binary compared as is
-    find "$dir" -type f \( -name '*.json' -o -name '*.md' -o -name '*.xml' -o -name '*.sh' -o -name '*.txt' \) \
-      -exec sh -c 'for f; do sed -E -i -e "s#'"$work"'/(old|new)#WORK#g" -e "s/(\"[a-z_]*(seconds|_s|_ms|time)[a-z_]*\"[[:space:]]*:[[:space:]]*)[0-9.eE+-]+/\1T/g" -e "s/[0-9]+(\.[0-9]+)?( ?)(s|ms|seconds)\b/T\2\3/g" -e "s/time=\"[0-9.]+\"/time=\"T\"/g" -e "s#$0#LEPP#g" "$f"; done' "$bin" {} +
+    find "$dir" -type f \( -name '*.json' -o -name '*.md' -o -name '*.xml' -o -name '*.sh' -o -name '*.txt' \) -print0 |
+      while IFS= read -r -d '' f; do sed -E -i "${masks[@]}" -e "s#$bin#LEPP#g" "$f"; done
   done
   n=$((n + 1))
 }
