@@ -11,7 +11,7 @@
 
 #include "cgal_mesher.h"
 #include "lepp/audit/command_engine.h"
-#include "lepp/audit/isolated_engine.h"
+#include "lepp/audit/run/isolated_engine.h"
 #include "lepp/io.h"
 #include "triangle_wasm.h"
 

@@ -16,8 +16,8 @@
 #include "bindings.h"
 #include "lepp/audit/audit.h"
 #include "lepp/audit/builtin_engines.h"
-#include "lepp/audit/data_root.h"
-#include "lepp/audit/report.h"
+#include "lepp/audit/inputs/data_root.h"
+#include "lepp/audit/report/report.h"
 
 namespace lepp::python {
 namespace {

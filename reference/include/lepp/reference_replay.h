@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Replays a list of Steiner points on the exact reference (CGAL CDT on Epeck)
 // and says, before each insertion, which of the paper's choices the point is:
-// the stepping API behind the conformance check (lepp/audit/conformance.h).
+// the stepping API behind the conformance check (lepp/audit/judge/conformance.h).
 // Every decision is exact; only the point tolerance is measured in doubles.
 #pragma once
 #include <array>

@@ -16,10 +16,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lepp/audit/checks.h"
-#include "lepp/audit/order_termination.h"
+#include "lepp/audit/judge/checks.h"
+#include "lepp/audit/judge/order_termination.h"
 #include "lepp/audit/engine.h"
-#include "lepp/audit/inputs.h"
+#include "lepp/audit/inputs/inputs.h"
 
 namespace lepp::audit {
 
@@ -56,7 +56,7 @@ struct AuditOptions {
   std::size_t max_findings_per_row = 3;     // shrunk and saved; further failures are counted
   std::size_t shrink_max_runs = 300;        // engine runs per shrink at most
   double shrink_max_seconds = 60;           // and seconds per shrink
-  // --shard K/N (lepp/audit/shard.h): only the cases whose index in the whole
+  // --shard K/N (lepp/audit/report/shard.h): only the cases whose index in the whole
   // audit is K-1 modulo N, and the report carries what merge_shards needs.
   // 0: the whole audit, no shard data.
   std::size_t shard_index = 0, shard_count = 0;
@@ -111,7 +111,7 @@ struct PointsRatio {
 };
 
 // What one shard's report carries beyond a report, so that merge_shards
-// (lepp/audit/shard.h) gives the whole audit's report: where each first, each
+// (lepp/audit/report/shard.h) gives the whole audit's report: where each first, each
 // listed item and each saved finding stands in the whole audit's order. A run's
 // ordinal is case index x repeat + repetition, the order run_audit sums in.
 struct ShardData {
