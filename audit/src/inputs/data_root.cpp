@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Where the built-in corpus is: --root, share/lepp beside the executable, the source tree.
 #include "lepp/audit/inputs/data_root.h"
 
 #include <filesystem>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The audit's inputs: RapidCheck's generated PSLGs, the corpus, the user's .poly files.
 #include "lepp/audit/inputs/inputs.h"
 
 #include <algorithm>

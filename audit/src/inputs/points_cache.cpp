@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Comparison engines' points added, cached on disk per engine, input, theta and method.
 #include "lepp/audit/inputs/points_cache.h"
 
 #include <unistd.h>

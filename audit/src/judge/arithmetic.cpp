@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// single-precision, printed-digits: what the numbers a program wrote say about its arithmetic.
 #include "lepp/audit/judge/arithmetic.h"
 
 #include <cfloat>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The audit's rows decided for one run: certificate, min-angle, Theorem 2, termination, conformance.
 #include "lepp/audit/judge/checks.h"
 
 #include <cmath>

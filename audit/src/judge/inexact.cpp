@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// inexact-threshold, inexact-incircle: the certifier's findings within double rounding.
 #include "lepp/audit/judge/inexact.h"
 
 #include <array>

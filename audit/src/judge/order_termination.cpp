@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// A termination difference: which of lepp's processing orders end where the program did not.
 #include "lepp/audit/judge/order_termination.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// A failure's signature: what a shrunk input must still fail with.
 #include "lepp/audit/judge/signature.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// A finding on disk: the input, the program's output, the picture, reproduce.sh and finding.md.
 #include "lepp/audit/report/finding.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The audit report as markdown, JSON and JUnit XML.
 #include "lepp/audit/report/report.h"
 
 #include <fmt/format.h>
@@ -53,7 +54,7 @@ std::vector<DeviationLink> deviations_of(const nlohmann::json& chain) {
 std::string deviations_text(const AuditReport& rep) {
   const RowSummary& r = rep[Row::Conformance];
   std::string md;
-  // The certifier's failures the program's arithmetic explains (arithmetic.h).
+  // The certifier's failures the program's arithmetic explains (judge/arithmetic.h).
   for (Row row : {Row::Certificate, Row::MinAngle}) {
     const RowSummary& named = rep[row];
     if (named.deviations.empty()) continue;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// --shard K/N: which cases a shard runs, its report's shard data, and the shards merged into one report.
 #include "lepp/audit/report/shard.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Text escaped for XML: the JUnit report and the SVG titles.
 #include "xml_escape.h"
 
 namespace lepp::audit::detail {

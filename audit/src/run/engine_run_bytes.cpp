@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// An EngineRun as bytes and back, whole or refused (the isolated child's pipe).
 #include "lepp/audit/run/engine_run_bytes.h"
 
 #include <cstdint>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The fork server: one process forked before the threads, forking a child per isolated run.
 #include "fork_server.h"
 
 #include <fcntl.h>

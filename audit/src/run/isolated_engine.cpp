@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// An in-process engine run in a child process: timeout, crashes, memory cap.
 #include "lepp/audit/run/isolated_engine.h"
 
 #include <sys/resource.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// -j: a few threads taking indices in turn.
 #include "lepp/audit/run/parallel.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// One shell command or forked function run with a process group, a timeout, a memory cap and capped stderr.
 #include "lepp/audit/run/subprocess.h"
 
 #include "child_process.h"

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Shrinking a failing input through the engine: RapidCheck's tree, then greedy edits.
 #include "lepp/audit/shrink/shrink.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The greedy shrinker's edits: splices, pieces, rounding.
 #include "shrink_moves.h"
 
 #include <algorithm>

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The audit: runs an engine on every input at every theta, decides every row
-// (checks.h) for every run, shrinks each failure through the engine (shrink.h),
-// saves it under the output directory (finding.h) and sums it all up per row.
-// `lepp audit` is this plus option parsing and printing (report.h).
+// (judge/checks.h) for every run, shrinks each failure through the engine (shrink/shrink.h),
+// saves it under the output directory (report/finding.h) and sums it all up per row.
+// `lepp audit` is this plus option parsing and printing (report/report.h); the
+// steps of run_audit are in src/loop/.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -27,7 +28,7 @@ namespace lepp::audit {
 struct NamedEngine {
   std::string name;
   Engine engine;
-  std::string cache_key;  // the engine and its version, for the points cache (points_cache.h); empty: never cached
+  std::string cache_key;  // the engine and its version, for the points cache (inputs/points_cache.h); empty: never cached
 };
 
 struct Progress {
@@ -48,7 +49,7 @@ struct AuditOptions {
   std::string out_dir = "audit-out";        // findings go to OUT/ROW-N/
   std::string work_dir;                     // scratch; empty: a fresh directory under the system temp dir
   std::vector<NamedEngine> comparisons;     // points added compared against these (lepp reference, Triangle)
-  std::string points_cache_dir;             // their points cached on disk here (points_cache.h); empty: not cached
+  std::string points_cache_dir;             // their points cached on disk here (inputs/points_cache.h); empty: not cached
   std::size_t jobs = 1;                     // cases, comparisons and shrink candidates run at once (0: the machine's cores)
   std::size_t repeat = 1;                   // every case run this many times, each run checked, the outputs compared
   bool shrink = true;
@@ -73,7 +74,7 @@ struct Counterexample {
   std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;  // of the input as found
   std::size_t shrink_steps = 0, shrink_runs = 0;
   double shrink_timeout = 0;  // seconds per candidate run while shrinking (termination: from the program's own time)
-  std::string signature;    // what every kept shrink step failed with, as the original (signature.h)
+  std::string signature;    // what every kept shrink step failed with, as the original (judge/signature.h)
   std::string detail;       // the row's one line on the shrunk input
   std::string deviation;    // conformance: the named deviation on the shrunk input (RowResult::deviation)
   std::vector<DeviationLink> deviations;  // conformance: every deviation of its trace (RowResult::deviations)

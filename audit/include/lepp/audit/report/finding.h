@@ -23,7 +23,7 @@ struct FindingText {
   std::size_t shrink_steps = 0;       // edits kept
   std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;
   std::string original_detail;        // the row's line on the input as found
-  std::string signature;              // what the shrinking kept (signature.h)
+  std::string signature;              // what the shrinking kept (judge/signature.h)
   std::string nondeterminism;         // not empty: two runs on the same input differed (how)
 };
 
