@@ -18,7 +18,7 @@
 
 #include "lepp/audit/audit.h"
 #include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/checks.h"
+#include "lepp/audit/judge/checks.h"
 #include "lepp/engines/command_engine.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"

@@ -3,7 +3,7 @@
 // against the paper's statements on generated and real inputs, shrinks what
 // fails (docs/AUDIT.md). Exit 0 every row holds, 1 findings, 2 bad usage.
 // `lepp audit --shard K/N` runs one slice; `lepp audit merge SHARD.json...`
-// makes the whole report of the slices' JSON reports (lepp/audit/shard.h).
+// makes the whole report of the slices' JSON reports (lepp/audit/report/shard.h).
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,14 +21,18 @@
 
 #include "commands.h"
 #include "lepp/audit/audit.h"
-#include "lepp/audit/data_root.h"
-#include "lepp/audit/points_cache.h"
-#include "lepp/audit/report.h"
-#include "lepp/audit/shard.h"
-#include "lepp/audit/subprocess.h"
+#include "lepp/audit/inputs/data_root.h"
+#include "lepp/audit/inputs/points_cache.h"
+#include "lepp/audit/report/report.h"
+#include "lepp/audit/report/shard.h"
+#include "lepp/audit/run/subprocess.h"
 #include "lepp/engines/audited_engines.h"
 #include "lepp/engines/command_engine.h"
 #include "lepp/engines/registry.h"
+#include "lepp/engines/builtin_engines.h"
+#include "lepp/audit/run/isolated_engine.h"
+#include "lepp/engines/peer_engines.h"
+#include "lepp/fast.h"
 #include "lepp/version.h"
 
 namespace lepp::cli {

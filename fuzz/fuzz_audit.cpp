@@ -19,7 +19,7 @@
 #include <fmt/format.h>
 #include <fuzzer/FuzzedDataProvider.h>
 
-#include "lepp/audit/checks.h"
+#include "lepp/audit/judge/checks.h"
 #include "lepp/engines/registry.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"

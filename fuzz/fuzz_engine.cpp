@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // fuzz_engine: loop hunting for any mesher. The structured PSLG input of
 // fuzz_refine (support/fuzz_input.h) goes through an outside program given by a
-// command template, run by the audit's command adapter (lepp/audit/command_engine.h):
+// command template, run by the audit's command adapter (lepp/engines/command_engine.h):
 //   LEPP_ENGINE_CMD='my-mesher {in} {out} {theta} {method}' fuzz/run.sh fuzz_engine 3600
 // {in} is a .poly file, the program writes {out}.node and {out}.ele. Each run is
-// decided by the audit's rows (lepp/audit/checks.h): a run past the timeout or
+// decided by the audit's rows (lepp/audit/judge/checks.h): a run past the timeout or
 // stopped short inside the band where the paper claims termination, a non-zero
 // exit, a crash, unreadable output, a mesh that is not certified or has an angle
 // below theta are findings and stop the fuzzer (the input is saved). A run that
@@ -28,7 +28,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "lepp/audit/checks.h"
+#include "lepp/audit/judge/checks.h"
 #include "lepp/engines/command_engine.h"
 #include "lepp/io.h"
 #include "support/finding.h"

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "lepp/audit/conformance.h"
+#include "lepp/audit/judge/conformance.h"
 #include "lepp/fast.h"
 #include "lepp/gen_lattice_box.h"
 #include "lepp/gen_symmetry.h"

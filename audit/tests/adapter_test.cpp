@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "lepp/audit/checks.h"
+#include "lepp/audit/judge/checks.h"
 #include "lepp/engines/command_engine.h"
-#include "lepp/audit/subprocess.h"
+#include "lepp/audit/run/subprocess.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What the numbers a program wrote say about its arithmetic (lepp/audit/arithmetic.h):
+// What the numbers a program wrote say about its arithmetic (lepp/audit/judge/arithmetic.h):
 // each rule names what it must and nothing on a program that wrote the exact doubles.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
 
-#include "lepp/audit/arithmetic.h"
+#include "lepp/audit/judge/arithmetic.h"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "audit_test_support.h"
 #include "lepp/audit/audit.h"
 #include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/report.h"
+#include "lepp/audit/report/report.h"
 #include "lepp/io.h"
 
 namespace fs = std::filesystem;

@@ -23,8 +23,8 @@
 #include "audit_test_support.h"
 #include "lepp/audit/audit.h"
 #include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/report.h"
-#include "lepp/audit/signature.h"
+#include "lepp/audit/report/report.h"
+#include "lepp/audit/judge/signature.h"
 #include "lepp/gen.h"
 
 namespace fs = std::filesystem;

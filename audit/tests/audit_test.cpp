@@ -13,8 +13,8 @@
 #include "audit_test_support.h"
 #include "lepp/audit/audit.h"
 #include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/finding.h"
-#include "lepp/audit/report.h"
+#include "lepp/audit/report/finding.h"
+#include "lepp/audit/report/report.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "conformance_test_support.h"
-#include "lepp/audit/conformance.h"
+#include "lepp/audit/judge/conformance.h"
 #include "lepp/certify.h"
 #include "lepp/fast.h"
 #include "lepp/gen.h"

@@ -12,7 +12,7 @@
 #include <unistd.h>
 #include <string>
 
-#include "lepp/audit/conformance.h"
+#include "lepp/audit/judge/conformance.h"
 #include "lepp/gen.h"
 #include "lepp/gen_lattice_box.h"
 #include "lepp/gen_symmetry.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The conformance check (lepp/audit/conformance.h) and the trace format
+// The conformance check (lepp/audit/judge/conformance.h) and the trace format
 // (lepp/trace_io.h): lepp's own traces conform, in every order and method;
 // exactly rounded choices conform; points moved too far, the triangle's
 // centroid, ignoring Remark 10 and a Lepp along shortest edges do not; both
@@ -22,7 +22,7 @@
 #include <unistd.h>
 
 #include "conformance_test_support.h"
-#include "lepp/audit/conformance.h"
+#include "lepp/audit/judge/conformance.h"
 #include "lepp/fast.h"
 #include "lepp/gen.h"
 #include "lepp/io.h"

@@ -173,7 +173,7 @@ TEST(DeviationCatalogue, Theorem2CheckRejectsAnObtusePair) {
 
 // The diagnosis of a step: words and picture, for a conformance failure and
 // for Theorem 2 at a step.
-#include "lepp/audit/diagnosis.h"
+#include "lepp/audit/judge/diagnosis.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// inexact-threshold and inexact-incircle (lepp/audit/inexact.h) at the exact
+// inexact-threshold and inexact-incircle (lepp/audit/judge/inexact.h) at the exact
 // ends of their bounds, and a row named only when every violation is within
 // rounding. The boundary points were found with exact rationals: sin^2 of the
 // smallest angle of (0,0) (1,0) (x,0.5) is 0.25/(x^2+0.25), and
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "lepp/audit/checks.h"
-#include "lepp/audit/inexact.h"
+#include "lepp/audit/judge/checks.h"
+#include "lepp/audit/judge/inexact.h"
 #include "lepp/validate.h"
 
 namespace {

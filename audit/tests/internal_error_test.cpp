@@ -16,9 +16,9 @@
 #include "audit_test_support.h"
 #include "lepp/audit/audit.h"
 #include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/report.h"
-#include "lepp/audit/shrink.h"
-#include "lepp/audit/signature.h"
+#include "lepp/audit/report/report.h"
+#include "lepp/audit/shrink/shrink.h"
+#include "lepp/audit/judge/signature.h"
 #include "lepp/validate.h"
 
 namespace fs = std::filesystem;

@@ -22,9 +22,9 @@
 
 #include <gtest/gtest.h>
 
-#include "lepp/audit/engine_run_bytes.h"
-#include "lepp/audit/isolated_engine.h"
-#include "lepp/audit/subprocess.h"
+#include "lepp/audit/run/engine_run_bytes.h"
+#include "lepp/audit/run/isolated_engine.h"
+#include "lepp/audit/run/subprocess.h"
 
 using namespace lepp;
 using namespace lepp::audit;

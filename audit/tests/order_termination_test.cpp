@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The audit's termination-by-order report (lepp/audit/order_termination.h) on
+// The audit's termination-by-order report (lepp/audit/judge/order_termination.h) on
 // the right-angle corner where lepp's lifo loops and fifo converges
 // (corpus/regressions/fuzz_refine/open/README.md).
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lepp/audit/order_termination.h"
+#include "lepp/audit/judge/order_termination.h"
 #include "lepp/validate.h"
 
 namespace lepp::audit {

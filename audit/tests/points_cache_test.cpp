@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lepp/audit/points_cache.h"
+#include "lepp/audit/inputs/points_cache.h"
 
 namespace fs = std::filesystem;
 using namespace lepp;

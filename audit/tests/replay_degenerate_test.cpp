@@ -11,7 +11,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "lepp/audit/conformance.h"
+#include "lepp/audit/judge/conformance.h"
 #include "lepp/io.h"
 #include "lepp/audit/replay.h"
 #include "lepp/trace_io.h"

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "lepp/audit/shard.h"
+#include "lepp/audit/report/shard.h"
 
 namespace lepp::audit {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lepp/audit/inputs.h"
-#include "lepp/audit/shrink.h"
+#include "lepp/audit/inputs/inputs.h"
+#include "lepp/audit/shrink/shrink.h"
 #include "lepp/validate.h"
 
 using namespace lepp;
@@ -161,7 +161,7 @@ TEST(Shrink, ParallelBatchesStopAtTheBudget) {
 TEST(Shrink, TreeAndGreedyPassesShareTheBudget) {
   std::optional<AuditInput> input;
   for (std::size_t index = 5; !input; ++index) input = generated_input(7, index, 12);
-  ASSERT_TRUE(input->shrinkable);
+  ASSERT_TRUE(input->shrink_tree);
   std::size_t unbounded_calls = 0;
   const ShrinkResult unbounded =
       shrink_input(*input, [&](const Pslg&) { return ++unbounded_calls, false; }, {100000, 60});

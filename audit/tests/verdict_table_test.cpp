@@ -25,7 +25,7 @@
 
 #include "lepp/audit/audit.h"
 #include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/report.h"
+#include "lepp/audit/report/report.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"
 

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "lepp/audit/isolated_engine.h"
+#include "lepp/audit/run/isolated_engine.h"
 #include "lepp/engines/builtin_engines.h"
 #include "lepp/engines/peer_engines.h"
 #include "lepp/version.h"

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "lepp/audit/subprocess.h"
+#include "lepp/audit/run/subprocess.h"
 #include "lepp/audit/theta_text.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"

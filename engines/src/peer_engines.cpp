@@ -12,7 +12,7 @@
 
 #include "cgal_mesher.h"
 #include "lepp/engines/command_engine.h"
-#include "lepp/audit/isolated_engine.h"
+#include "lepp/audit/run/isolated_engine.h"
 #include "lepp/io.h"
 #include "triangle_wasm.h"
 

@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "lepp/audit/audit.h"
-#include "lepp/audit/isolated_engine.h"
-#include "lepp/audit/report.h"
+#include "lepp/audit/run/isolated_engine.h"
+#include "lepp/audit/report/report.h"
 #include "lepp/fast.h"
 
 lepp::audit::EngineRun my_engine(const lepp::Pslg& pslg, const lepp::audit::EngineRequest& request) {

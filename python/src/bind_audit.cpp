@@ -15,8 +15,8 @@
 #include "arrays.h"
 #include "bindings.h"
 #include "lepp/audit/audit.h"
-#include "lepp/audit/data_root.h"
-#include "lepp/audit/report.h"
+#include "lepp/audit/inputs/data_root.h"
+#include "lepp/audit/report/report.h"
 #include "lepp/engines/builtin_engines.h"
 #include "lepp/engines/registry.h"
 

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "lepp/audit/conformance.h"
+#include "lepp/audit/judge/conformance.h"
 #include "lepp/certify.h"
 #include "lepp/io.h"
 #include "lepp/trace_io.h"

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The audit: runs an engine on every input at every theta, decides every row
-// (checks.h) for every run, shrinks each failure through the engine (shrink.h),
-// saves it under the output directory (finding.h) and sums it all up per row.
-// `lepp audit` is this plus option parsing and printing (report.h).
+// (judge/checks.h) for every run, shrinks each failure through the engine (shrink/shrink.h),
+// saves it under the output directory (report/finding.h) and sums it all up per row.
+// `lepp audit` is this plus option parsing and printing (report/report.h); the
+// steps of run_audit are in src/loop/.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -16,10 +17,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lepp/audit/checks.h"
-#include "lepp/audit/order_termination.h"
+#include "lepp/audit/judge/checks.h"
+#include "lepp/audit/judge/order_termination.h"
 #include "lepp/audit/engine.h"
-#include "lepp/audit/inputs.h"
+#include "lepp/audit/inputs/inputs.h"
 
 namespace lepp::audit {
 
@@ -27,7 +28,7 @@ namespace lepp::audit {
 struct NamedEngine {
   std::string name;
   Engine engine;
-  std::string cache_key;  // the engine and its version, for the points cache (points_cache.h); empty: never cached
+  std::string cache_key;  // the engine and its version, for the points cache (inputs/points_cache.h); empty: never cached
 };
 
 struct Progress {
@@ -48,7 +49,7 @@ struct AuditOptions {
   std::string out_dir = "audit-out";        // findings go to OUT/ROW-N/
   std::string work_dir;                     // scratch; empty: a fresh directory under the system temp dir
   std::vector<NamedEngine> comparisons;     // points added compared against these (lepp reference, Triangle)
-  std::string points_cache_dir;             // their points cached on disk here (points_cache.h); empty: not cached
+  std::string points_cache_dir;             // their points cached on disk here (inputs/points_cache.h); empty: not cached
   std::size_t jobs = 1;                     // cases, comparisons and shrink candidates run at once (0: the machine's cores)
   std::size_t repeat = 1;                   // every case run this many times, each run checked, the outputs compared
   bool shrink = true;
@@ -56,7 +57,7 @@ struct AuditOptions {
   std::size_t max_findings_per_row = 3;     // shrunk and saved; further failures are counted
   std::size_t shrink_max_runs = 300;        // engine runs per shrink at most
   double shrink_max_seconds = 60;           // and seconds per shrink
-  // --shard K/N (lepp/audit/shard.h): only the cases whose index in the whole
+  // --shard K/N (lepp/audit/report/shard.h): only the cases whose index in the whole
   // audit is K-1 modulo N, and the report carries what merge_shards needs.
   // 0: the whole audit, no shard data.
   std::size_t shard_index = 0, shard_count = 0;
@@ -73,7 +74,7 @@ struct Counterexample {
   std::size_t original_vertices = 0, original_segments = 0, original_holes = 0;  // of the input as found
   std::size_t shrink_steps = 0, shrink_runs = 0;
   double shrink_timeout = 0;  // seconds per candidate run while shrinking (termination: from the program's own time)
-  std::string signature;    // what every kept shrink step failed with, as the original (signature.h)
+  std::string signature;    // what every kept shrink step failed with, as the original (judge/signature.h)
   std::string detail;       // the row's one line on the shrunk input
   std::string deviation;    // conformance: the named deviation on the shrunk input (RowResult::deviation)
   std::vector<DeviationLink> deviations;  // conformance: every deviation of its trace (RowResult::deviations)
@@ -111,7 +112,7 @@ struct PointsRatio {
 };
 
 // What one shard's report carries beyond a report, so that merge_shards
-// (lepp/audit/shard.h) gives the whole audit's report: where each first, each
+// (lepp/audit/report/shard.h) gives the whole audit's report: where each first, each
 // listed item and each saved finding stands in the whole audit's order. A run's
 // ordinal is case index x repeat + repetition, the order run_audit sums in.
 struct ShardData {

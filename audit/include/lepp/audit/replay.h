@@ -2,7 +2,7 @@
 // Replays a list of Steiner points on the exact reference's mesh (CGAL CDT on
 // Epeck) and says, before each insertion, which of the paper's choices the
 // point is, or which deviation of the catalogue: the stepping API behind the
-// conformance check (lepp/audit/conformance.h). Every decision is exact; only
+// conformance check (lepp/audit/judge/conformance.h). Every decision is exact; only
 // the point tolerance is measured in doubles.
 #pragma once
 #include <array>

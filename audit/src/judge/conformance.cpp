@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The conformance check: the trace replayed on lepp::audit::Replay.
+#include "lepp/audit/judge/conformance.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "lepp/audit/replay.h"
+
+namespace lepp::audit {
+
+namespace {
+
+ConformanceCandidate candidate(const ReplayChoice& c) {
+  ConformanceCandidate out;
+  out.bad = c.bad;
+  out.lepp = c.lepp;
+  out.terminal_edge = c.terminal_edge;
+  out.rule = c.rule;
+  out.point = c.point;
+  out.distance = c.distance;
+  out.tolerance = c.tolerance;
+  out.euclidean = c.euclidean;
+  out.t1 = c.t1;
+  out.t2 = c.t2;
+  out.split_edge = c.split_edge;
+  return out;
+}
+
+ReplayRules rules_of(const ConformanceOptions& options) {
+  ReplayRules rules;
+  rules.method = options.method;
+  rules.min_angle_deg = options.min_angle_deg;
+  rules.angle_tolerance_deg = options.angle_tolerance_deg;
+  rules.point_tolerance_ulps = options.point_tolerance_ulps;
+  rules.max_area = options.max_area;
+  rules.region_area_bounds = options.region_area_bounds;
+  rules.follow_cocircular_flips = options.follow_cocircular_flips;
+  rules.cocircular_search_budget = options.cocircular_search_budget;
+  rules.centroid = options.area_centroid ? CentroidReading::Area : CentroidReading::Vertex;
+  return rules;
+}
+
+Deviation deviation_named(const std::string& name) {
+  for (int k = 0; k < kDeviations; ++k)
+    if (name == to_string(static_cast<Deviation>(k))) return static_cast<Deviation>(k);
+  return Deviation::Unknown;
+}
+
+// A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
+bool remark10_centroid(const ReplayChoice& choice) {
+  return choice.rule == Rule::CentroidInOther && choice.deviation == Deviation::Unknown;
+}
+
+// From the first named step on: the replay goes on with each named variant
+// allowed (Replay::allow) and names the next deviation where a step fits none,
+// until the trace ends or a step is no variant's point (unknown, a single
+// point rule like circumcenter, a name it already allows) or cannot be inserted.
+void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t first, ConformanceFailure& f,
+                  std::size_t& centroid_inside) {
+  f.chain = {{f.deviation, first + 1, 0}};
+  Deviation named = deviation_named(f.deviation);
+  std::size_t i = first;
+  while (i < trace.size()) {
+    if (!has_variant(named)) {
+      if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
+      f.chain_end = named == Deviation::Unknown
+                        ? fmt::format("step {} is no rule of the catalogue", i + 1)
+                        : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
+      return;
+    }
+    replay.allow(named);
+    const Point& p = trace[i];
+    ReplayChoice choice;
+    if (!replay.match(p, choice)) {
+      const Deviation next = replay.diagnose(p).deviation;
+      const std::string name = to_string(next);
+      for (const DeviationLink& l : f.chain)
+        if (l.deviation == name) {
+          f.chain_end = fmt::format("step {} is {}'s point at a configuration the replay cannot reach with it", i + 1, name);
+          return;
+        }
+      f.chain.push_back({name, i + 1, 0});
+      named = next;
+      continue;  // the same step again, with the new name allowed
+    }
+    try {
+      replay.insert(p, choice);
+    } catch (const std::runtime_error& e) {
+      f.chain_end = fmt::format("step {} cannot be inserted: {}", i + 1, e.what());
+      return;
+    }
+    if (choice.deviation != Deviation::Unknown)
+      for (DeviationLink& l : f.chain) l.steps += l.deviation == to_string(choice.deviation);
+    centroid_inside += remark10_centroid(choice);
+    ++i;
+  }
+  f.chain_complete = true;
+}
+
+// remark10-ignored's points are remark10-reversed's too (a centroid outside
+// the other triangle): a trace that also shows a point only the reversed rule
+// has (the midpoint where the centroid is inside) is remark10-reversed from
+// the ignored one's first step on.
+void merge_remark10(ConformanceFailure& f) {
+  const std::string ignored = to_string(Deviation::Remark10Ignored);
+  const std::string reversed = to_string(Deviation::Remark10Reversed);
+  auto find = [&](const std::string& n) {
+    return std::find_if(f.chain.begin(), f.chain.end(), [&](const DeviationLink& l) { return l.deviation == n; });
+  };
+  auto ig = find(ignored), re = find(reversed);
+  if (ig == f.chain.end() || re == f.chain.end()) return;
+  ig->deviation = reversed;
+  ig->steps += re->steps;
+  f.chain.erase(re);
+  if (f.deviation == ignored) {
+    f.deviation = reversed;
+    f.deviation_definition = definition(Deviation::Remark10Reversed);
+  }
+}
+
+std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
+
+// The replay of the first `steps` points of the trace (each a choice, inserted
+// before): the mesh just before step `steps`.
+std::unique_ptr<Replay> replay_up_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
+                                                const ReplayRules& rules) {
+  auto replay = std::make_unique<Replay>(validated, rules);
+  for (std::size_t i = 0; i < steps; ++i) {
+    ReplayChoice choice;
+    if (!replay->match(trace[i], choice)) break;  // cannot happen: the same replay matched it before
+    replay->insert(trace[i], choice);
+  }
+  return replay;
+}
+
+}  // namespace
+
+ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
+                                    const ConformanceOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  const ReplayRules rules = rules_of(options);
+  Replay replay(validated, rules);
+
+  ConformanceReport report;
+  report.steps = trace.size();
+  report.area_centroid = options.area_centroid;
+  report.arithmetic_double = options.arithmetic_double;
+  if (options.arithmetic_double)
+    for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
+  std::unique_ptr<Replay> before;  // the mesh before a step whose insertion failed
+  std::size_t centroid_inside = 0;             // ConformanceFailure::remark10_centroid_inside_steps
+  for (std::size_t i = 0; i < trace.size(); ++i) {
+    const Point& p = trace[i];
+    ReplayChoice choice;
+    std::string reason;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      reason = "not a finite point";
+    } else if (replay.match(p, choice)) {
+      if (options.theorem2_every_step && choice.t2[0] >= 0) {
+        ++report.theorem2_pairs_checked;
+        const Theorem2Check t2 = replay.theorem2(choice);
+        if (!t2.holds && !report.theorem2_failure) {
+          Theorem2StepFailure f;
+          f.step = i;
+          f.point = p;
+          f.terminal_edge = choice.terminal_edge;
+          f.t1 = choice.t1;
+          f.t2 = choice.t2;
+          f.apex = t2.apex;
+          f.angle_deg = t2.angle_deg;
+          f.mesh = replay.mesh();
+          report.theorem2_failure = std::move(f);
+        }
+      }
+      try {
+        replay.insert(p, choice);
+        ++report.steps_checked;
+        centroid_inside += remark10_centroid(choice);
+        if (choice.deviation == Deviation::InexactLength || choice.deviation == Deviation::InexactThreshold)
+          ++report.inexact_steps[to_string(choice.deviation)];
+        continue;
+      } catch (const std::runtime_error& e) {
+        reason = fmt::format("the point is a choice ({}) but cannot be inserted: {}", to_string(choice.rule), e.what());
+        // The insertion may have stopped half way (the point in, a triangle not
+        // counter-clockwise, even flat: issue 30), so the report's mesh, choices and
+        // deviation come from the trace replayed again up to this step.
+        before = replay_up_to(validated, trace, i, rules);
+      }
+    }
+    Replay& at = before ? *before : replay;
+    ConformanceFailure failure;
+    failure.step = i;
+    failure.point = p;
+    failure.mesh = at.mesh();
+    std::vector<ReplayChoice> all = at.all_choices(p, 20, failure.candidates_total);
+    for (const auto& c : all) failure.candidates.push_back(candidate(c));
+    if (!all.empty()) failure.nearest_distance = all.front().distance;
+    if (reason.empty()) {
+      bool vertex = false;
+      for (const Point& v : failure.mesh.vertices) vertex = vertex || v == p;
+      if (vertex)
+        reason = "the point is already a vertex of the mesh";
+      else if (all.empty())
+        reason = "the mesh has no bad triangle: no point should be inserted";
+      else
+        reason = fmt::format("not the paper's choice for any bad triangle's Lepp (nearest choice {:.3g} away, tolerance {:.3g})",
+                             all.front().distance, all.front().tolerance);
+    }
+    failure.reason = reason;
+    // The catalogue, on the same mesh with the same arithmetic and tolerance.
+    const DeviationMatch dm = at.diagnose(p);
+    failure.deviation = to_string(dm.deviation);
+    failure.deviation_what = dm.what;
+    failure.deviation_definition = definition(dm.deviation);
+    if (dm.deviation != Deviation::Unknown) {
+      failure.deviation_at = candidate(dm.where);
+      for (const auto& c : dm.paper) failure.deviation_paper.push_back(candidate(c));
+    }
+    report.cocircular_search_exhausted = replay.cocircular_search_exhausted();
+    report.conforms = false;
+    report.failure = std::move(failure);
+    break;
+  }
+  // Every deviation of the trace: the same replay goes on from the failing step
+  // (not after a choice that could not be inserted: that replay is broken).
+  if (report.failure && options.check_variant && !before) {
+    ConformanceFailure& f = *report.failure;
+    follow_chain(replay, trace, f.step, f, centroid_inside);
+    merge_remark10(f);
+    f.consistent_variant = f.chain_complete && f.chain.size() == 1 && has_variant(deviation_named(f.deviation));
+    if (f.consistent_variant) f.variant_steps = f.chain.front().steps;
+  }
+  if (report.failure) {
+    ConformanceFailure& f = *report.failure;
+    if (f.chain.empty()) f.chain = {{f.deviation, f.step + 1, 0}};
+    f.remark10_centroid_inside_steps = centroid_inside;
+  }
+  report.cocircular_ties = replay.cocircular_ties();
+  report.cocircular_flips = replay.cocircular_flips();
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+std::string chain_text(const std::vector<DeviationLink>& chain) {
+  std::string s;
+  for (const DeviationLink& l : chain) s += fmt::format("{}{} from step {}", s.empty() ? "" : "; then ", l.deviation, l.first_step);
+  return s;
+}
+
+std::string remark10_ignored_note(const ConformanceFailure& f) {
+  const std::string ignored = to_string(Deviation::Remark10Ignored);
+  bool named = false;
+  for (const DeviationLink& l : f.chain) named = named || l.deviation == ignored;
+  if (!named) return "";
+  if (f.remark10_centroid_inside_steps > 0)
+    return fmt::format("remark10-ignored, not remark10-reversed: {} steps took the quad centroid inside the other triangle "
+                       "(the paper's Remark 10, which a reversed program never does)",
+                       f.remark10_centroid_inside_steps);
+  return "remark10-reversed fits the trace as well: no step had the quad centroid inside the other triangle with one "
+         "second-longest edge constrained, where the two tell apart";
+}
+
+std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
+  if (r.conforms) {
+    std::string s = fmt::format("conforms: {} of {} steps are the paper's choices\n", r.steps_checked, r.steps);
+    for (const auto& [name, steps] : r.inexact_steps)
+      s += fmt::format("  {} of them only under the double reading (--arithmetic double): {}\n", steps, name);
+    return s;
+  }
+  const ConformanceFailure& f = *r.failure;
+  std::string s = fmt::format("step {} of {}: point ({:.17g}, {:.17g}): {}\n", f.step, r.steps, f.point.x, f.point.y, f.reason);
+  s += fmt::format("deviation: {}: {}", f.deviation, f.deviation_what);
+  if (f.deviation_at) s += fmt::format(", at ({:.17g}, {:.17g}), {:.3g} away", f.deviation_at->point.x, f.deviation_at->point.y, f.deviation_at->euclidean);
+  s += "\n";
+  for (const ConformanceCandidate& c : f.deviation_paper)
+    s += fmt::format("  the paper's choice there: ({:.17g}, {:.17g}) {}, {:.3g} away\n", c.point.x, c.point.y, to_string(c.rule), c.euclidean);
+  if (f.consistent_variant)
+    s += fmt::format("every one of the {} steps is the paper's choice or {}'s ({} of them {}'s): one consistent variant\n", r.steps,
+                     f.deviation, f.variant_steps, f.deviation);
+  if (f.chain.size() > 1 || !f.chain_end.empty())
+    s += fmt::format("every deviation of the trace: {}{}\n", chain_text(f.chain),
+                     f.chain_complete ? " (to the trace's end)" : "; the replay stopped: " + f.chain_end);
+  if (const std::string note = remark10_ignored_note(f); !note.empty()) s += note + "\n";
+  std::size_t n = std::min(max_candidates, f.candidates.size());
+  if (n) s += fmt::format("nearest of {} choices at this step:\n", f.candidates_total);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ConformanceCandidate& c = f.candidates[i];
+    std::string lepp;
+    for (const Tri& t : c.lepp) lepp += " " + tri(t);
+    s += fmt::format("  ({:.17g}, {:.17g}) {} distance {:.3g}: bad {}, Lepp{}, terminal edge ({},{})\n", c.point.x, c.point.y,
+                     to_string(c.rule), c.euclidean, tri(c.bad), lepp, c.terminal_edge[0], c.terminal_edge[1]);
+  }
+  if (r.theorem2_failure)
+    s += fmt::format("Theorem 2 fails at step {}: the angle at vertex {} of terminal edge ({},{}) is over 120 degrees (about {:.6g})\n",
+                     r.theorem2_failure->step, r.theorem2_failure->apex, r.theorem2_failure->terminal_edge[0],
+                     r.theorem2_failure->terminal_edge[1], r.theorem2_failure->angle_deg);
+  if (r.area_centroid) s += "reading declared: the quad centroid is its area centroid (--centroid area)\n";
+  if (r.arithmetic_double) s += "reading declared: the arithmetic of doubles (--arithmetic double)\n";
+  if (r.cocircular_search_exhausted)
+    s += "note: the search of the cocircular cells' other triangulations gave up (cocircular_search_budget): "
+         "the point may be a choice of a constrained Delaunay mesh it did not reach\n";
+  else if (r.cocircular_ties > 0)
+    s += fmt::format("note: the mesh had {} cocircular ties and the replay flipped {} cocircular edges to follow the trace; "
+                     "unless follow_cocircular_flips is off, every triangulation of the cocircular cells was searched\n",
+                     r.cocircular_ties, r.cocircular_flips);
+  return s;
+}
+
+}  // namespace lepp::audit

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// One shell command or forked function run with a process group, a timeout, a memory cap and capped stderr.
+#include "lepp/audit/run/subprocess.h"
+
+#include "child_process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+namespace lepp::audit {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The read end of a pipe from the child, emptied without blocking.
+struct PipeReader {
+  int fd = -1;
+  bool open = true;
+  std::string* text = nullptr;
+  std::size_t cap = 0;  // 0: no cap
+  bool truncated = false;
+
+  void drain() {
+    char buf[65536];
+    while (open) {
+      ssize_t n = read(fd, buf, sizeof buf);
+      if (n > 0) {
+        std::size_t room = cap == 0 ? static_cast<std::size_t>(n) : cap > text->size() ? cap - text->size() : 0;
+        std::size_t take = std::min(room, static_cast<std::size_t>(n));
+        text->append(buf, take);
+        if (take < static_cast<std::size_t>(n)) truncated = true;
+      } else if (n == 0) {
+        open = false;
+      } else {
+        if (errno == EINTR) continue;
+        if (errno != EAGAIN && errno != EWOULDBLOCK) open = false;
+        return;
+      }
+    }
+  }
+};
+
+// A process that inherited SIGCHLD ignored (SIG_IGN, or SA_NOCLDWAIT: it survives
+// exec, and some launchers and CI runners leave it so) has its children reaped by the
+// kernel, and waitpid never sees one end: every run would last until its timeout, or
+// forever without one. The audit waits for its own children, so it restores the default.
+void let_us_reap_our_children() {
+  struct sigaction sa;
+  if (sigaction(SIGCHLD, nullptr, &sa) != 0) return;
+  if (sa.sa_handler != SIG_IGN && !(sa.sa_flags & SA_NOCLDWAIT)) return;
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  sigaction(SIGCHLD, &dfl, nullptr);
+}
+
+bool make_pipe(int fds[2], std::string& detail) {
+  // Close-on-exec from the start (pipe2): nothing the child execs inherits them (its
+  // stderr is a dup2 copy, which is), nor a program another audit thread starts meanwhile.
+  if (pipe2(fds, O_CLOEXEC) != 0) {
+    detail = std::string("pipe: ") + std::strerror(errno);
+    return false;
+  }
+  return true;
+}
+
+// The child's end as waitpid sees it (the child is ours).
+class WaitpidEnd : public ChildEnd {
+ public:
+  explicit WaitpidEnd(pid_t pid) : pid_(pid) {}
+  int poll(int* wstatus, std::string* detail) override {
+    pid_t w = waitpid(pid_, wstatus, WNOHANG);
+    if (w == pid_) return 1;
+    if (w < 0 && errno != EINTR) {
+      // Not ours to wait for any more (reaped elsewhere): its end is unknown, but it has ended.
+      *detail = std::string("waitpid: ") + std::strerror(errno) + ": the child's exit status is lost";
+      return -1;
+    }
+    return 0;
+  }
+  void wait(int* wstatus) override { waitpid(pid_, wstatus, 0); }
+
+ private:
+  pid_t pid_;
+};
+
+}  // namespace
+
+// In the child after fork, before its function runs: only async-signal-safe calls.
+void set_up_child(int stderr_fd, const SubprocessLimits& limits) {
+  setpgid(0, 0);  // its own group, so a timeout kills everything it started
+  // Default signal handling in the child whatever the parent set.
+  signal(SIGPIPE, SIG_DFL);
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  int devnull = open("/dev/null", O_RDWR);
+  if (devnull >= 0) {
+    dup2(devnull, 0);
+    dup2(devnull, 1);
+    if (devnull > 2) close(devnull);
+  }
+  dup2(stderr_fd, 2);
+  if (stderr_fd > 2) close(stderr_fd);
+  if (!limits.directory.empty() && chdir(limits.directory.c_str()) != 0) _exit(126);
+  if (limits.memory_mb > 0) {
+    struct rlimit rl;
+    rl.rlim_cur = rl.rlim_max = static_cast<rlim_t>(limits.memory_mb) * 1024 * 1024;
+    setrlimit(RLIMIT_AS, &rl);
+  }
+}
+
+void wait_for_child(pid_t pid, int err_fd, int res_fd, const SubprocessLimits& limits,
+                    std::chrono::steady_clock::time_point t0, ChildEnd& end, SubprocessResult& r) {
+  fcntl(err_fd, F_SETFL, O_NONBLOCK);
+  fcntl(res_fd, F_SETFL, O_NONBLOCK);
+  PipeReader stderr_pipe{err_fd, true, &r.stderr_text, limits.stderr_cap};
+  PipeReader result_pipe{res_fd, true, &r.output, 0};
+  bool exited = false, lost = false;
+  int wstatus = 0;
+  int nap_us = 50;
+  while (!exited) {
+    double left = limits.timeout_seconds > 0 ? limits.timeout_seconds - since(t0) : 1e9;
+    if (left <= 0) {
+      r.timed_out = true;
+      kill(-pid, SIGKILL);
+      end.wait(&wstatus);
+      exited = true;
+      break;
+    }
+    // Wake at least every 50 ms to reap the child even if a grandchild keeps a pipe open.
+    int wait_ms = static_cast<int>(std::min(left * 1000 + 1, 50.0));
+    struct pollfd p[2];
+    nfds_t n = 0;
+    for (PipeReader* pr : {&stderr_pipe, &result_pipe})
+      if (pr->open) p[n++] = {pr->fd, POLLIN, 0};
+    if (n > 0) {
+      if (poll(p, n, wait_ms) > 0) {
+        stderr_pipe.drain();
+        result_pipe.drain();
+      }
+    } else {
+      // Both pipes closed: the child is most likely exiting. Look again soon, then less often.
+      usleep(static_cast<useconds_t>(std::min(static_cast<double>(nap_us), left * 1e6 + 1)));
+      nap_us = std::min(nap_us * 2, 5000);
+    }
+    const int e = end.poll(&wstatus, &r.detail);
+    if (e != 0) exited = true;
+    if (e < 0) lost = true;
+  }
+  r.seconds = since(t0);
+  stderr_pipe.drain();
+  result_pipe.drain();
+  r.stderr_truncated = stderr_pipe.truncated;
+  // Whatever the child left behind in its group (background jobs) goes too.
+  kill(-pid, SIGKILL);
+  close(err_fd);
+  close(res_fd);
+  if (lost) {
+    r.exit_code = -1;
+  } else if (!r.timed_out) {
+    if (WIFEXITED(wstatus)) r.exit_code = WEXITSTATUS(wstatus);
+    if (WIFSIGNALED(wstatus)) r.signal = WTERMSIG(wstatus);
+  } else {
+    r.signal = SIGKILL;
+  }
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& limits) {
+  SubprocessResult r;
+  let_us_reap_our_children();
+  int err[2], res[2];
+  if (!make_pipe(err, r.detail)) return r;
+  if (!make_pipe(res, r.detail)) {
+    close(err[0]);
+    close(err[1]);
+    return r;
+  }
+  const auto t0 = Clock::now();
+  pid_t pid = fork();
+  if (pid < 0) {
+    r.detail = std::string("fork: ") + std::strerror(errno);
+    for (int fd : {err[0], err[1], res[0], res[1]}) close(fd);
+    return r;
+  }
+  if (pid == 0) {
+    close(err[0]);
+    close(res[0]);
+    set_up_child(err[1], limits);
+    int status = 125;
+    try {
+      status = child(res[1]);
+    } catch (...) {
+    }
+    _exit(status);  // never back into the caller's code, nor its atexit handlers and stdio buffers
+  }
+  setpgid(pid, pid);  // also here: no race with the kill below
+  close(err[1]);
+  close(res[1]);
+  r.started = true;
+
+  WaitpidEnd end(pid);
+  wait_for_child(pid, err[0], res[0], limits, t0, end, r);
+  return r;
+}
+
+SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits) {
+  const char* command = shell_command.c_str();
+  return run_forked(
+      [command](int) {
+        execl("/bin/sh", "sh", "-c", command, static_cast<char*>(nullptr));
+        return 127;
+      },
+      limits);
+}
+
+}  // namespace lepp::audit
