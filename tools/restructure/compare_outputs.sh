@@ -39,7 +39,7 @@ run() {
     local args=()
     for a in "$@"; do args+=("${a//\{lepp\}/$bin}"); done
     (cd "$dir" && "${args[@]}" > stdout.raw 2> stderr.raw; echo $? > status)
-    for f in stdout stderr; do mask < "$dir/$f.raw" > "$dir/$f"; rm "$dir/$f.raw"; done
+    for f in stdout stderr; do mask < "$dir/$f.raw" | sed "s#$bin#LEPP#g" > "$dir/$f"; rm "$dir/$f.raw"; done
     # files written: JSON and text masked in place, binary compared as is
     find "$dir" -type f \( -name '*.json' -o -name '*.md' -o -name '*.xml' -o -name '*.sh' -o -name '*.txt' \) -print0 |
       while IFS= read -r -d '' f; do sed -E -i "${masks[@]}" -e "s#$bin#LEPP#g" "$f"; done
@@ -77,7 +77,7 @@ while IFS= read -r f; do
 done < <(find "$root/corpus" \( -name '*.poly' -o -name '*.node' \) -not -path '*/regressions/fuzz*' | sort)
 
 # The audit on its built-in sources, lepp's engines and a program (the test mesher, if built).
-cache_off=(--no-cache -j 2)
+cache_off=(--no-cache -j 2 --root "$root")  # one corpus for both builds: its paths are in the reports
 run audit-fast {lepp} audit --engine fast --sources gen,paper,corpus --cases 60 --compare reference "${cache_off[@]}" --junit junit.xml --json-file report.json --out findings
 run audit-reference-midpoint {lepp} audit --engine reference --method midpoint --theta 20 --sources paper,corpus --cases 40 --compare fast "${cache_off[@]}" --json --out findings
 run audit-cgal {lepp} audit --engine cgal --sources paper,gen --cases 20 --compare none "${cache_off[@]}" --out findings
