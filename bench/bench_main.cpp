@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind bench_main.h: the main of a benchmark program that registers its
+// benchmarks at run time.
 #include "bench_main.h"
 
 #include <benchmark/benchmark.h>

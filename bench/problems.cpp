@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind problems.h: benchmark inputs.
 #include "problems.h"
 
 #include <cmath>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/angle.h: the angle threshold theta as exact arithmetic sees it.
 #include "lepp/angle.h"
 
 #include <cmath>

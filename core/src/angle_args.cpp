@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/angle_args.h: an angle of the statistics (lepp/stats.h) as the
+// two arguments it gives atan2, and the order of two such angles decided without atan2.
 #include "lepp/angle_args.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind block_file.h: an output file written in large blocks.
 #include "block_file.h"
 
 #include <cerrno>

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind line_reader.h: splits a Triangle-format text file into lines of
+// whitespace-separated tokens, dropping comments (# to end of line) and blank lines, and
+// converts tokens to numbers with errors that name the file and line.
 #include "line_reader.h"
 
 #include <algorithm>

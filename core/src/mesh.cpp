@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/mesh.h: the output mesh of the domain, as written to PREFIX.node/.ele/.poly.
 #include "lepp/mesh.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind msh_layout.h: how a mesh maps onto Gmsh's model, for both .msh versions.
 #include "msh_layout.h"
 
 #include <algorithm>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/stats.h: the statistics `lepp refine` prints and the paper
+// plots, computed in double precision for display.
 #include "lepp/stats.h"
 
 #include "lepp/angle_args.h"

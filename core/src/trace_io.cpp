@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/trace_io.h: PREFIX.trace, the trace of every insertion, read and written.
 #include "lepp/trace_io.h"
 
 #include <cstdio>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind shell_command.h: running another program through /bin/sh, for the
+// comparisons (Triangle under node, the plot script, lepp render).
 #include "shell_command.h"
 
 #include <sys/wait.h>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind triangle_wasm.h: Shewchuk's Triangle, the triangle-wasm build run
+// under node by tools/triangle/triangle.js.
 #include "triangle_wasm.h"
 
 #include "shell_command.h"

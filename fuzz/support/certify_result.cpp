@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind certify_result.h: the certifier as the fuzz targets use it.
 #include "certify_result.h"
 
 #include <cstdlib>

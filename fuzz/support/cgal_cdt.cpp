@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind cgal_cdt.h: an independent CDT for fuzz_cdt to compare against.
 #include "cgal_cdt.h"
 
 #include <vector>

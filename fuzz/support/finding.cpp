@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind finding.h: how a fuzz target reports a finding (a loop, a mismatch, an uncaught exception).
 #include "finding.h"
 
 #include <cstdio>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind fuzz_input.h: the structured input of fuzz_refine, fuzz_differential
+// and fuzz_cdt.
 #include "fuzz_input.h"
 
 #include <algorithm>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind loop_guard.h: what counts as a loop in a fuzzed refinement, and what
+// kind of loop it is.
 #include "loop_guard.h"
 
 #include "lepp/segment_distance.h"

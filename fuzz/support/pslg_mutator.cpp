@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind pslg_mutator.h: the LLVMFuzzerCustomMutator shared by the
+// structure-aware targets.
 #include "pslg_mutator.h"
 
 #include <algorithm>

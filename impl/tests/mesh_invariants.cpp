@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind mesh_invariants.h: the fast engine's own invariants, checked
+// independently of its code (CGAL's exact predicates and rationals).
 #include "mesh_invariants.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/cells.h: the cells of PAPER.md's tables.
 #include "lepp/paper/cells.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/figures.h: the figures of PAPER.md.
 #include "lepp/paper/figures.h"
 
 #include <exception>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/measures.h: how our runs compare with the paper's numbers
+// and with each other.
 #include "lepp/paper/measures.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/numbers.h: the paper's own numbers.
 #include "lepp/paper/numbers.h"
 
 #include "mesher_names.h"

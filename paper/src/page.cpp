@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/page.h: docs/PAPER.md.
 #include "lepp/paper/page.h"
 
 #include <cmath>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/readings.h: alternative readings of the problems whose
+// geometry the paper does not pin down (Circles240, Rectangle162).
 #include "lepp/paper/readings.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/reproduce.h: the paper reproduction (`lepp paper`).
 #include "lepp/paper/reproduce.h"
 
 #include <chrono>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/run.h: the record of one run of one mesher on one input at
+// one angle, and the runs of a study, found by what was run.
 #include "lepp/paper/run.h"
 
 namespace lepp::paper {

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/runner.h: one run of one mesher on one input at one angle.
 #include "lepp/paper/runner.h"
 
 #include <algorithm>

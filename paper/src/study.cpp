@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/study.h: the runs of the study (the paper's Sections 5 and
+// 6) on corpus/paper's four problems.
 #include "lepp/paper/study.h"
 
 #include <algorithm>

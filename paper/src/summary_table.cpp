@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/paper/summary_table.h: the plain-text table `lepp paper` prints
+// on stdout.
 #include "lepp/paper/summary_table.h"
 
 #include <cstdarg>

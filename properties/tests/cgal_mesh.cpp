@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind cgal_mesh.h: meshes made by CGAL, independently of our engines, for
+// the certifier's tests.
 #include "cgal_mesh.h"
 
 #include <map>

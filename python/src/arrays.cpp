@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind arrays.h: NumPy arrays <-> lepp's data model.
 #include "arrays.h"
 
 #include <stdexcept>

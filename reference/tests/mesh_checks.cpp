@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind mesh_checks.h: simple exact checks of a refined mesh, for the
+// reference engine's tests.
 #include "mesh_checks.h"
 
 #include <gmpxx.h>

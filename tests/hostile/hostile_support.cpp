@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind hostile_support.h: shared by the hostile-input tests.
 #include "hostile_support.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// One thread's MPFR constant cache freed when the thread exits (the audit's -j threads).
 #pragma once
 // MPFR keeps the constants it computes (pi, and what mpfr_sin and mpfr_acos
 // need) in a cache per thread and frees it only when asked. A thread that

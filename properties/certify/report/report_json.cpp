@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/certify_json.h: the certifier's report as JSON.
 #include "lepp/certify_json.h"
 
 namespace lepp::certify {

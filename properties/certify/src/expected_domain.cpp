@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind expected_domain.h: the domain a correct mesh of a PSLG must cover,
+// computed independently of any engine.
 #include "expected_domain.h"
 
 #include <cmath>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind exact.h: exact plane geometry for the theorem checks.
 #include "exact.h"
 
 #include <algorithm>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind lepp/theorems/theorem_gen.h: RapidCheck generators of the inputs the
+// paper's statements talk about.
 #include "lepp/theorems/theorem_gen.h"
 
 namespace lepp::theorems::gen {
