@@ -139,6 +139,7 @@ int run_refine(const RefineArgs& args) {
         {"order", to_string(options.order)},
         {"order_seed", options.order == QueueOrder::Random ? nlohmann::json(options.order_seed) : nlohmann::json()},
         {"rounds", options.order == QueueOrder::Batch ? nlohmann::json(result.rounds) : nlohmann::json()},
+        {"looks", options.order == QueueOrder::Batch ? nlohmann::json(result.looks) : nlohmann::json()},
         {"min_angle_target", args.min_angle},
         {"max_area", args.max_area},
         {"region_areas", args.region_areas},

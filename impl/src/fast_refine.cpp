@@ -213,19 +213,30 @@ class Refiner {
         if (again.empty()) break;
         for (const Keyed& k : again) round.push_back(k.item);
       }
-      ++result.rounds;
       marks.begin_round();
       next.clear();
       tails.clear();
       bool closed = false;
       int members = 0;
+      std::size_t looks = 0, rest = round.size();  // round[rest, ...) waits unlooked
+      bool kept = false;                             // a member kept a triangle (section 6)
+      bool counted = false;                          // the round has a triangle in the mesh
       std::size_t window_end = 0, k = 0;  // the window is round[..., window_end); wanted[k] comes next
       bool window_picked = false;          // its untouched triangles have picks
       for (std::size_t i = 0; i < round.size(); ++i) {
         const Item& item = round[i];
         if (outcome_ != Outcome::Converged) break;
-        if (threads > 1 && i == window_end && !closed) {
-          window_end = std::min(round.size(), i + window), k = 0;
+        // A closed round, or one past its looks (kBatchLooksPerMember per member and
+        // kBatchFreeLooks more: where most entries wait, as in a fan that all their
+        // cavities hold, it ends early), leaves the rest of its queue as it is.
+        if (closed || looks >= kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks) {
+          rest = i;
+          break;
+        }
+        if (threads > 1 && i == window_end) {
+          // No further than the looks the round has left: those it makes in any case.
+          const std::size_t left = kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks - looks;
+          window_end = std::min(round.size(), i + std::min(window, left)), k = 0;
           wanted.clear();
           for (std::size_t j = i; j < window_end; ++j)
             if (still_there(mesh_, round[j]) && !marks.touched(round[j].tri)) wanted.push_back(j);
@@ -234,10 +245,14 @@ class Refiner {
           if (window_picked) pick_window(mesh_, round, wanted, marks, opt_.method, obstacles_, threads, per_thread, picks);
         }
         if (!still_there(mesh_, item)) continue;
-        if (closed || marks.touched(item.tri)) {
+        // A round counts from its first triangle still in the mesh (the rest of a queue
+        // moved as it is may hold none).
+        if (!counted) counted = true, ++result.rounds;
+        if (marks.touched(item.tri)) {
           next.push_back(item);
           continue;
         }
+        ++looks, ++result.looks;
         bool plain;
         if (window_picked && i < window_end) {
           // Untouched now, so untouched as the window began: it has a pick.
@@ -288,23 +303,33 @@ class Refiner {
         ++members;
         const bool go_on = insert_choice(item, choice, true, result);
         mesh_.for_each_in_star(around_, [&](int ti) { marks.mark(ti); });
-        if (const int k = inserter_.kept(); k >= 0) marks.mark(k);
+        if (const int k = inserter_.kept(); k >= 0) marks.mark(k), kept = true;
         std::sort(fresh_.begin(), fresh_.end(), key_less);
         tails.insert(tails.end(), fresh_.begin(), fresh_.end());
         if (still_there(mesh_, item)) next.push_back(item);
         if (!go_on) break;
       }
       // The next round: what waits, in this round's order, then each member's batch;
-      // each triangle once, where it first comes.
-      round.clear();
+      // each triangle once, where it first comes. The rest of the queue holds each
+      // live triangle once and none of the looked-at ones, and no batch holds a
+      // triangle older than the round but a kept one: the rest is moved as it is,
+      // and read for the marks only when a member kept a triangle.
       queued.begin_round();
+      std::vector<Item>& ahead = spare_;
+      ahead.clear();
       auto take = [&](const Item& it) {
         if (!still_there(mesh_, it) || queued.touched(it.tri)) return;
         queued.mark(it.tri);
-        round.push_back(it);
+        ahead.push_back(it);
       };
       for (const Item& it : next) take(it);
+      if (kept) {
+        for (std::size_t i = rest; i < round.size(); ++i)
+          if (still_there(mesh_, round[i])) queued.mark(round[i].tri);
+      }
+      ahead.insert(ahead.end(), round.begin() + static_cast<std::ptrdiff_t>(rest), round.end());
       for (const Keyed& k : tails) take(k.item);
+      std::swap(round, ahead);
     }
   }
 
@@ -461,6 +486,7 @@ class Refiner {
   bool sized_ = false;
   Lepp lepp_;
   std::vector<Keyed> fresh_;  // the last insertion's batch
+  std::vector<Item> spare_;   // the batch order's next queue, as it is built
   int around_ = -1;           // a triangle of the last insertion's star
   // The batch order's windows: this many triangles per thread (round_picks.h),
   // unless RefineOptions::batch_window says otherwise. Measured: docs/BENCHMARKS.md.

@@ -139,20 +139,30 @@ class Refiner {
         if (!requeue_stopped()) break;
         while (!queue_.empty()) round.push_back(queue_.pop());
       }
-      ++result_.rounds;
       std::set<Tri> touched;
       std::vector<Tri> tails;
       next.clear();
       bool closed = false;
       int members = 0;
-      for (const Tri& t : round) {
+      std::size_t looks = 0, rest = round.size();  // round[rest, ...) waits unlooked
+      bool counted = false;
+      for (std::size_t i = 0; i < round.size(); ++i) {
+        const Tri& t = round[i];
         FH f;
         if (outcome_ != Outcome::Converged) break;
+        // A closed round, or one past its looks (kBatchLooksPerMember per member and
+        // kBatchFreeLooks more), leaves the rest of its queue as it is.
+        if (closed || looks >= kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks) {
+          rest = i;
+          break;
+        }
         if (!exists(t, f)) continue;
-        if (closed || touched.count(key(f))) {
+        if (!counted) counted = true, ++result_.rounds;  // counted from its first triangle in the mesh
+        if (touched.count(key(f))) {
           next.push_back(t);
           continue;
         }
+        ++looks, ++result_.looks;
         Lepp lepp = find_lepp(f, &longest_memo_);
         bool apart = true;
         for (FH g : lepp.path) apart = apart && !touched.count(key(g));
@@ -189,6 +199,7 @@ class Refiner {
       }
       // The next round: what waits, in this round's order, then each member's batch;
       // each triangle once, where it first comes.
+      next.insert(next.end(), round.begin() + static_cast<std::ptrdiff_t>(rest), round.end());
       round.clear();
       std::set<Tri> queued;
       for (const std::vector<Tri>* list : {&next, &tails})

@@ -3,6 +3,7 @@
 // The decisions behind each field are in docs/ALGORITHM.md.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -24,6 +25,13 @@ enum class Method { Centroid, Midpoint };
 // triangles whose regions (Lepp, terminal pair, the insertion's cavity and its ring) are apart, so a
 // round's insertions are independent of one another.
 enum class QueueOrder { Fifo, Lifo, Flip, Random, SmallestAngle, Batch };
+
+// The batch order's looks (ALGORITHM.md section 7, "batch", step 0): a round that
+// has looked at kBatchFreeLooks entries plus kBatchLooksPerMember per member ends,
+// the rest of its queue waiting as it is. Where most entries wait (a fan that every
+// cavity holds) rounds stay short instead of looking at every waiting entry again.
+constexpr std::size_t kBatchLooksPerMember = 2;
+constexpr std::size_t kBatchFreeLooks = 8;
 
 enum class Outcome {
   Converged,      // every triangle has smallest angle >= theta (and area <= its size bound)
@@ -115,6 +123,7 @@ struct RefineResult {
   std::int64_t precision_stops = 0;     // times a chosen point could not be inserted (section 8b)
   std::int64_t tie_resolutions = 0;     // insertions through another resolution of exact length ties (section 8b)
   std::int64_t rounds = 0;              // the batch order: rounds run (section 7); 0 for the other orders
+  std::int64_t looks = 0;               // the batch order: entries its rounds looked at (Lepp searched)
   std::string stuck;                    // for a guard outcome: which triangle, its Lepp
   double seconds = 0;
 };
