@@ -142,6 +142,9 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
   s["outcome"] = to_string(result.outcome);
   s["stuck"] = result.stuck;
   s["seconds"] = result.seconds;
+  const bool batch = options.order == QueueOrder::Batch;  // the batch order's rounds and looks, else None
+  s["rounds"] = batch ? py::object(py::int_(result.rounds)) : py::object(py::none());
+  s["looks"] = batch ? py::object(py::int_(result.looks)) : py::object(py::none());
   out["statistics"] = s;
   out["outcome"] = to_string(result.outcome);
   out["converged"] = exit_status(result.outcome) == 0;

@@ -94,6 +94,17 @@ def test_batch_threads_give_the_cli_mesh_of_one_thread(workdir):
         lepp.refine(path, order="batch", threads=-1)
 
 
+def test_batch_statistics_as_the_cli_json(workdir):
+    # rounds and looks, as `lepp refine --json` prints them; None for the other orders.
+    path = corpus("paper", "square400.poly")
+    mesh = lepp.refine(path, min_angle=30, order="batch", threads=1)
+    _, cli = cli_mesh(path, str(workdir / "m"), "--min-angle", "30", "--order", "batch", "--threads", "1")
+    assert (mesh.statistics["rounds"], mesh.statistics["looks"]) == (cli["rounds"], cli["looks"])
+    assert 0 < mesh.statistics["rounds"] <= mesh.statistics["looks"]
+    fifo = lepp.refine(path, min_angle=30)
+    assert fifo.statistics["rounds"] is None and fifo.statistics["looks"] is None
+
+
 def test_random_order_seed_changes_the_mesh():
     # The seed is passed through: two seeds give two meshes (A at 25 degrees), one seed gives one.
     path = corpus("paper", "A.poly")
