@@ -4,88 +4,32 @@
 // fails (docs/AUDIT.md). Exit 0 every row holds, 1 findings, 2 bad usage.
 // `lepp audit --shard K/N` runs one slice; `lepp audit merge SHARD.json...`
 // makes the whole report of the slices' JSON reports (lepp/audit/report/shard.h).
+// This file parses and prints; the audit is set up by lepp/engines/audit_setup.h and run by lepp::audit.
 #include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
-#include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "commands.h"
 #include "lepp/audit/audit.h"
-#include "lepp/audit/inputs/data_root.h"
-#include "lepp/audit/inputs/points_cache.h"
 #include "lepp/audit/report/report.h"
-#include "lepp/audit/report/shard.h"
-#include "lepp/audit/run/subprocess.h"
-#include "lepp/engines/audited_engines.h"
-#include "lepp/engines/command_engine.h"
+#include "lepp/audit/report/report_files.h"
+#include "lepp/audit/report/shard_files.h"
+#include "lepp/audit/request.h"
+#include "lepp/engines/audit_setup.h"
 #include "lepp/engines/registry.h"
-#include "lepp/engines/builtin_engines.h"
-#include "lepp/audit/run/isolated_engine.h"
-#include "lepp/engines/peer_engines.h"
-#include "lepp/fast.h"
 #include "lepp/version.h"
 
 namespace lepp::cli {
 namespace {
-
-struct AuditArgs {
-  std::string cmd, engine;
-  std::string method = to_string(Method::Centroid);
-  std::string order = to_string(QueueOrder::Fifo);
-  std::vector<double> thetas = {20, 25, 30};
-  std::size_t cases = 300;
-  std::uint64_t seed = 1;
-  std::vector<std::string> inputs;
-  std::string sources = "gen,paper,corpus";
-  std::string compare = "auto";
-  std::string root;  // empty: share/lepp beside the executable, else the source tree (data_root.h)
-  double timeout = 10;
-  std::size_t memory = 0;
-  double angle_tolerance = 1e-3, point_tolerance = 8;
-  std::string centroid = "vertex";
-  std::string arithmetic = "exact";
-  std::string out = "audit-out";
-  std::string junit, json_file;
-  bool json = false, no_shrink = false, no_isolate = false;
-  std::size_t max_findings = 3;
-  double shrink_seconds = 60;
-  std::size_t jobs = 0;  // 0: the machine's cores
-  std::size_t repeat = 1;
-  std::string cache;     // empty: the default cache directory
-  bool no_cache = false;
-  std::string shard;     // K/N; empty: the whole audit
-};
 
 struct MergeArgs {
   std::vector<std::string> shards;
   std::string out = "audit-out";
   std::string junit, json;  // json: the JSON report to this file ("-": on stdout instead of the markdown)
 };
-
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> parts;
-  std::stringstream in(s);
-  std::string p;
-  while (std::getline(in, p, ','))
-    if (!p.empty()) parts.push_back(p);
-  return parts;
-}
 
 void print_progress(const audit::Progress& p) {
   std::fprintf(stderr, "\r\033[K%zu/%zu runs, %zu failing  %.60s", p.done, p.total, p.failed, p.current.c_str());
@@ -101,110 +45,18 @@ int print_report(const audit::AuditReport& report, bool json, const std::string&
     std::printf("%s\n", j.dump(2).c_str());
   else
     std::printf("%s", audit::markdown_report(report).c_str());
-  if (!json_file.empty()) {
-    std::ofstream out(json_file);
-    out << j.dump(2) << "\n";
-    if (!out) {
-      std::fprintf(stderr, "lepp audit: cannot write %s\n", json_file.c_str());
-      return 2;
-    }
-  }
-  if (!junit.empty()) {
-    std::ofstream out(junit);
-    out << audit::junit_report(report);
-    if (!out) {
-      std::fprintf(stderr, "lepp audit: cannot write %s\n", junit.c_str());
-      return 2;
-    }
+  if (const std::string error = audit::write_report_files(report, j, json_file, junit); !error.empty()) {
+    std::fprintf(stderr, "lepp audit: %s\n", error.c_str());
+    return 2;
   }
   return audit::exit_status(report);
 }
 
-int run_audit_command(const AuditArgs& args) {
+int run_audit_command(const audit::AuditRequest& a) {
   try {
-    AuditArgs a = args;
-    if (a.cmd.empty() == a.engine.empty()) throw audit::UsageError("give exactly one of --cmd TEMPLATE and --engine NAME");
-    a.root = audit::find_data_root(a.root);
-    // reproduce.sh names this very lepp: a bare `lepp` may not be on PATH, or be another one.
-    const std::string self = audit::executable_path();
-    const std::string lepp_word = self.empty() ? "lepp" : audit::shell_quote(self);
-    audit::AuditOptions o;
-    // The options' checks admit only the registry's names.
-    o.method = *engines::parse_method(a.method);
-    const QueueOrder order = *engines::parse_order(a.order);
-    // lepp's engines in a child process unless --no-isolate (CGAL's always is: peer_engines.h).
-    const bool isolate = !a.no_isolate;
-    audit::Engine engine;
-    if (!a.cmd.empty()) {
-      engine = audit::command_engine(a.cmd);
-      o.engine_name = a.cmd;
-      o.reproduce_prefix = lepp_word + " audit --cmd " + audit::shell_quote(a.cmd);
-    } else {
-      const engines::Engine which = *engines::parse_engine(a.engine, engines::audit_engines());
-      engine = engines::audited_engine(which, order, isolate, a.root);
-      o.engine_name = engines::audit_title(which, order);
-      o.reproduce_prefix = lepp_word + " audit --engine " + a.engine +
-                           (order == QueueOrder::Fifo ? "" : std::string(" --order ") + to_string(order));
-      if (which == engines::Engine::Triangle)
-        o.reproduce_prefix += " --root " + audit::shell_quote(std::filesystem::absolute(a.root).string());
-    }
-    const bool automatic = a.compare == "auto";
-    const std::vector<std::string> compare = automatic ? engines::names(engines::auto_comparisons()) : split(a.compare);
-    for (const std::string& c : compare) {
-      if (c == "none") continue;
-      const std::optional<engines::Engine> which = engines::parse_engine(c, engines::comparison_engines());
-      if (!which)
-        throw audit::UsageError("--compare: unknown engine " + c + " (" + join(engines::names(engines::comparison_engines())) +
-                                ", none)");
-      // Cache keys name the engine's build: a new lepp or Triangle budget is a new entry.
-      const std::string build = fmt::format("{} {}", kVersion, git_commit());
-      try {
-        o.comparisons.push_back(engines::comparison_engine(*which, isolate, a.root, build));
-      } catch (const audit::UsageError&) {
-        // Triangle missing: asked for explicitly, say so; under auto, compare without it.
-        if (!automatic || *which != engines::Engine::Triangle) throw;
-      }
-    }
-    o.thetas = a.thetas;
-    o.cases = a.cases;
-    o.inputs.seed = a.seed;
-    o.inputs.dirs = a.inputs;
-    o.inputs.source_root = a.root;
-    auto sources = split(a.sources);
-    auto has = [&](const char* s) { return std::find(sources.begin(), sources.end(), s) != sources.end(); };
-    for (const std::string& s : sources)
-      if (s != "gen" && s != "paper" && s != "corpus") throw audit::UsageError("--sources: unknown source " + s + " (gen, paper, corpus)");
-    o.inputs.generated = has("gen");
-    o.inputs.paper = has("paper");
-    o.inputs.corpus = has("corpus");
-    o.timeout_seconds = a.timeout;
-    o.memory_mb = a.memory;
-    // The replay makes exact rationals of both: a NaN or an infinity is bad usage here (in
-    // the library it makes every run's conformance an internal error: the replay refuses it).
-    if (!std::isfinite(a.angle_tolerance) || !std::isfinite(a.point_tolerance))
-      throw audit::UsageError("--angle-tolerance and --point-tolerance must be finite numbers");
-    o.checks.angle_tolerance_deg = a.angle_tolerance;
-    o.checks.point_tolerance_ulps = a.point_tolerance;
-    o.checks.area_centroid = a.centroid == "area";
-    if (o.checks.area_centroid) o.reproduce_prefix += " --centroid area";
-    o.checks.arithmetic_double = a.arithmetic == "double";
-    if (o.checks.arithmetic_double) o.reproduce_prefix += " --arithmetic double";
-    o.out_dir = a.out;
-    o.shrink = !a.no_shrink;
-    o.max_findings_per_row = a.max_findings;
-    o.shrink_max_seconds = a.shrink_seconds;
-    o.jobs = a.jobs;
-    o.repeat = a.repeat;
-    if (a.repeat < 1) throw audit::UsageError("--repeat: at least 1");
-    o.points_cache_dir = a.no_cache ? std::string() : !a.cache.empty() ? a.cache : audit::default_points_cache_dir();
-    if (!a.shard.empty()) {
-      const audit::ShardSpec spec = audit::parse_shard(a.shard);
-      o.shard_index = spec.index;
-      o.shard_count = spec.count;
-    }
-    if (isatty(STDERR_FILENO)) o.on_progress = print_progress;
-
-    audit::AuditReport report = audit::run_audit(engine, o);
+    engines::AuditSetup setup = engines::audit_setup(a);
+    if (isatty(STDERR_FILENO)) setup.options.on_progress = print_progress;
+    const audit::AuditReport report = audit::run_audit(setup.engine, setup.options);
     return print_report(report, a.json, a.json_file, a.junit);
   } catch (const audit::UsageError& e) {
     std::fprintf(stderr, "lepp audit: %s\n", e.what());
@@ -214,24 +66,8 @@ int run_audit_command(const AuditArgs& args) {
 
 int run_merge_command(const MergeArgs& a) {
   try {
-    std::vector<audit::MergeInput> shards;
-    for (const std::string& path : a.shards) {
-      if (!a.json.empty() && a.json != "-" && std::filesystem::exists(a.json) && std::filesystem::exists(path) &&
-          std::filesystem::equivalent(a.json, path))
-        throw audit::UsageError("--json " + a.json + " is one of the shard reports: give another file");
-      std::ifstream in(path);
-      if (!in) throw audit::UsageError("cannot read " + path);
-      nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-      if (j.is_discarded()) throw audit::UsageError(path + " is not JSON (a shard's report is lepp audit --shard K/N --json)");
-      shards.push_back({std::move(j), path});
-    }
     std::vector<std::string> warnings;
-    audit::AuditReport report;
-    try {
-      report = audit::merge_shards(shards, a.out, warnings);
-    } catch (const nlohmann::json::exception& e) {
-      throw audit::UsageError(std::string("a shard report lacks a field or has a wrong one: ") + e.what());
-    }
+    const audit::AuditReport report = audit::merge_shard_files(a.shards, a.out, a.json, warnings);
     for (const std::string& w : warnings) std::fprintf(stderr, "lepp audit merge: %s\n", w.c_str());
     return print_report(report, a.json == "-", a.json == "-" ? "" : a.json, a.junit);
   } catch (const audit::UsageError& e) {
@@ -243,7 +79,7 @@ int run_merge_command(const MergeArgs& a) {
 }  // namespace
 
 void add_audit_command(CLI::App& app, int& status) {
-  auto a = std::make_shared<AuditArgs>();
+  auto a = std::make_shared<audit::AuditRequest>();
   auto* cmd = app.add_subcommand("audit", "Audit a mesher (any program, or a built-in engine) against the paper's statements");
   cmd->add_option("--cmd", a->cmd, "Command template run per case: {in} .poly, {out} output prefix, {theta}, {method}");
   cmd->add_option("--engine", a->engine, "A built-in engine instead of --cmd")

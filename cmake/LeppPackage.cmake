@@ -36,7 +36,8 @@ install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/impl/include/lepp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # The registry always; the audit adapters with lepp::audit; never the peers (lepp_peer_engines: not packaged).
-set(_lepp_engine_headers_left_out PATTERN peer_engines.h EXCLUDE PATTERN audited_engines.h EXCLUDE)
+set(_lepp_engine_headers_left_out PATTERN peer_engines.h EXCLUDE PATTERN audited_engines.h EXCLUDE
+  PATTERN audit_setup.h EXCLUDE)
 if(NOT TARGET lepp_audit)
   list(APPEND _lepp_engine_headers_left_out PATTERN builtin_engines.h EXCLUDE PATTERN command_engine.h EXCLUDE)
 endif()

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `lepp refine`'s files: the input read and validated, the refined mesh (and trace) written.
+#include "lepp/engines/refine_files.h"
+
+#include <cstddef>
+#include <string>
+
+#include "lepp/input.h"
+#include "lepp/mesh_output.h"
+#include "lepp/trace_io.h"
+#include "lepp/validate.h"
+
+namespace lepp::engines {
+namespace {
+
+// FILE:LINE of a region's line in the input (FILE when its line is unknown).
+std::string detail_where(const Pslg& p, std::size_t region) {
+  const int line = region < p.region_lines.size() ? p.region_lines[region] : 0;
+  return line > 0 ? p.source + ":" + std::to_string(line) : p.source;
+}
+
+}  // namespace
+
+RefineInput read_refine_input(const RefineRequest& request) {
+  RefineInput in;
+  in.pslg = validate(read_input(request.input, in.warnings), request.domain, in.warnings);
+  // One note for the first region with a bound: the user learns the flag, not a list.
+  for (std::size_t r = 0; r < in.pslg.regions.size() && !request.region_areas; ++r)
+    if (in.pslg.regions[r].max_area > 0) {
+      in.unapplied_region_areas = detail_where(in.pslg, r) +
+                                  ": regional area bounds are read but not applied; pass --region-areas to apply them "
+                                  "(Triangle's -a with no number), or --max-area for one bound everywhere";
+      break;
+    }
+  return in;
+}
+
+void write_refine_outputs(const RefineRequest& request, const RefineResult& result, const MeshLabels& labels) {
+  // The names were checked by refine_request_error (msh2 with msh4) and the option parser.
+  const MeshFormatChoice output = choose_mesh_formats(request.formats);
+  MeshWriteOptions write_options;
+  write_options.binary = request.binary;
+  write_refined_mesh(request.output, result.mesh, labels, result.unimprovable, output.formats, write_options);
+  if (request.trace) write_trace(request.output + ".trace", trace_points(result.trace));
+}
+
+}  // namespace lepp::engines
