@@ -4,7 +4,9 @@
 // members of one round apart, so that their insertions do not depend on one
 // another (and could run at once).
 #pragma once
+#include <algorithm>
 #include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 #include "point_selection.h"
@@ -52,6 +54,8 @@ inline bool plain_choice(TriMesh& m, const Lepp& lepp, const Choice& c, SliverOb
 // holds it, on the circle included: a superset of what the insertion's flips
 // destroy) and its ring (the other triangles sharing an edge with the cavity).
 // Appended to `region`; false as soon as one is touched.
+inline constexpr std::size_t kScannedCavity = 32;  // larger cavities are hashed
+
 inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks& marks, std::vector<int>& region,
                             std::vector<int>& cavity) {
   cavity.clear();
@@ -83,6 +87,15 @@ inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks&
     for (int i = 0; i < 3; ++i)
       if (const int n = m.t(ti).nbr[i]; n >= 0 && marks.touched(nbr_tri(n))) return false;
   }
+  // Membership in the cavity: a scan while it is small, a hash set once it is large
+  // (a fan's cavity can hold thousands of triangles, and a scan per neighbour would
+  // make its flood quadratic).
+  thread_local std::unordered_set<int> large;
+  bool hashed = false;
+  auto in_cavity = [&](int n) {
+    if (hashed) return large.count(n) > 0;
+    return std::find(cavity.begin(), cavity.end(), n) != cavity.end();
+  };
   for (std::size_t k = 0; k < cavity.size(); ++k) {
     const int ti = cavity[k];
     if (marks.touched(ti)) return false;
@@ -90,14 +103,19 @@ inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks&
     for (int i = 0; i < 3; ++i) {
       if (f.nbr[i] < 0) continue;
       const int n = nbr_tri(f.nbr[i]);
-      bool known = false;
-      for (int x : cavity) known = known || x == n;
-      if (known) continue;
+      if (in_cavity(n)) continue;
       const FTri& g = m.t(n);
       // Whether a triangle is in the cavity depends on it alone, so the ring and the
       // cavity are the same sets whichever way the flood reaches them.
       if (f.seg[i] < 0 && incircle(m.p(g.v[0]), m.p(g.v[1]), m.p(g.v[2]), c.point) >= 0) {
         cavity.push_back(n);
+        if (hashed) {
+          large.insert(n);
+        } else if (cavity.size() > kScannedCavity) {
+          hashed = true;
+          large.clear();
+          large.insert(cavity.begin(), cavity.end());
+        }
       } else {
         if (marks.touched(n)) return false;
         region.push_back(n);

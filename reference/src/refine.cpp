@@ -231,9 +231,10 @@ class Refiner {
   bool cavity_and_ring(const Selection& s, const Lepp& lepp, const std::set<Tri>& touched, std::vector<Tri>& region) const {
     const CPoint p(s.point.x, s.point.y);
     std::vector<FH> cavity;
+    std::set<FH> in_cavity;  // a fan's cavity can hold thousands of faces: no scan per neighbour
     auto domain = [&](FH g) { return !tr_.cdt.is_infinite(g) && g->info().in_domain; };
     auto add = [&](FH g) {
-      if (std::find(cavity.begin(), cavity.end(), g) == cavity.end()) cavity.push_back(g);
+      if (in_cavity.insert(g).second) cavity.push_back(g);
     };
     if (s.split_face != FH()) {
       add(s.split_face);
@@ -255,12 +256,12 @@ class Refiner {
       if (touched.count(key(g))) return false;
       for (int i = 0; i < 3; ++i) {
         FH n = g->neighbor(i);
-        if (!domain(n) || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+        if (!domain(n) || in_cavity.count(n)) continue;
         const bool inside = !g->is_constrained(i) &&
                             CGAL::side_of_oriented_circle(n->vertex(0)->point(), n->vertex(1)->point(),
                                                           n->vertex(2)->point(), p) != CGAL::ON_NEGATIVE_SIDE;
         if (inside) {
-          cavity.push_back(n);
+          add(n);
         } else {
           if (touched.count(key(n))) return false;
           region.push_back(key(n));
