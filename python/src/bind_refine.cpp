@@ -3,7 +3,6 @@
 // the mesh comes back as arrays owning the engine's vectors. A guard stop
 // (Steiner budget, edge floor, time limit) is an outcome, never an exception.
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,6 +11,7 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "lepp/engines/refine_request.h"
 #include "lepp/engines/registry.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
@@ -21,49 +21,21 @@
 namespace lepp::python {
 namespace {
 
-struct RefineCall {
-  double min_angle = 30;
-  double max_area = 0;
-  bool region_areas = false;
-  std::string method = to_string(Method::Centroid), order = to_string(QueueOrder::Fifo),
-              engine = engines::to_string(engines::Engine::Fast);
-  std::int64_t max_steiner = -1;
-  double edge_floor = -1;
-  double time_limit = 0;
-  bool convex_hull = false, split_crossings = false, trace = false;
-  std::uint64_t order_seed = 0;
-  int threads = 0;
-};
-
 // The checks lepp refine's options make (CLI11 ranges and choices), as ValueError.
-RefineOptions options_of(const RefineCall& c) {
+RefineOptions options_of(const engines::RefineRequest& c) {
   if (!(c.min_angle >= 0 && c.min_angle <= 60)) throw std::invalid_argument("min_angle: must be in [0, 60] degrees");
   if (!(c.max_area >= 0) || std::isinf(c.max_area)) throw std::invalid_argument("max_area: must be a positive number (or None)");
-  const std::optional<Method> method = engines::parse_method(c.method);
-  if (!method) throw std::invalid_argument("method: " + engines::quoted_choices(engines::method_names()));
-  const std::optional<QueueOrder> order = engines::parse_order(c.order);
-  if (!order) throw std::invalid_argument("order: " + engines::quoted_choices(engines::order_names()));
+  if (!engines::parse_method(c.method)) throw std::invalid_argument("method: " + engines::quoted_choices(engines::method_names()));
+  if (!engines::parse_order(c.order)) throw std::invalid_argument("order: " + engines::quoted_choices(engines::order_names()));
   if (!engines::parse_engine(c.engine, engines::lepp_engines()))
     throw std::invalid_argument("engine: " + engines::quoted_choices(engines::names(engines::lepp_engines())));
   if (c.max_steiner < -1) throw std::invalid_argument("max_steiner: must be >= 0 (or None)");
   if (!(c.time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");
   if (c.threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: the machine's cores)");
-  RefineOptions o;
-  o.min_angle_deg = c.min_angle;
-  o.method = *method;
-  o.order = *order;
-  o.order_seed = c.order_seed;  // the random order's seed, as lepp refine --order-seed
-  o.threads = c.threads;        // the batch order's threads, as lepp refine --threads
-  o.max_steiner = c.max_steiner;
-  o.max_area = c.max_area;
-  o.region_area_bounds = c.region_areas;
-  o.time_limit_seconds = c.time_limit;
-  o.edge_floor = c.edge_floor;
-  o.trace = c.trace;
-  return o;
+  return engines::refine_options(c);  // the same options as lepp refine's
 }
 
-py::dict run(const py::dict& pslg, const RefineCall& call) {
+py::dict run(const py::dict& pslg, const engines::RefineRequest& call) {
   RefineOptions options = options_of(call);
   Pslg raw = pslg_from_dict(pslg);
   // Ctrl-C stops a long run: the engines call this now and then.
@@ -76,11 +48,11 @@ py::dict run(const py::dict& pslg, const RefineCall& call) {
   RefineResult result;
   MeshStats stats;
   MeshLabels labels;
-  const DomainOptions domain{call.convex_hull, call.split_crossings};
+  const DomainOptions& domain = call.domain;
   {
     py::gil_scoped_release release;
     input = validate(raw, domain, warnings);
-    result = engines::refine(*engines::parse_engine(call.engine, engines::lepp_engines()), input, options);
+    result = engines::refine(engines::refine_engine(call), input, options);
     stats = mesh_stats(result.mesh, input);
     // Markers and regions, and the segment ids as lepp refine writes them.
     labels = label_refined_mesh(result.mesh, input, domain);
@@ -160,8 +132,13 @@ void bind_refine(py::module_& m) {
       [](const py::dict& pslg, double min_angle, double max_area, bool region_areas, const std::string& method,
          const std::string& order, const std::string& engine, std::int64_t max_steiner, double edge_floor,
          double time_limit, bool convex_hull, bool split_crossings, bool trace, std::uint64_t order_seed, int threads) {
-        return run(pslg, RefineCall{min_angle, max_area, region_areas, method, order, engine, max_steiner, edge_floor,
-                                    time_limit, convex_hull, split_crossings, trace, order_seed, threads});
+        engines::RefineRequest call;  // lepp refine's request, less its files and printing
+        call.min_angle = min_angle, call.max_area = max_area, call.region_areas = region_areas;
+        call.method = method, call.order = order, call.engine = engine;
+        call.max_steiner = max_steiner, call.edge_floor = edge_floor, call.time_limit = time_limit;
+        call.domain.convex_hull = convex_hull, call.domain.split_crossings = split_crossings;
+        call.trace = trace, call.order_seed = order_seed, call.threads = threads;
+        return run(pslg, call);
       },
       py::arg("pslg"), py::arg("min_angle") = 30.0, py::arg("max_area") = 0.0, py::arg("region_areas") = false,
       py::arg("method") = to_string(Method::Centroid), py::arg("order") = to_string(QueueOrder::Fifo),
