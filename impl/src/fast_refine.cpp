@@ -196,7 +196,7 @@ class Refiner {
   // first (round_picks.h); the members are the same.
   void run_rounds(std::vector<Keyed>& initial, RefineResult& result) {
     std::sort(initial.begin(), initial.end(), key_less);
-    std::vector<Item> round, next;
+    std::vector<Item> round, next, ahead;  // ahead: the next round's queue as it is built
     for (const Keyed& k : initial) round.push_back(k.item);
     std::vector<Keyed> tails;
     std::vector<int> region, cavity;
@@ -315,7 +315,6 @@ class Refiner {
       // triangle older than the round but a kept one: the rest is moved as it is,
       // and read for the marks only when a member kept a triangle.
       queued.begin_round();
-      std::vector<Item>& ahead = spare_;
       ahead.clear();
       auto take = [&](const Item& it) {
         if (!still_there(mesh_, it) || queued.touched(it.tri)) return;
@@ -486,7 +485,6 @@ class Refiner {
   bool sized_ = false;
   Lepp lepp_;
   std::vector<Keyed> fresh_;  // the last insertion's batch
-  std::vector<Item> spare_;   // the batch order's next queue, as it is built
   int around_ = -1;           // a triangle of the last insertion's star
   // The batch order's windows: this many triangles per thread (round_picks.h),
   // unless RefineOptions::batch_window says otherwise. Measured: docs/BENCHMARKS.md.
