@@ -9,6 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "bad_queue.h"
 #include "point_selection.h"
 #include "predicates.h"
 #include "sliver_obstacles.h"
@@ -124,6 +125,33 @@ inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks&
   }
   region.insert(region.end(), cavity.begin(), cavity.end());
   return true;
+}
+
+// The next round's queue (section 7, "batch"): the entries that wait, in this
+// round's order (`waiting`, then the rest of the queue, round[rest, ...), which the
+// round never read), then the members' batches in member order; each triangle
+// once, at its first place, none that is gone. The rest holds each live triangle
+// once and none of the waiting ones; a batch holds only the round's new triangles
+// and, after a split off its line (section 6), the kept triangle, which is older
+// than the round and may wait in the rest. So the rest is moved as it is, and read
+// for the marks only when a member kept a triangle.
+inline void next_round_queue(const TriMesh& m, const std::vector<Item>& round, std::size_t rest,
+                             const std::vector<Item>& waiting, const std::vector<Keyed>& batches, bool kept,
+                             RoundMarks& queued, std::vector<Item>& out) {
+  queued.begin_round();
+  out.clear();
+  auto take = [&](const Item& it) {
+    if (!still_there(m, it) || queued.touched(it.tri)) return;
+    queued.mark(it.tri);
+    out.push_back(it);
+  };
+  for (const Item& it : waiting) take(it);
+  if (kept) {
+    for (std::size_t i = rest; i < round.size(); ++i)
+      if (still_there(m, round[i])) queued.mark(round[i].tri);
+  }
+  out.insert(out.end(), round.begin() + static_cast<std::ptrdiff_t>(rest), round.end());
+  for (const Keyed& k : batches) take(k.item);
 }
 
 }  // namespace lepp::fast

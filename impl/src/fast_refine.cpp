@@ -309,25 +309,7 @@ class Refiner {
         if (still_there(mesh_, item)) next.push_back(item);
         if (!go_on) break;
       }
-      // The next round: what waits, in this round's order, then each member's batch;
-      // each triangle once, where it first comes. The rest of the queue holds each
-      // live triangle once and none of the looked-at ones, and no batch holds a
-      // triangle older than the round but a kept one: the rest is moved as it is,
-      // and read for the marks only when a member kept a triangle.
-      queued.begin_round();
-      ahead.clear();
-      auto take = [&](const Item& it) {
-        if (!still_there(mesh_, it) || queued.touched(it.tri)) return;
-        queued.mark(it.tri);
-        ahead.push_back(it);
-      };
-      for (const Item& it : next) take(it);
-      if (kept) {
-        for (std::size_t i = rest; i < round.size(); ++i)
-          if (still_there(mesh_, round[i])) queued.mark(round[i].tri);
-      }
-      ahead.insert(ahead.end(), round.begin() + static_cast<std::ptrdiff_t>(rest), round.end());
-      for (const Keyed& k : tails) take(k.item);
+      next_round_queue(mesh_, round, rest, next, tails, kept, queued, ahead);
       std::swap(round, ahead);
     }
   }
