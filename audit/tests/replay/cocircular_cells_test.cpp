@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <set>
 
-#include "../src/replay/cocircular_cells.h"
+#include "../../src/replay/cocircular_cells.h"
 #include "lepp/validate.h"
 
 namespace lepp::audit::replay_detail {

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "audit_test_support.h"
+#include "../loop/audit_test_support.h"
 #include "lepp/engines/peer_engines.h"
 #include "lepp/io.h"
 #include "lepp/validate.h"

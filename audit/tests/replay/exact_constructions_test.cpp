@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-#include "../src/replay/exact_constructions.h"
+#include "../../src/replay/exact_constructions.h"
 
 namespace {
 
