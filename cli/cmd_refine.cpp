@@ -12,7 +12,6 @@
 #include "lepp/engines/refine_request.h"
 #include "lepp/engines/refine_summary.h"
 #include "lepp/io.h"
-#include "lepp/mesh_output.h"
 
 namespace lepp::cli {
 namespace {
@@ -41,16 +40,16 @@ int run_refine(const engines::RefineRequest& args) {
   }
   RefineResult result = engines::refine(engines::refine_engine(args), input.pslg, options);
   if (options.on_progress) std::fprintf(stderr, "\r\033[K");
-  const MeshLabels labels = label_refined_mesh(result.mesh, input.pslg, args.domain);
+  double write_seconds = 0;
   try {
-    engines::write_refine_outputs(args, result, labels);
+    write_seconds = engines::label_and_write_refine_outputs(args, result, input.pslg);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lepp refine: %s\n", e.what());
     return 1;
   }
 
   if (args.json)
-    std::printf("%s\n", engines::refine_json_summary(args, input, result).dump(2).c_str());
+    std::printf("%s\n", engines::refine_json_summary(args, input, result, write_seconds).dump(2).c_str());
   else
     std::printf("%s", engines::refine_text_summary(args, input, result).c_str());
   return exit_status(result.outcome);

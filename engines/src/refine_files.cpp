@@ -2,6 +2,7 @@
 // `lepp refine`'s files: the input read and validated, the refined mesh (and trace) written.
 #include "lepp/engines/refine_files.h"
 
+#include <chrono>
 #include <cstddef>
 #include <string>
 
@@ -22,6 +23,7 @@ std::string detail_where(const Pslg& p, std::size_t region) {
 }  // namespace
 
 RefineInput read_refine_input(const RefineRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
   RefineInput in;
   in.pslg = validate(read_input(request.input, in.warnings), request.domain, in.warnings);
   // One note for the first region with a bound: the user learns the flag, not a list.
@@ -32,6 +34,7 @@ RefineInput read_refine_input(const RefineRequest& request) {
                                   "(Triangle's -a with no number), or --max-area for one bound everywhere";
       break;
     }
+  in.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return in;
 }
 
@@ -42,6 +45,13 @@ void write_refine_outputs(const RefineRequest& request, const RefineResult& resu
   write_options.binary = request.binary;
   write_refined_mesh(request.output, result.mesh, labels, result.unimprovable, output.formats, write_options);
   if (request.trace) write_trace(request.output + ".trace", trace_points(result.trace));
+}
+
+double label_and_write_refine_outputs(const RefineRequest& request, RefineResult& result, const Pslg& input) {
+  const auto start = std::chrono::steady_clock::now();
+  const MeshLabels labels = label_refined_mesh(result.mesh, input, request.domain);
+  write_refine_outputs(request, result, labels);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace lepp::engines

@@ -2,6 +2,7 @@
 // What `lepp refine` prints of a run: its statistics as JSON (--json) or as text.
 #include "lepp/engines/refine_summary.h"
 
+#include <chrono>
 #include <cstddef>
 #include <iterator>
 #include <string>
@@ -23,10 +24,13 @@ std::size_t left_at_precision(const RefineResult& result) {
 
 }  // namespace
 
-nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInput& in, const RefineResult& result) {
+nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInput& in, const RefineResult& result,
+                                   double write_seconds) {
   const RefineOptions options = refine_options(request);
   const Pslg& input = in.pslg;
+  const auto stats_start = std::chrono::steady_clock::now();
   const MeshStats s = mesh_stats(result.mesh, input);
+  const double stats_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stats_start).count();
   const std::size_t at_precision = left_at_precision(result);
   nlohmann::json j = {
       {"input", request.input},
@@ -61,6 +65,14 @@ nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInp
       {"outcome", to_string(result.outcome)},
       {"stuck", result.stuck},
       {"seconds", result.seconds},
+      // Where the process's time goes (wall seconds; docs/BENCHMARKS.md): cdt and
+      // refine make up "seconds".
+      {"seconds_by_phase",
+       {{"read", in.seconds},
+        {"cdt", result.cdt_seconds},
+        {"refine", result.seconds - result.cdt_seconds},
+        {"write", write_seconds >= 0 ? nlohmann::json(write_seconds) : nlohmann::json()},
+        {"statistics", stats_seconds}}},
       {"warnings", in.warnings},
   };
   // The triangles left at double precision (1-based ids as in PREFIX.unimprovable), the first 50.

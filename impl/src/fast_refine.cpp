@@ -109,6 +109,7 @@ class Refiner {
     const bool sized = quality_.sized();
 
     RefineResult result;
+    result.cdt_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     budget_ = budget;
     floor_ = floor;
     start_ = start;

@@ -152,5 +152,24 @@ TEST(GuardCli, ConvergedIsExitZeroAndWarningsGoToStderr) {
   EXPECT_TRUE(fs::exists(prefix + ".node") && fs::exists(prefix + ".ele") && fs::exists(prefix + ".poly"));
 }
 
+// --json's seconds_by_phase: each phase of the process, for both engines; the engine's
+// two (cdt, refine) make up its "seconds". A phase left at zero or missing (a timer
+// that no longer wraps its work) fails.
+TEST(RefineJsonCli, SecondsByPhase) {
+  for (const char* engine : {"fast", "reference"}) {
+    const std::string prefix = (scratch() / (std::string("phases-") + engine)).string();
+    CliRun r = refine(kSquare400 + " -o " + prefix + " --json -q --min-angle 28 --engine " + engine);
+    if (engine_missing(r)) GTEST_SKIP() << r.err;
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const nlohmann::json& p = j.at("seconds_by_phase");
+    EXPECT_EQ(p.size(), 5u) << p.dump();
+    for (const char* phase : {"read", "cdt", "refine", "write", "statistics"})
+      EXPECT_GT(p.at(phase).get<double>(), 0.0) << engine << " " << phase << ": " << p.dump();
+    EXPECT_NEAR(p.at("cdt").get<double>() + p.at("refine").get<double>(), j.at("seconds").get<double>(), 1e-9)
+        << engine << ": " << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace lepp

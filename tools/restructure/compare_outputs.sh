@@ -20,6 +20,7 @@ work=$(realpath "$work")
 # seed of an unseeded run (`lepp theorems` prints it) are masked.
 masks=(-e "s#$work/(old|new)#WORK#g"
   -e 's/("[a-z_]*(seconds|_s|_ms|time)[a-z_]*"[[:space:]]*:[[:space:]]*)[0-9.eE+-]+/\1T/g'
+  -e 's/("(read|cdt|refine|write|statistics)"[[:space:]]*:[[:space:]]*)[0-9.eE+-]+/\1T/g'
   -e 's/[0-9]+(\.[0-9]+)?( ?)(s|ms|seconds)\b/T\2\3/g'
   -e 's/(commit|git)[ :]+[0-9a-f]{7,40}(-dirty)?/\1 C/g'
   -e 's/time="[0-9.]+"/time="T"/g'

@@ -126,6 +126,7 @@ struct RefineResult {
   std::int64_t looks = 0;               // the batch order: entries its rounds looked at (Lepp searched)
   std::string stuck;                    // for a guard outcome: which triangle, its Lepp
   double seconds = 0;
+  double cdt_seconds = 0;               // of `seconds`: the initial CDT (and its regions), before refining
 };
 
 // Defaults of the loop guards, a function of the input (ALGORITHM.md, "Termination").
