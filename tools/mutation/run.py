@@ -30,6 +30,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CATALOGUE = os.path.join(ROOT, "tools", "mutation", "mutants.txt")
+REPORT = os.path.join(ROOT, "docs", "MUTATION.md")
 FUZZ_TARGETS = ["fuzz_parse", "fuzz_refine", "fuzz_differential", "fuzz_cdt"]
 
 
@@ -214,7 +215,7 @@ def main():
     build = os.path.join(scratch, "build")
     results_path = os.path.join(os.path.dirname(scratch), "results.json")
     log_path = os.path.join(os.path.dirname(scratch), "mutation.log")
-    results = json.load(open(results_path)) if os.path.exists(results_path) else {"mutants": {}}
+    results = json.load(open(results_path)) if os.path.exists(results_path) else results_from_report(REPORT)
 
     def save():
         with open(results_path, "w") as f:
@@ -323,7 +324,35 @@ def main():
         # Leave the scratch build unmutated.
         run(nice(["cmake", "--build", build, "-j", str(a.jobs)]), log_path=log_path)
 
-    write_report(mutants, results, os.path.join(ROOT, "docs", "MUTATION.md"))
+    write_report(mutants, results, REPORT)
+
+
+def results_from_report(path):
+    """The results the report holds (its "Every mutant" table), for a tree without
+    build-mutation/results.json (a clean clone): a run of a few mutants then adds to
+    the report instead of dropping every earlier result from it. The baseline is not
+    kept with its commit, so a run on a later commit runs it again."""
+    results = {"mutants": {}}
+    if not os.path.exists(path):
+        return results
+    text = open(path, encoding="utf-8").read()
+    if b := re.search(r"^Baseline \(unmutated tree, commit (\w+)\): default ctest (.*), (\d+) s wall", text, re.M):
+        results["baseline_head"] = b.group(1)
+        results["baseline"] = {"exit": 0, "seconds": int(b.group(3)), "failed": [], "summary": b.group(2)}
+    rows = text.split("\n## Every mutant\n", 1)
+    for line in (rows[1].splitlines() if len(rows) == 2 else []):
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if len(cells) != 5 or not cells[0].startswith("`"):
+            continue
+        status, by = cells[3], cells[4]
+        stage = ""
+        if m := re.fullmatch(r"(\w[\w-]*) \((.*)\)", status):
+            status, stage = m.group(1), m.group(2)
+        if status == "not run":
+            continue
+        results["mutants"][cells[0].strip("`")] = {"status": status, "stage": stage, "seconds": 0,
+                                                   "killed_by": [b for b in by.split(", ") if b], "from_report": True}
+    return results
 
 
 def write_report(mutants, results, path):
