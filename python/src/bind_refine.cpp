@@ -11,12 +11,13 @@
 
 #include "arrays.h"
 #include "bindings.h"
+#include "lepp/engines/refine_files.h"
 #include "lepp/engines/refine_request.h"
+#include "lepp/engines/refine_summary.h"
 #include "lepp/engines/registry.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/mesh_output.h"
-#include "lepp/stats.h"
 
 namespace lepp::python {
 namespace {
@@ -43,19 +44,18 @@ py::dict run(const py::dict& pslg, const engines::RefineRequest& call) {
     py::gil_scoped_acquire gil;
     check_signals();
   };
-  Pslg input;
-  std::vector<std::string> warnings;
+  engines::RefineInput in;  // as lepp refine reads it, less the file
   RefineResult result;
-  MeshStats stats;
   MeshLabels labels;
-  const DomainOptions& domain = call.domain;
+  nlohmann::json summary;
+  const Pslg& input = in.pslg;
   {
     py::gil_scoped_release release;
-    input = validate(raw, domain, warnings);
+    in.pslg = validate(raw, call.domain, in.warnings);
     result = engines::refine(engines::refine_engine(call), input, options);
-    stats = mesh_stats(result.mesh, input);
     // Markers and regions, and the segment ids as lepp refine writes them.
-    labels = label_refined_mesh(result.mesh, input, domain);
+    labels = label_refined_mesh(result.mesh, input, call.domain);
+    summary = engines::refine_json_summary(call, in, result);
   }
   py::dict out;
   std::vector<int> edges, edge_segments;
@@ -91,36 +91,16 @@ py::dict run(const py::dict& pslg, const engines::RefineRequest& call) {
   } else {
     out["trace"] = py::none();
   }
-  const double avg_lepp = average_lepp_size(result);
-  py::dict s;  // the keys of lepp refine --json
-  s["engine"] = call.engine;
-  s["method"] = to_string(options.method);
-  s["order"] = to_string(options.order);
-  s["min_angle_target"] = call.min_angle;
-  s["max_area"] = call.max_area;
-  s["region_areas"] = call.region_areas;
-  s["input_vertices"] = input.vertices.size();
-  s["steiner_points"] = result.steiner_points;
-  s["vertices"] = stats.vertices;
-  s["triangles"] = stats.triangles;
-  s["min_angle"] = stats.min_angle_deg;
-  s["avg_min_angle"] = stats.avg_min_angle_deg;
-  s["min_area_quality"] = stats.min_area_quality;
-  s["shortest_edge_ratio"] = stats.shortest_edge_ratio;
-  s["avg_lepp_size"] = avg_lepp;
-  s["cocircular_ties"] = result.cocircular_ties;
-  s["area_refined"] = result.area_refined;
-  s["unimprovable"] = result.unimprovable.size();
-  s["outcome"] = to_string(result.outcome);
-  s["stuck"] = result.stuck;
-  s["seconds"] = result.seconds;
-  const bool batch = options.order == QueueOrder::Batch;  // the batch order's rounds and looks, else None
-  s["rounds"] = batch ? py::object(py::int_(result.rounds)) : py::object(py::none());
-  s["looks"] = batch ? py::object(py::int_(result.looks)) : py::object(py::none());
-  out["statistics"] = s;
+  // The keys of lepp refine --json, less those of its files: the input and output
+  // names, and the phases that read and write them.
+  summary.erase("input");
+  summary.erase("output");
+  summary["seconds_by_phase"].erase("read");
+  summary["seconds_by_phase"].erase("write");
+  out["statistics"] = py::module_::import("json").attr("loads")(summary.dump());
   out["outcome"] = to_string(result.outcome);
   out["converged"] = exit_status(result.outcome) == 0;
-  out["warnings"] = warnings;
+  out["warnings"] = in.warnings;
   return out;
 }
 

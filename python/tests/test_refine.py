@@ -105,6 +105,20 @@ def test_batch_statistics_as_the_cli_json(workdir):
     assert fifo.statistics["rounds"] is None and fifo.statistics["looks"] is None
 
 
+def test_statistics_are_the_cli_json_less_its_files(workdir):
+    # The same keys and values as `lepp refine --json`, less the file names and the
+    # phases that read and write files; only the timings differ.
+    path = corpus("hostile", "duplicate-vertices.poly")
+    mesh = lepp.refine(path, min_angle=25)
+    _, cli = cli_mesh(path, str(workdir / "m"), "--min-angle", "25")
+    assert cli["warnings"] and mesh.warnings == cli["warnings"]
+    timings = ("seconds", "seconds_by_phase")
+    ours = {k: v for k, v in mesh.statistics.items() if k not in timings}
+    theirs = {k: v for k, v in cli.items() if k not in timings + ("input", "output")}
+    assert ours == theirs
+    assert set(mesh.statistics["seconds_by_phase"]) == {"cdt", "refine", "statistics"}
+
+
 def test_random_order_seed_changes_the_mesh():
     # The seed is passed through: two seeds give two meshes (A at 25 degrees), one seed gives one.
     path = corpus("paper", "A.poly")
