@@ -40,18 +40,18 @@ int run_refine(const engines::RefineRequest& args) {
   }
   RefineResult result = engines::refine(engines::refine_engine(args), input.pslg, options);
   if (options.on_progress) std::fprintf(stderr, "\r\033[K");
-  double write_seconds = 0;
+  engines::RefineWritten written;
   try {
-    write_seconds = engines::label_and_write_refine_outputs(args, result, input.pslg);
+    written = engines::write_refine_files(args, result, input.pslg);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lepp refine: %s\n", e.what());
     return 1;
   }
 
   if (args.json)
-    std::printf("%s\n", engines::refine_json_summary(args, input, result, write_seconds).dump(2).c_str());
+    std::printf("%s\n", engines::refine_json_summary(args, input, result, written).dump(2).c_str());
   else
-    std::printf("%s", engines::refine_text_summary(args, input, result).c_str());
+    std::printf("%s", engines::refine_text_summary(args, input, result, written).c_str());
   return exit_status(result.outcome);
 }
 
@@ -89,8 +89,9 @@ void add_refine_command(CLI::App& app, int& status) {
       ->check(CLI::IsMember(engines::order_names()));
   cmd->add_option("--order-seed", args->order_seed, "Seed of --order random (SplitMix64, docs/ALGORITHM.md)")->default_val(0);
   cmd->add_option("--threads", args->threads,
-                  "Threads for --order batch's selection (fast engine; 0: the machine's cores). The mesh is the same "
-                  "for every number; the other orders run on one")
+                  "Threads for --order batch's selection (fast engine; 0: the machine's cores), and for the output: "
+                  "the statistics beside the writing, Triangle's .node beside its .ele. The mesh and files are the "
+                  "same for every number; the other orders refine on one")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-steiner", args->max_steiner, "Steiner budget; default 100000 + 1000 x (vertices + segments)")

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // PREFIX.node/.ele/.poly (and .unimprovable) in and out, as Triangle writes them.
 #include <cstdio>
+#include <exception>
 #include <fstream>
+#include <functional>
+#include <future>
 #include <limits>
 #include <memory>
 
@@ -88,35 +91,57 @@ Mesh read_mesh(const std::string& prefix) {
   return mesh;
 }
 
-void write_mesh(const std::string& prefix, const Mesh& mesh) {
+namespace {
+
+void write_node_file(const std::string& prefix, const Mesh& mesh) {
+  BlockFile out(prefix + ".node");
+  out.print("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n");
+  out.print("{} 2 0 1\n", mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
+  out.close();
+}
+
+void write_ele_and_poly_files(const std::string& prefix, const Mesh& mesh) {
+  {
+    BlockFile out(prefix + ".ele");
+    out.print("{} 3 0\n", mesh.triangles.size());
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const Tri& t = mesh.triangles[i];
+      out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
+    }
+    out.close();
+  }
+  BlockFile out(prefix + ".poly");
+  out.print("# lepp mesh: constrained edges; marker = input segment number (1-based), 0 if unknown\n");
+  out.print("0 2 0 1\n{} 1\n", mesh.constrained_edges.size());
+  for (std::size_t i = 0; i < mesh.constrained_edges.size(); ++i) {
+    const ConstrainedEdge& e = mesh.constrained_edges[i];
+    out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, e.a + 1, e.b + 1, e.segment + 1);
+  }
+  out.print("0\n");
+  out.close();
+}
+
+}  // namespace
+
+void write_mesh(const std::string& prefix, const Mesh& mesh, int threads) {
   try {
-    {
-      BlockFile out(prefix + ".node");
-      out.print("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n");
-      out.print("{} 2 0 1\n", mesh.vertices.size());
-      for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-        out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
-      out.close();
-    }
-    {
-      BlockFile out(prefix + ".ele");
-      out.print("{} 3 0\n", mesh.triangles.size());
-      for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-        const Tri& t = mesh.triangles[i];
-        out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
+    if (threads > 1) {
+      // Each file is written by one thread alone; the .node's error, if any, is
+      // rethrown here after the others are written (get waits for it).
+      std::future<void> node = std::async(std::launch::async, write_node_file, std::cref(prefix), std::cref(mesh));
+      std::exception_ptr other;
+      try {
+        write_ele_and_poly_files(prefix, mesh);
+      } catch (...) {
+        other = std::current_exception();
       }
-      out.close();
-    }
-    {
-      BlockFile out(prefix + ".poly");
-      out.print("# lepp mesh: constrained edges; marker = input segment number (1-based), 0 if unknown\n");
-      out.print("0 2 0 1\n{} 1\n", mesh.constrained_edges.size());
-      for (std::size_t i = 0; i < mesh.constrained_edges.size(); ++i) {
-        const ConstrainedEdge& e = mesh.constrained_edges[i];
-        out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, e.a + 1, e.b + 1, e.segment + 1);
-      }
-      out.print("0\n");
-      out.close();
+      node.get();
+      if (other) std::rethrow_exception(other);
+    } else {
+      write_node_file(prefix, mesh);
+      write_ele_and_poly_files(prefix, mesh);
     }
   } catch (const std::system_error& e) {
     throw InputError(prefix, 0, fmt::format("cannot write mesh: {}", e.what()));

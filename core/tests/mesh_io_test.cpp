@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <random>
 
@@ -68,6 +69,47 @@ TEST(MeshIo, WriteThenReadIsBitIdentical) {
     EXPECT_EQ(back.constrained_edges[i].b, mesh.constrained_edges[i].b);
   }
   for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// threads > 1 writes the .node on a second thread: the same three files, byte for byte.
+TEST(MeshIo, TwoThreadsWriteTheSameFiles) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(3000);
+  mesh.input_vertices = 700;
+  for (int i = 0; i + 2 < 3000; i += 3) mesh.triangles.push_back({i, i + 2, i + 1});
+  for (int i = 0; i + 1 < 3000; i += 11) mesh.constrained_edges.push_back({i, i + 1, i % 9});
+  const std::string one = temp_prefix("one_thread"), two = temp_prefix("two_threads");
+  write_mesh(one, mesh, 1);
+  write_mesh(two, mesh, 2);
+  for (const char* ext : {".node", ".ele", ".poly"}) {
+    const std::string a = file_bytes(one + ext);
+    EXPECT_FALSE(a.empty()) << ext;
+    EXPECT_EQ(a, file_bytes(two + ext)) << ext;
+    std::filesystem::remove(one + ext);
+    std::filesystem::remove(two + ext);
+  }
+}
+
+// Where no file can be written, both threads fail: one InputError naming the prefix,
+// never std::terminate from an exception left in a thread.
+TEST(MeshIo, TwoThreadsThatCannotWriteThrowOneInputError) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(10);
+  mesh.triangles.push_back({0, 1, 2});
+  const std::string prefix = "/nonexistent-lepp-directory/mesh";
+  for (int threads : {1, 2}) {
+    try {
+      write_mesh(prefix, mesh, threads);
+      ADD_FAILURE() << "no error with " << threads << " threads";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(prefix), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(MeshIo, WritePolyThenReadPoly) {

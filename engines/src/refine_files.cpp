@@ -2,8 +2,11 @@
 // `lepp refine`'s files: the input read and validated, the refined mesh (and trace) written.
 #include "lepp/engines/refine_files.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <future>
+#include <thread>
 #include <string>
 
 #include "lepp/input.h"
@@ -43,15 +46,34 @@ void write_refine_outputs(const RefineRequest& request, const RefineResult& resu
   const MeshFormatChoice output = choose_mesh_formats(request.formats);
   MeshWriteOptions write_options;
   write_options.binary = request.binary;
+  write_options.threads = output_threads(request);
   write_refined_mesh(request.output, result.mesh, labels, result.unimprovable, output.formats, write_options);
   if (request.trace) write_trace(request.output + ".trace", trace_points(result.trace));
 }
 
-double label_and_write_refine_outputs(const RefineRequest& request, RefineResult& result, const Pslg& input) {
-  const auto start = std::chrono::steady_clock::now();
+int output_threads(const RefineRequest& request) {
+  return request.threads > 0 ? request.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
   const MeshLabels labels = label_refined_mesh(result.mesh, input, request.domain);
+  // Both only read the labelled mesh.
+  auto measure = [&result, &input] {
+    const auto begin = Clock::now();
+    RefineWritten w;
+    w.stats = mesh_stats(result.mesh, input);
+    w.statistics_seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+    return w;
+  };
+  std::future<RefineWritten> beside;
+  if (output_threads(request) > 1) beside = std::async(std::launch::async, measure);
   write_refine_outputs(request, result, labels);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double write_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  RefineWritten written = beside.valid() ? beside.get() : measure();
+  written.write_seconds = write_seconds;
+  return written;
 }
 
 }  // namespace lepp::engines

@@ -24,13 +24,20 @@ std::size_t left_at_precision(const RefineResult& result) {
 
 }  // namespace
 
+nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInput& in, const RefineResult& result) {
+  const auto start = std::chrono::steady_clock::now();
+  RefineWritten unwritten;
+  unwritten.stats = mesh_stats(result.mesh, in.pslg);
+  unwritten.statistics_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  unwritten.write_seconds = -1;
+  return refine_json_summary(request, in, result, unwritten);
+}
+
 nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInput& in, const RefineResult& result,
-                                   double write_seconds) {
+                                   const RefineWritten& written) {
   const RefineOptions options = refine_options(request);
   const Pslg& input = in.pslg;
-  const auto stats_start = std::chrono::steady_clock::now();
-  const MeshStats s = mesh_stats(result.mesh, input);
-  const double stats_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stats_start).count();
+  const MeshStats& s = written.stats;
   const std::size_t at_precision = left_at_precision(result);
   nlohmann::json j = {
       {"input", request.input},
@@ -71,8 +78,8 @@ nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInp
        {{"read", in.seconds},
         {"cdt", result.cdt_seconds},
         {"refine", result.seconds - result.cdt_seconds},
-        {"write", write_seconds >= 0 ? nlohmann::json(write_seconds) : nlohmann::json()},
-        {"statistics", stats_seconds}}},
+        {"write", written.write_seconds >= 0 ? nlohmann::json(written.write_seconds) : nlohmann::json()},
+        {"statistics", written.statistics_seconds}}},
       {"warnings", in.warnings},
   };
   // The triangles left at double precision (1-based ids as in PREFIX.unimprovable), the first 50.
@@ -88,9 +95,10 @@ nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInp
   return j;
 }
 
-std::string refine_text_summary(const RefineRequest& request, const RefineInput& in, const RefineResult& result) {
+std::string refine_text_summary(const RefineRequest& request, const RefineInput& in, const RefineResult& result,
+                                const RefineWritten& written) {
   const RefineOptions options = refine_options(request);
-  const MeshStats s = mesh_stats(result.mesh, in.pslg);
+  const MeshStats& s = written.stats;
   const std::size_t at_precision = left_at_precision(result);
   std::string text;
   auto out = std::back_inserter(text);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -169,6 +170,29 @@ TEST(RefineJsonCli, SecondsByPhase) {
     EXPECT_NEAR(p.at("cdt").get<double>() + p.at("refine").get<double>(), j.at("seconds").get<double>(), 1e-9)
         << engine << ": " << r.out;
   }
+}
+
+// --threads 2 writes the statistics beside the files and the .node beside the .ele:
+// the same files and the same printed statistics as one thread (the timings aside).
+TEST(RefineJsonCli, OutputThreadsWriteTheSameFilesAndStatistics) {
+  std::string files[2], text[2];
+  for (int threads : {1, 2}) {
+    const std::string prefix = (scratch() / ("output-threads-" + std::to_string(threads))).string();
+    CliRun r = refine(kSquare400 + " -o " + prefix + " -q --min-angle 30 --max-area 0.5 --threads " + std::to_string(threads));
+    if (engine_missing(r)) GTEST_SKIP() << r.err;
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* ext : {".node", ".ele", ".poly"}) {
+      std::ifstream in(prefix + ext, std::ios::binary);
+      files[threads - 1] += std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("seconds", 0) != 0) text[threads - 1] += line + "\n";
+  }
+  EXPECT_GT(files[0].size(), 10000u);
+  EXPECT_TRUE(files[0] == files[1]) << "the files differ";
+  EXPECT_NE(text[0].find("smallest angle"), std::string::npos) << text[0];
+  EXPECT_EQ(text[0], text[1]);
 }
 
 }  // namespace

@@ -33,7 +33,9 @@ Pslg read_node(const std::string& path);
 // the constrained edges; the marker, if >= 1, is read as input segment id + 1).
 Mesh read_mesh(const std::string& prefix);
 // Writes PREFIX.node, PREFIX.ele, PREFIX.poly with 1-based numbering, as Triangle does.
-void write_mesh(const std::string& prefix, const Mesh& mesh);
+// threads > 1: the .node (its coordinates cost the most to format) on a second
+// thread beside the .ele and .poly; the same files.
+void write_mesh(const std::string& prefix, const Mesh& mesh, int threads = 1);
 // Writes a .poly file of a PSLG (used by tests, fuzzers and generators).
 void write_poly(const std::string& path, const Pslg& pslg);
 

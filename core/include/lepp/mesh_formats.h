@@ -24,6 +24,7 @@ enum class MeshFormat {
 
 struct MeshWriteOptions {
   bool binary = false;  // .msh only: Gmsh's binary variant instead of ASCII (.vtu is always binary)
+  int threads = 1;      // Triangle's files: > 1 writes the .node beside the .ele (write_mesh in lepp/io.h)
 };
 
 // "triangle", "vtu", "msh2", "msh4": the names `lepp refine --format` takes.

@@ -8,6 +8,7 @@
 #include "lepp/mesh_labels.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
+#include "lepp/stats.h"
 
 namespace lepp::engines {
 
@@ -28,9 +29,23 @@ RefineInput read_refine_input(const RefineRequest& request);
 // Throws std::exception naming the file that cannot be written.
 void write_refine_outputs(const RefineRequest& request, const RefineResult& result, const MeshLabels& labels);
 
+// What writing a run leaves for its summary (refine_summary.h): the statistics of
+// the labelled mesh, and the wall seconds of the two phases.
+struct RefineWritten {
+  MeshStats stats;
+  double write_seconds = 0;       // labelling and writing every file
+  double statistics_seconds = 0;  // mesh_stats
+};
+
+// The threads the request's files and statistics may use: request.threads, 0 for
+// the machine's cores.
+int output_threads(const RefineRequest& request);
+
 // The result's mesh labelled (label_refined_mesh, with the request's domain options)
-// and written (write_refine_outputs): the wall seconds it took (the summary's "write"
-// phase). Throws as write_refine_outputs.
-double label_and_write_refine_outputs(const RefineRequest& request, RefineResult& result, const Pslg& input);
+// and written (write_refine_outputs), and its statistics computed (mesh_stats). With
+// more than one output thread the statistics run beside the writing, and Triangle's
+// .node is written beside its .ele: the same files and numbers. Throws as
+// write_refine_outputs.
+RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input);
 
 }  // namespace lepp::engines

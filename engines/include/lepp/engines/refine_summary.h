@@ -12,13 +12,16 @@
 namespace lepp::engines {
 
 // `lepp refine --json`'s object (docs/FORMATS.md), "lepp_version" included. `result`
-// is the run of `request` on `input`, its mesh labelled (label_refined_mesh).
-// `write_seconds`: what label_and_write_refine_outputs returned (null in the
-// phases when negative); the statistics phase is this function's own.
+// is the run of `request` on `input`, its mesh labelled (label_refined_mesh), and
+// `written` what write_refine_files returned for it.
 nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInput& input, const RefineResult& result,
-                                   double write_seconds = -1);
+                                   const RefineWritten& written);
+// The same with no files written (Python's statistics): the statistics computed
+// here, the "write" phase null.
+nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInput& input, const RefineResult& result);
 
 // `lepp refine`'s text: one "name  value" line per statistic, each ending in '\n'.
-std::string refine_text_summary(const RefineRequest& request, const RefineInput& input, const RefineResult& result);
+std::string refine_text_summary(const RefineRequest& request, const RefineInput& input, const RefineResult& result,
+                                const RefineWritten& written);
 
 }  // namespace lepp::engines
