@@ -311,5 +311,47 @@ TEST(CertifyPrecision, ListedPathAtOffsetWithinUlpsCertifiesFromBothEngines) {
   EXPECT_FALSE(off.certified()) << certify::format_report(off);
 }
 
+// The chain walk goes round a split's sliver (ALGORITHM.md section 6, "A split off its
+// line"; docs/CERTIFIER.md, the walk): in lepp's mesh of
+// split-off-line-midpoint-2e40.poly the triangle beside the sliver is kept, so the vertex
+// before the point is joined to the segment's end by the sliver's unlisted base too.
+// The listed path covers it while every chain edge is listed; the walk is taken when
+// one is not. Dropping each listed edge from the list in turn, the report names that
+// edge, and the walk, still going round through the point, finds every other edge on
+// its chain. One drop is the exception: the edge from the point to the vertex before
+// it (161-165 here): no listed step then leads on from that vertex, so the walk ends
+// at the segment's end by the sliver's base, names the base as the unlisted edge and
+// the point's other edge as on no chain (the mesh is rejected, the edges named are
+// not the dropped one). A walk that ended by the base whenever it could named the
+// chain's edges through the point as on no chain for nine more drops.
+TEST(CertifyPrecision, ChainWalkGoesRoundTheSliverWithAnEdgeUnlisted) {
+  std::vector<std::string> warnings;
+  const Pslg p = validate(read_input(LEPP_SOURCE_DIR "/corpus/regressions/precision/split-off-line-midpoint-2e40.poly", warnings),
+                          DomainOptions{}, warnings);
+  RefineOptions o;
+  o.method = Method::Midpoint;
+  o.min_angle_deg = 17.899999999999999;
+  const RefineResult f = fast::refine(p, o);
+  ASSERT_TRUE(certify::certify(p, f.mesh, {}).certified());
+  int other = 0;
+  std::string reports;
+  for (std::size_t k = 0; k < f.mesh.constrained_edges.size(); ++k) {
+    Mesh dropped = f.mesh;
+    const ConstrainedEdge e = dropped.constrained_edges[k];
+    dropped.constrained_edges.erase(dropped.constrained_edges.begin() + static_cast<std::ptrdiff_t>(k));
+    const certify::Report rep = certify::certify(p, dropped, {});
+    bool named = false;
+    for (const certify::Violation& v : rep.violations)
+      for (const auto& ed : v.edges)
+        named = named || (v.reason == certify::Reason::ConstrainedEdgeUnlisted &&
+                          std::min(ed[0], ed[1]) == std::min(e.a, e.b) && std::max(ed[0], ed[1]) == std::max(e.a, e.b));
+    if (!named || rep.violations.size() != 1) {
+      ++other;
+      reports += "dropped " + std::to_string(e.a) + "-" + std::to_string(e.b) + ":\n" + certify::format_report(rep);
+    }
+  }
+  EXPECT_LE(other, 1) << "drops whose report does not name the dropped edge alone:\n" << reports;
+}
+
 }  // namespace
 }  // namespace lepp
