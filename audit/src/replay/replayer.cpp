@@ -289,7 +289,7 @@ bool Replayer::match_paper(const Point& p, ReplayChoice& out) {
 // rounded one ulp off its line to the outside of the domain lies in an
 // outside triangle whose neighbours need not touch the pair (docs/CONFORMANCE.md,
 // "A midpoint outside the domain"). Slow (the whole mesh), so only here.
-bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) const {
+bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) {
   bool found = false, insertable_found = false;
   double nearest = 0;
   for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
@@ -305,6 +305,7 @@ bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) const {
       nearest = d;
     }
   });
+  if (found) ++searched_everywhere_;
   return found;
 }
 

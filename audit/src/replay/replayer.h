@@ -46,6 +46,12 @@ class Replayer {
   ReplayRules rules;
   Triangulation tr;
   std::int64_t cocircular_flips_ = 0;
+  // Steps whose choice only the last search, over the whole mesh (match_everywhere),
+  // found: the searches around the point and of the cocircular cells missed it.
+  // For tests (a choice the search one ring wider must find:
+  // audit/tests/replay/wider_search_test.cpp), and it shows how often the slow
+  // search runs.
+  std::int64_t searched_everywhere_ = 0;
   bool search_exhausted_ = false;  // the last match's search of the cells ran out of its budget
 
  private:
@@ -101,7 +107,7 @@ class Replayer {
   bool insertable_as(const Point& p, const Terminal& t, const Candidate& c) const;
   bool match_here(const Point& p, ReplayChoice& out, bool wide = false);
   bool match_paper(const Point& p, ReplayChoice& out);
-  bool match_everywhere(const Point& p, ReplayChoice& out) const;
+  bool match_everywhere(const Point& p, ReplayChoice& out);  // counts searched_everywhere_
   void lepp_ends(FH f, int entry, std::vector<FH>& path, std::vector<std::pair<std::vector<FH>, Terminal>>& out,
                  std::size_t cap) const;
   // Calls f(lepp, terminal) for every Lepp end (under every tie resolution, at
