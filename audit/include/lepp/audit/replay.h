@@ -103,8 +103,10 @@ class Replay {
   Replay& operator=(const Replay&) = delete;
 
   // A choice within tolerance of p that some bad triangle's Lepp (under some
-  // resolution of ties) leads to; false if none. Searches only around p:
-  // from the terminal triangles near p backwards along the Lepp tree.
+  // resolution of ties) leads to; false if none. Searches around p first (from
+  // the terminal triangles near p backwards along the Lepp tree, then one ring of
+  // triangles wider, then the cocircular cells' other triangulations), and only
+  // then every bad triangle's Lepp (slow; docs/CONFORMANCE.md).
   bool match(const Point& p, ReplayChoice& choice);
   // Inserts p as the reference does: splits choice.split_edge when it is set
   // (and when p lies on a constrained edge), otherwise a Delaunay insertion.
