@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Line and branch coverage of core/, impl/, reference/ and properties/certify/
+# Line and branch coverage of core/, impl/, reference/, properties/certify/, audit/ and engines/
 # (docs/COVERAGE.md): an instrumented build in its own tree (g++ --coverage -O1),
 # measured under (a) the default ctest and (b) the replay of every fuzz corpus,
 # then the report, with each uncovered branch's reason from tools/coverage/reasons.txt.
@@ -35,12 +35,12 @@ niceness=${LEPP_COVERAGE_NICE:-19}
 out=$build/coverage
 steps=("$@")
 [ ${#steps[@]} -eq 0 ] && steps=(build ctest fuzz llvm report)
-targets=(fuzz_parse fuzz_refine fuzz_differential fuzz_cdt)
+targets=(fuzz_parse fuzz_refine fuzz_differential fuzz_cdt fuzz_audit)
 
 # What is measured: the libraries, not their tests, benchmarks or the CLI; only this
 # build's counters (other build trees of the same sources would be merged in).
 gcovr_args=("$build" -r "$root" --object-directory "$build" -j "$jobs"
-  --filter 'core/' --filter 'impl/' --filter 'reference/' --filter 'properties/certify/'
+  --filter 'core/' --filter 'impl/' --filter 'reference/' --filter 'properties/certify/' --filter 'audit/' --filter 'engines/'
   --exclude '.*/tests/.*' --exclude '.*/bench/.*'
   --exclude-throw-branches --exclude-unreachable-branches)
 
