@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cstddef>
 #include <future>
-#include <thread>
 #include <string>
+#include <thread>
 
 #include "lepp/input.h"
 #include "lepp/mesh_output.h"
