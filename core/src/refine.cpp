@@ -8,9 +8,14 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace lepp {
+
+int threads_or_cores(int threads) {
+  return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& options) {
   // Generous for every converging run we have seen (the paper's problems need

@@ -2,12 +2,10 @@
 // `lepp refine`'s files: the input read and validated, the refined mesh (and trace) written.
 #include "lepp/engines/refine_files.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <future>
 #include <string>
-#include <thread>
 
 #include "lepp/input.h"
 #include "lepp/mesh_output.h"
@@ -52,7 +50,7 @@ void write_refine_outputs(const RefineRequest& request, const RefineResult& resu
 }
 
 int output_threads(const RefineRequest& request) {
-  return request.threads > 0 ? request.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return threads_or_cores(request.threads);
 }
 
 RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input) {

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -203,7 +202,7 @@ class Refiner {
     std::vector<int> region, cavity;
     RoundMarks marks, queued;
     Choice choice;
-    const int threads = opt_.threads > 0 ? opt_.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = threads_or_cores(opt_.threads);
     const std::size_t per_thread = opt_.batch_window > 0 ? static_cast<std::size_t>(opt_.batch_window) : kWindowPerThread;
     const std::size_t window = per_thread * static_cast<std::size_t>(threads);
     std::vector<std::size_t> wanted;  // the window's triangles not touched as it begins
@@ -230,13 +229,13 @@ class Refiner {
         // A closed round, or one past its looks (kBatchLooksPerMember per member and
         // kBatchFreeLooks more: where most entries wait, as in a fan that all their
         // cavities hold, it ends early), leaves the rest of its queue as it is.
-        if (closed || looks >= kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks) {
+        if (closed || looks >= batch_looks_allowed(members)) {
           rest = i;
           break;
         }
         if (threads > 1 && i == window_end) {
           // No further than the looks the round has left: those it makes in any case.
-          const std::size_t left = kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks - looks;
+          const std::size_t left = batch_looks_allowed(members) - looks;
           window_end = std::min(round.size(), i + std::min(window, left)), k = 0;
           wanted.clear();
           for (std::size_t j = i; j < window_end; ++j)

@@ -152,7 +152,7 @@ class Refiner {
         if (outcome_ != Outcome::Converged) break;
         // A closed round, or one past its looks (kBatchLooksPerMember per member and
         // kBatchFreeLooks more), leaves the rest of its queue as it is.
-        if (closed || looks >= kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks) {
+        if (closed || looks >= batch_looks_allowed(members)) {
           rest = i;
           break;
         }

@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include "lepp/refine.h"
+
 
 namespace lepp::audit {
 namespace {
@@ -14,9 +16,7 @@ thread_local std::size_t t_worker = 0;
 }  // namespace
 
 std::size_t resolve_jobs(std::size_t jobs) {
-  if (jobs > 0) return jobs;
-  const unsigned cores = std::thread::hardware_concurrency();
-  return cores > 0 ? cores : 1;
+  return jobs > 0 ? jobs : static_cast<std::size_t>(threads_or_cores(0));
 }
 
 std::size_t worker_index() { return t_worker; }

@@ -32,6 +32,10 @@ enum class QueueOrder { Fifo, Lifo, Flip, Random, SmallestAngle, Batch };
 // cavity holds) rounds stay short instead of looking at every waiting entry again.
 constexpr std::size_t kBatchLooksPerMember = 2;
 constexpr std::size_t kBatchFreeLooks = 8;
+// The looks a round with `members` members may make (step 0), in both engines.
+constexpr std::size_t batch_looks_allowed(int members) {
+  return kBatchLooksPerMember * static_cast<std::size_t>(members) + kBatchFreeLooks;
+}
 
 enum class Outcome {
   Converged,      // every triangle has smallest angle >= theta (and area <= its size bound)
@@ -128,6 +132,9 @@ struct RefineResult {
   double seconds = 0;
   double cdt_seconds = 0;               // of `seconds`: the initial CDT (and its regions), before refining
 };
+
+// What a thread count of 0 means: the machine's cores (at least 1); any other count as it is.
+int threads_or_cores(int threads);
 
 // Defaults of the loop guards, a function of the input (ALGORITHM.md, "Termination").
 std::int64_t default_steiner_budget(const Pslg& pslg, const RefineOptions& options);
