@@ -17,16 +17,6 @@
 #include "lepp/version.h"
 
 namespace lepp::engines {
-namespace {
-
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-}  // namespace
-
 AuditSetup audit_setup(const audit::AuditRequest& request) {
   audit::AuditRequest a = request;
   if (a.cmd.empty() == a.engine.empty()) throw audit::UsageError("give exactly one of --cmd TEMPLATE and --engine NAME");
@@ -60,7 +50,7 @@ AuditSetup audit_setup(const audit::AuditRequest& request) {
     if (c == "none") continue;
     const std::optional<Engine> which = parse_engine(c, comparison_engines());
     if (!which)
-      throw audit::UsageError("--compare: unknown engine " + c + " (" + join(names(comparison_engines())) + ", none)");
+      throw audit::UsageError("--compare: unknown engine " + c + " (" + fmt::format("{}", fmt::join(names(comparison_engines()), ", ")) + ", none)");
     // Cache keys name the engine's build: a new lepp or Triangle budget is a new entry.
     const std::string build = fmt::format("{} {}", kVersion, git_commit());
     try {
