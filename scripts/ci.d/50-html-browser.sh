@@ -2,9 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The HTML reports in a real browser (issue 41): Debian's headless Chromium opens
 # the pages of a mesh that certifies, a broken mesh with violations of several
-# kinds, an audit with findings, a merged sharded audit and a certificate of
-# 10^6 triangles, and tests/html/check_page.py checks each against its JSON
-# report: the rows and counts in the DOM, every picture with a nonzero size and
+# kinds, an audit with findings, a merged sharded audit, a certificate of
+# 10^6 triangles and `lepp paper`'s page, and tests/html/check_page.py checks each
+# against its JSON report: the rows and counts in the DOM, every picture with a nonzero size and
 # not blank in a screenshot, no console error, and the large page loaded within
 # 5 seconds. The pages, JSON reports and screenshots stay in build/html-check/.
 # Then the check itself must fail on broken pages (tests/html/browser_check_test.sh).
@@ -57,11 +57,16 @@ expect 1 "$lepp" audit merge "$work/shard-1.json" "$work/shard-2.json" --out "$w
 check "$out/merged.html" --kind audit --json "$out/merged.json"
 
 echo "-- a certificate of 10^6 triangles: the page loads within 5 s"
-"$lepp" refine tests/formats/data/labelled.poly -o "$work/big" --max-area 1.6e-5 --min-angle 20 > /dev/null
+"$lepp" refine tests/formats/data/labelled.poly -o "$work/big" --max-area 1e-5 --min-angle 20 > /dev/null
 expect 0 "$lepp" certify tests/formats/data/labelled.poly "$work/big" --min-angle 20 --json --html "$out/large.html" > "$out/large.json"
 /usr/bin/python3 -c 'import json,sys; t=json.load(open(sys.argv[1]))["statistics"]["triangles"]; assert t>=10**6, t; print("triangles:", t)' "$out/large.json"
 ls -l "$out/large.html"
 check "$out/large.html" --kind certify --json "$out/large.json" --max-load-ms 5000
+
+echo "-- lepp paper's page (a quick study on a small budget, with its plots)"
+"$lepp" paper --quick --budget 3000 --triangle-budget 3000 --time-limit 5 --root . --out "$work/docs" --work "$work/paper" > /dev/null
+cp "$work/docs/paper/index.html" "$out/paper.html"  # self-contained: it reads nothing beside it
+check "$out/paper.html" --kind paper
 
 echo "-- the check fails on broken pages"
 bash tests/html/browser_check_test.sh "$lepp" "$PWD"
