@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/audit/audit.h"
+#include "lepp/audit/report/html.h"
 #include "lepp/audit/report/report.h"
 #include "lepp/audit/report/report_files.h"
 #include "lepp/audit/report/shard_files.h"
@@ -28,17 +30,20 @@ namespace {
 struct MergeArgs {
   std::vector<std::string> shards;
   std::string out = "audit-out";
-  std::string junit, json;  // json: the JSON report to this file ("-": on stdout instead of the markdown)
+  // json: bare --json (or "-"): the JSON report on stdout instead of the markdown; --json FILE: to FILE,
+  // as --json-file FILE (the older spelling, kept).
+  std::string junit, json, json_file, html;
 };
 
 void print_progress(const audit::Progress& p) {
-  std::fprintf(stderr, "\r\033[K%zu/%zu runs, %zu failing  %.60s", p.done, p.total, p.failed, p.current.c_str());
-  if (p.done == p.total && p.current.empty()) std::fprintf(stderr, "\r\033[K");
+  message("\r\033[K%zu/%zu runs, %zu failing  %.60s", p.done, p.total, p.failed, p.current.c_str());
+  if (p.done == p.total && p.current.empty()) message("\r\033[K");
   std::fflush(stderr);
 }
 
 // The report on stdout (markdown, or JSON), and to the files asked for; the audit's exit status.
-int print_report(const audit::AuditReport& report, bool json, const std::string& json_file, const std::string& junit) {
+int print_report(const audit::AuditReport& report, bool json, const std::string& json_file, const std::string& junit,
+                 const std::string& html) {
   nlohmann::json j = audit::json_report(report);
   add_version(j);
   if (json)
@@ -46,20 +51,26 @@ int print_report(const audit::AuditReport& report, bool json, const std::string&
   else
     std::printf("%s", audit::markdown_report(report).c_str());
   if (const std::string error = audit::write_report_files(report, j, json_file, junit); !error.empty()) {
-    std::fprintf(stderr, "lepp audit: %s\n", error.c_str());
+    message("lepp audit: %s\n", error.c_str());
     return 2;
+  }
+  if (!html.empty()) {
+    if (const std::string error = audit::write_html_report(report, html); !error.empty()) {
+      message("lepp audit: %s\n", error.c_str());
+      return 2;
+    }
   }
   return audit::exit_status(report);
 }
 
-int run_audit_command(const audit::AuditRequest& a) {
+int run_audit_command(const audit::AuditRequest& a, const std::string& html) {
   try {
     engines::AuditSetup setup = engines::audit_setup(a);
     if (isatty(STDERR_FILENO)) setup.options.on_progress = print_progress;
     const audit::AuditReport report = audit::run_audit(setup.engine, setup.options);
-    return print_report(report, a.json, a.json_file, a.junit);
+    return print_report(report, a.json, a.json_file, a.junit, html);
   } catch (const audit::UsageError& e) {
-    std::fprintf(stderr, "lepp audit: %s\n", e.what());
+    message("lepp audit: %s\n", e.what());
     return 2;
   }
 }
@@ -67,11 +78,15 @@ int run_audit_command(const audit::AuditRequest& a) {
 int run_merge_command(const MergeArgs& a) {
   try {
     std::vector<std::string> warnings;
-    const audit::AuditReport report = audit::merge_shard_files(a.shards, a.out, a.json, warnings);
-    for (const std::string& w : warnings) std::fprintf(stderr, "lepp audit merge: %s\n", w.c_str());
-    return print_report(report, a.json == "-", a.json == "-" ? "" : a.json, a.junit);
+    const bool json_stdout = a.json == "-";
+    if (!json_stdout && !a.json.empty() && !a.json_file.empty())
+      throw audit::UsageError("--json FILE and --json-file FILE: give one of them");
+    const std::string json_file = json_stdout || a.json.empty() ? a.json_file : a.json;
+    const audit::AuditReport report = audit::merge_shard_files(a.shards, a.out, json_file, warnings);
+    for (const std::string& w : warnings) message("lepp audit merge: %s\n", w.c_str());
+    return print_report(report, json_stdout, json_file, a.junit, a.html);
   } catch (const audit::UsageError& e) {
-    std::fprintf(stderr, "lepp audit merge: %s\n", e.what());
+    message("lepp audit merge: %s\n", e.what());
     return 2;
   }
 }
@@ -122,6 +137,10 @@ void add_audit_command(CLI::App& app, int& status) {
   cmd->add_option("--junit", a->junit, "Also write the rows as JUnit XML to this file");
   cmd->add_flag("--json", a->json, "Print the report as JSON instead of markdown");
   cmd->add_option("--json-file", a->json_file, "Also write the JSON report to this file");
+  auto html = std::make_shared<std::string>();
+  cmd->add_option("--html", *html,
+                  "Also write the report as one self-contained HTML page: the rows, the deviations by name, each finding "
+                  "with the picture of its step and its reproduce command");
   cmd->add_flag("--no-shrink", a->no_shrink, "Save failures as found, without shrinking");
   cmd->add_option("--max-findings", a->max_findings, "Failures shrunk and saved per row (the rest are counted)")->default_val(3);
   cmd->add_option("--shrink-seconds", a->shrink_seconds, "Time budget of one shrink")->default_val(60);
@@ -145,15 +164,22 @@ void add_audit_command(CLI::App& app, int& status) {
                     "beside the shard's JSON, then where the shard wrote it)")
       ->default_val("audit-out");
   merge->add_option("--junit", m->junit, "Also write the rows as JUnit XML to this file");
-  merge->add_option("--json", m->json, "Also write the JSON report to this file (-: on stdout instead of the markdown)");
+  // Bare --json prints JSON on stdout, as `lepp audit --json` does; --json FILE (or --json=FILE) still writes FILE.
+  merge->add_option("--json", m->json,
+                    "Print the report as JSON instead of markdown (as lepp audit --json); --json FILE: also write it to FILE "
+                    "(as --json-file; -: on stdout)")
+      ->expected(0, 1)
+      ->default_str("-");
+  merge->add_option("--json-file", m->json_file, "Also write the JSON report to this file");
+  merge->add_option("--html", m->html, "Also write the report as one self-contained HTML page (as lepp audit --html)");
   merge->footer("Exit status: the audit's (0, 1, 3) as the whole audit run at once; 2 bad usage, or shards of different "
                 "audits, a shard missing or given twice.");
   merge->callback([m, &status] { status = run_merge_command(*m); });
   cmd->footer("Exit status: 0 every row holds; 1 a row failed (findings saved under --out); 2 bad usage; 3 the audit's own "
               "verdict code failed on some run (internal-error findings saved; the report is written). docs/AUDIT.md.");
-  cmd->callback([a, merge, &status] {
+  cmd->callback([a, merge, html, &status] {
     if (merge->parsed()) return;  // `lepp audit merge`: its own callback ran
-    status = run_audit_command(*a);
+    status = run_audit_command(*a, *html);
   });
 }
 

@@ -7,10 +7,13 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/certify.h"
+#include "lepp/certify_html.h"
 #include "lepp/certify_json.h"
 #include "lepp/certify_svg.h"
 #include "lepp/engines/registry.h"
@@ -35,7 +38,7 @@ struct CertifyArgs {
   double max_area = 0;
   bool region_areas = false;
   std::size_t max_listed = 50;
-  std::string svg, svg_zoom;
+  std::string svg, svg_zoom, html;
   DomainOptions domain;
 };
 
@@ -46,10 +49,24 @@ void write_svg(const std::string& path, const Mesh& mesh, const certify::Report&
     std::ofstream out(path, std::ios::binary);
     out << svg;
     if (!out) throw std::runtime_error("cannot write " + path);
-    std::fprintf(stderr, "lepp certify: wrote %s\n", path.c_str());
+    message("lepp certify: wrote %s\n", path.c_str());
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lepp certify: no drawing %s: %s\n", path.c_str(), e.what());
+    message("lepp certify: no drawing %s: %s\n", path.c_str(), e.what());
   }
+}
+
+// Writes the page; a message on stderr either way (the verdict is unchanged).
+void write_html(const CertifyArgs& args, const Mesh& mesh, const certify::Report& report) {
+  certify::HtmlOptions o;
+  o.title = args.input + ", " + args.mesh;
+  o.command = "lepp certify " + args.input + " " + args.mesh +
+              (args.min_angle > 0 ? fmt::format(" --min-angle {:g}", args.min_angle) : std::string());
+  std::ofstream out(args.html, std::ios::binary);
+  out << certify::html_report(mesh, report, o);
+  if (out.flush())
+    message("lepp certify: wrote %s\n", args.html.c_str());
+  else
+    message("lepp certify: cannot write %s\n", args.html.c_str());
 }
 
 int run_certify(const CertifyArgs& args) {
@@ -62,13 +79,13 @@ int run_certify(const CertifyArgs& args) {
     mesh = read_mesh(args.mesh);
     options.unimprovable = read_unimprovable(args.mesh);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "lepp certify: %s\n", e.what());
+    message("lepp certify: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lepp certify: cannot read input: %s\n", e.what());
+    message("lepp certify: cannot read input: %s\n", e.what());
     return 2;
   }
-  for (const std::string& w : warnings) std::fprintf(stderr, "lepp certify: warning: %s\n", w.c_str());
+  for (const std::string& w : warnings) message("lepp certify: warning: %s\n", w.c_str());
   options.min_angle_deg = args.min_angle;
   options.conforming = args.conforming;
   options.theorem2 = !args.no_theorem2;
@@ -91,6 +108,7 @@ int run_certify(const CertifyArgs& args) {
   const std::string title = args.mesh + (report.certified() ? ": certified" : ": not certified");
   if (!args.svg.empty()) write_svg(args.svg, mesh, report, false, title);
   if (!args.svg_zoom.empty()) write_svg(args.svg_zoom, mesh, report, true, title);
+  if (!args.html.empty()) write_html(args, mesh, report);
   return report.certified() ? 0 : 1;
 }
 
@@ -135,6 +153,9 @@ void add_certify_command(CLI::App& app, int& status) {
   cmd->add_flag("--json", args->json, "Print the report as JSON");
   cmd->add_option("--svg", args->svg, "Also draw the mesh with every listed violation in red to this SVG file");
   cmd->add_option("--svg-zoom", args->svg_zoom, "Also draw the window around the first listed violation to this SVG file");
+  cmd->add_option("--html", args->html,
+                  "Also write the report as one self-contained HTML page: counts, statistics, a histogram of the "
+                  "smallest angles, the mesh and each violation as pictures that pan and zoom");
   cmd->footer("Exit status: 0 certified; 1 violations found (each listed); 2 unreadable input. docs/CERTIFIER.md says what each check tests.");
   cmd->callback([args, &status] { status = run_certify(*args); });
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/engines/registry.h"
 #include "lepp/paper/orders.h"
 #include "lepp/paper/reproduce.h"
@@ -20,21 +21,22 @@ namespace {
 
 // One line on stderr per run, as it ends.
 void print_progress(const paper::Run& r) {
-  std::fprintf(stderr, "  %-12s %-9s %-5s %5g°  %7lld points  %-16s %.2f s\n", r.reading.empty() ? r.problem.c_str() : r.reading.c_str(),
+  message("  %-12s %-9s %-5s %5g°  %7lld points  %-16s %.2f s\n", r.reading.empty() ? r.problem.c_str() : r.reading.c_str(),
                r.method.c_str(), r.order.c_str(), r.theta, static_cast<long long>(r.steiner), r.outcome.c_str(), r.seconds);
 }
 
 int run_paper(const paper::Options& options) {
   paper::StudyEvents events;
-  events.note = [](const std::string& line) { std::fprintf(stderr, "lepp paper: %s\n", line.c_str()); };
+  events.note = [](const std::string& line) { message("lepp paper: %s\n", line.c_str()); };
   events.run = print_progress;
   paper::Reproduction rep = paper::reproduce(options, events);
   if (rep.status != 0) {
-    std::fprintf(stderr, "lepp paper: %s\n", rep.error.c_str());
+    message("lepp paper: %s\n", rep.error.c_str());
     return rep.status;
   }
   std::fputs(paper::summary_table(rep.study.results, rep.study.angles).c_str(), stdout);
-  std::fprintf(stderr, "lepp paper: wrote %s/PAPER.md and %s/ in %.0f s\n", options.out.c_str(), rep.figdir.c_str(), rep.seconds);
+  message("lepp paper: wrote %s/PAPER.md, %s/index.html and %s/ in %.0f s\n", options.out.c_str(), rep.figdir.c_str(),
+          rep.figdir.c_str(), rep.seconds);
   return 0;
 }
 
@@ -57,7 +59,7 @@ int run_orders(const paper::Options& options, OrdersArgs& a, const std::string& 
   } else if (std::sscanf(a.angles.c_str(), "%lf", &lo) == 1) {
     a.study.angles.push_back(lo);
   } else {
-    std::fprintf(stderr, "lepp paper: --orders-angles: expected LO:HI or one angle, got '%s'\n", a.angles.c_str());
+    message("lepp paper: --orders-angles: expected LO:HI or one angle, got '%s'\n", a.angles.c_str());
     return 2;
   }
   try {
@@ -65,14 +67,14 @@ int run_orders(const paper::Options& options, OrdersArgs& a, const std::string& 
         a.study, options.out, command, options.no_plots, a.from_json,
         [](const paper::OrderRun& r) {
           if (r.order != "random" || r.seed == 1)
-            std::fprintf(stderr, "  %-10s %-8s %4g°  %-14s %7lld points  %s\n", r.problem.c_str(), r.method.c_str(), r.theta,
+            message("  %-10s %-8s %4g°  %-14s %7lld points  %s\n", r.problem.c_str(), r.method.c_str(), r.theta,
                          r.order == "random" ? "random 1.." : r.order.c_str(), static_cast<long long>(r.steiner), r.outcome.c_str());
         },
-        [](const std::string& line) { std::fprintf(stderr, "lepp paper: %s\n", line.c_str()); });
-    std::fprintf(stderr, "lepp paper: %zu runs in %.0f s (%.0f CPU s); wrote %s/PAPER.md's order section and %s/paper/orders.json\n",
+        [](const std::string& line) { message("lepp paper: %s\n", line.c_str()); });
+    message("lepp paper: %zu runs in %.0f s (%.0f CPU s); wrote %s/PAPER.md's order section and %s/paper/orders.json\n",
                  s.runs.size(), s.seconds, s.cpu_seconds, options.out.c_str(), options.out.c_str());
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lepp paper: %s\n", e.what());
+    message("lepp paper: %s\n", e.what());
     return 2;
   }
   return 0;

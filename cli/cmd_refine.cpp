@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/engines/refine_files.h"
 #include "lepp/engines/refine_request.h"
 #include "lepp/engines/refine_summary.h"
@@ -18,33 +19,33 @@ namespace {
 
 int run_refine(const engines::RefineRequest& args) {
   if (const std::string error = engines::refine_request_error(args); !error.empty()) {
-    std::fprintf(stderr, "lepp refine: %s\n", error.c_str());
+    message("lepp refine: %s\n", error.c_str());
     return 2;
   }
   engines::RefineInput input;
   try {
     input = engines::read_refine_input(args);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "lepp refine: %s\n", e.what());
+    message("lepp refine: %s\n", e.what());
     return 2;
   }
-  for (const std::string& w : input.warnings) std::fprintf(stderr, "lepp refine: warning: %s\n", w.c_str());
+  for (const std::string& w : input.warnings) message("lepp refine: warning: %s\n", w.c_str());
   if (!input.unapplied_region_areas.empty())
-    std::fprintf(stderr, "lepp refine: warning: %s\n", input.unapplied_region_areas.c_str());
+    message("lepp refine: warning: %s\n", input.unapplied_region_areas.c_str());
 
   RefineOptions options = engines::refine_options(args);
   // The progress line is rewritten in place (\r, ESC[K): on a terminal only, so that a
   // log file or a pipe gets no control characters (lepp audit does the same).
   if (!args.quiet && !args.json && isatty(STDERR_FILENO)) {
-    options.on_progress = [](std::int64_t n) { std::fprintf(stderr, "\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
+    options.on_progress = [](std::int64_t n) { message("\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
   }
   RefineResult result = engines::refine(engines::refine_engine(args), input.pslg, options);
-  if (options.on_progress) std::fprintf(stderr, "\r\033[K");
+  if (options.on_progress) message("\r\033[K");
   engines::RefineWritten written;
   try {
     written = engines::write_refine_files(args, result, input.pslg);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lepp refine: %s\n", e.what());
+    message("lepp refine: %s\n", e.what());
     return 1;
   }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/io.h"
 #include "lepp/render.h"
 
@@ -29,14 +30,14 @@ int run_render(const RenderArgs& args) {
   try {
     mesh = read_mesh(args.prefix);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "lepp render: %s\n", e.what());
+    message("lepp render: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lepp render: %s\n", e.what());
+    message("lepp render: %s\n", e.what());
     return 2;
   }
   if (mesh.triangles.empty()) {
-    std::fprintf(stderr, "lepp render: %s has no triangles\n", args.prefix.c_str());
+    message("lepp render: %s has no triangles\n", args.prefix.c_str());
     return 2;
   }
   render::RenderOptions options;
@@ -49,13 +50,13 @@ int run_render(const RenderArgs& args) {
   try {
     svg = render::render_svg(mesh, options);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "lepp render: %s: %s\n", args.prefix.c_str(), e.what());
+    message("lepp render: %s: %s\n", args.prefix.c_str(), e.what());
     return 2;
   }
   std::ofstream out(args.output);
   out << svg;
   if (!out) {
-    std::fprintf(stderr, "lepp render: cannot write %s\n", args.output.c_str());
+    message("lepp render: cannot write %s\n", args.output.c_str());
     return 1;
   }
   return 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/theorems/statements.h"
 
 namespace lepp::cli {
@@ -85,13 +86,13 @@ int run_theorems(const TheoremsArgs& args) {
   for (const auto& s : theorems::statements()) {
     std::string id = s.suite + "." + s.name;
     if (!args.only.empty() && std::find(args.only.begin(), args.only.end(), id) == args.only.end()) continue;
-    std::fprintf(stderr, "%-70s ", id.c_str());
+    message("%-70s ", id.c_str());
     std::fflush(stderr);
     auto outcome = theorems::run_statement(s, cases, inputs, args.seed);
-    std::fprintf(stderr, "%s (%d cases, %.1f s)\n",
+    message("%s (%d cases, %.1f s)\n",
                  outcome.passed ? "holds" : s.finding.empty() ? "FAILS" : "counterexample (finding)", outcome.cases,
                  outcome.seconds);
-    if (!outcome.passed) std::fprintf(stderr, "    %s\n", outcome.counterexample.c_str());
+    if (!outcome.passed) message("    %s\n", outcome.counterexample.c_str());
     rows.push_back({&s, outcome});
   }
   std::string table = theorems::certificate_markdown(rows, args.long_run, cases, inputs);
@@ -112,7 +113,7 @@ int run_theorems(const TheoremsArgs& args) {
     }
     std::ofstream f(args.out);
     if (!f) {
-      std::fprintf(stderr, "lepp theorems: cannot write %s\n", args.out.c_str());
+      message("lepp theorems: cannot write %s\n", args.out.c_str());
       return 2;
     }
     f << doc;

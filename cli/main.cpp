@@ -5,6 +5,7 @@
 #include <string>
 
 #include "commands.h"
+#include "message.h"
 #include "lepp/version.h"
 
 int main(int argc, char** argv) {
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
     int code = app.exit(e);
     return code == 0 ? 0 : 2;  // a usage error is bad input
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "lepp: internal error: %s\n", e.what());
+    lepp::cli::message("lepp: internal error: %s\n", e.what());
     return 1;
   }
   return status;

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Install and export lepp as a CMake package: find_package(lepp) gives
 # lepp::core (data model, formats, validation), lepp::version (lepp/version.h), lepp::certify (the exact
-# certifier), lepp::certify_report (its JSON and SVG reports), lepp::render (SVG drawings),
+# certifier), lepp::certify_report (its JSON, SVG and HTML reports), lepp::render (SVG drawings), lepp::html (HTML pages),
 # lepp::gen (RapidCheck generators, when RapidCheck was found),
 # lepp::reference and lepp::impl (the two engines), lepp::engines (every engine by name, lepp/engines/registry.h),
 # lepp::audit (`lepp audit` as a library: the engine interface, the rows; with RapidCheck) and lepp::audit_engines
@@ -13,7 +13,7 @@ include(CMakePackageConfigHelpers)
 set_target_properties(lepp_core PROPERTIES EXPORT_NAME core)
 set_target_properties(lepp_reference PROPERTIES EXPORT_NAME reference)
 set_target_properties(lepp_impl PROPERTIES EXPORT_NAME impl)
-set(LEPP_EXPORTED_TARGETS lepp_core lepp_version lepp_certify lepp_certify_report lepp_render lepp_reference lepp_impl lepp_engines)
+set(LEPP_EXPORTED_TARGETS lepp_core lepp_version lepp_certify lepp_certify_report lepp_render lepp_html lepp_reference lepp_impl lepp_engines)
 set(LEPP_EXPORT_GEN OFF)
 if(TARGET lepp_gen)
   list(APPEND LEPP_EXPORTED_TARGETS lepp_gen)
@@ -32,6 +32,7 @@ install(DIRECTORY
     ${PROJECT_SOURCE_DIR}/properties/certify/include/lepp
     ${PROJECT_SOURCE_DIR}/properties/certify/report/include/lepp
     ${PROJECT_SOURCE_DIR}/render/include/lepp
+    ${PROJECT_SOURCE_DIR}/render/html/include/lepp
     ${PROJECT_SOURCE_DIR}/reference/include/lepp
     ${PROJECT_SOURCE_DIR}/impl/include/lepp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

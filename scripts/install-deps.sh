@@ -5,6 +5,7 @@
 # cpack -G DEB reads the command's shared-library dependencies with them. pybind11-dev,
 # python3-dev, python3-numpy: the Python package (python/); pytest, Hypothesis: its tests.
 # meshio and Gmsh (its program and Python API) read back the .vtu and .msh files in tests/formats.
+# chromium and python3-pil: the HTML reports opened, screenshotted and checked in a real browser (scripts/ci.d/50-html-browser.sh).
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
@@ -17,7 +18,8 @@ apt-get install -y --no-install-recommends \
   python3-matplotlib zip \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis \
   python3-meshio gmsh python3-gmsh \
-  dpkg-dev file gcovr llvm-14
+  dpkg-dev file gcovr llvm-14 \
+  chromium python3-pil
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
 if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi

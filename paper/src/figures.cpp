@@ -18,6 +18,24 @@ namespace fs = std::filesystem;
 
 namespace lepp::paper {
 
+const std::vector<std::pair<std::string, std::string>>& plot_figures() {
+  static const std::vector<std::pair<std::string, std::string>> figures = {
+      {"fig10_min_area_quality.png", "Fig. 10: minimum area quality vs number of vertices, centroid vs midpoint"},
+      {"fig11_avg_min_angle.png", "Fig. 11: average smallest angle vs number of vertices, centroid vs midpoint"},
+      {"fig12_quality_distribution.png", "Fig. 12: area-quality distribution, Square400 at 10° and 25°"},
+      {"fig14_min_angle.png", "Fig. 14: minimum angle vs number of vertices, centroid vs Triangle (and CGAL)"},
+      {"shortest_edge.png", "Normalized shortest edge (shortest mesh edge / shortest input segment) vs θ"},
+      {"lepp_size.png", "Average Lepp size vs θ"},
+  };
+  return figures;
+}
+
+const std::vector<std::string>& fig13_files() {
+  static const std::vector<std::string> files = {fmt::format("fig13_circles240_{}_32.svg", centroid_name()),
+                                                 fmt::format("fig13_circles240_{}_32.svg", triangle_name())};
+  return files;
+}
+
 bool make_plots(const std::string& root, const std::string& figdir, std::string& output) {
   std::string cmd = fmt::format("/usr/bin/python3 {} {} {} 2>&1", others::shell_quote(root + "/paper/plots.py"),
                                 others::shell_quote((fs::path(figdir) / "results.json").string()), others::shell_quote(figdir));
@@ -27,7 +45,7 @@ bool make_plots(const std::string& root, const std::string& figdir, std::string&
 void draw_fig13(const Results& res, const std::string& figdir, const std::function<void(const std::string&)>& note) {
   for (const std::string method : {centroid_name(), triangle_name()}) {
     const Run* r = res.find("circles240", method, 32);
-    fs::path svg = fs::path(figdir) / fmt::format("fig13_circles240_{}_32.svg", method);
+    fs::path svg = fs::path(figdir) / fig13_files()[method == centroid_name() ? 0 : 1];
     if (!r || r->stats.triangles == 0) {
       fs::remove(svg);
       continue;

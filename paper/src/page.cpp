@@ -12,6 +12,7 @@
 
 #include "lepp/paper/cells.h"
 #include "lepp/paper/claims.h"
+#include "lepp/paper/figures.h"
 #include "lepp/paper/measures.h"
 #include "lepp/paper/numbers.h"
 #include "mesher_names.h"
@@ -184,19 +185,11 @@ std::string paper_page(const Options& options, const Study& study, bool plots_ok
   // Figures.
   md << "## Figures\n\n";
   if (!plots_ok) md << "**The plots were not made**: `/usr/bin/python3` with matplotlib failed (see the `lepp paper` output).\n\n";
-  const std::vector<std::pair<std::string, std::string>> figures = {
-      {"fig10_min_area_quality.png", "Fig. 10: minimum area quality vs number of vertices, centroid vs midpoint"},
-      {"fig11_avg_min_angle.png", "Fig. 11: average smallest angle vs number of vertices, centroid vs midpoint"},
-      {"fig12_quality_distribution.png", "Fig. 12: area-quality distribution, Square400 at 10° and 25°"},
-      {"fig14_min_angle.png", "Fig. 14: minimum angle vs number of vertices, centroid vs Triangle (and CGAL)"},
-      {"shortest_edge.png", "Normalized shortest edge (shortest mesh edge / shortest input segment) vs θ"},
-      {"lepp_size.png", "Average Lepp size vs θ"},
-  };
-  for (const auto& [file, caption] : figures) md << "**" << caption << "**\n\n![" << caption << "](paper/" << file << ")\n\n";
+  for (const auto& [file, caption] : plot_figures()) md << "**" << caption << "**\n\n![" << caption << "](paper/" << file << ")\n\n";
   md << "**Fig. 13: Circles240 at 32°, Lepp-centroid (left) and Triangle (right)**; colour is the area quality q, "
         "constrained edges bold.\n\n";
-  md << "<img src=\"paper/fig13_circles240_centroid_32.svg\" width=\"49%\"> "
-        "<img src=\"paper/fig13_circles240_triangle_32.svg\" width=\"49%\">\n\n";
+  md << "<img src=\"paper/" << fig13_files()[0] << "\" width=\"49%\"> <img src=\"paper/" << fig13_files()[1]
+     << "\" width=\"49%\">\n\n";
   return md.str();
 }
 

@@ -12,6 +12,7 @@
 
 #include "lepp/paper/figures.h"
 #include "lepp/paper/orders.h"
+#include "lepp/paper/html_page.h"
 #include "lepp/paper/page.h"
 #include "lepp/version.h"
 
@@ -67,6 +68,8 @@ Reproduction reproduce(const Options& options, const StudyEvents& events) {
   std::string page = paper_page(options, study, plots_ok || options.no_plots, rep.seconds);
   if (!kept.empty()) page = splice_order_section(page, kept);
   std::ofstream(fs::path(options.out) / "PAPER.md") << page;
+  // The same tables and the figures on one page to open in a browser.
+  std::ofstream(figdir / "index.html") << paper_html(options, study, rep.figdir, rep.seconds);
   return rep;
 }
 

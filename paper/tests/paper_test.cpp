@@ -3,7 +3,14 @@
 // angle up to which a method works, the table cells, the quality histogram.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 #include "lepp/paper/cells.h"
+#include "lepp/paper/figures.h"
+#include "lepp/paper/html_page.h"
 #include "lepp/paper/measures.h"
 #include "lepp/paper/numbers.h"
 #include "lepp/paper/runner.h"
@@ -218,6 +225,41 @@ TEST(OrderStudy, AnswersComeFromTheRuns) {
   // JSON round trip.
   OrderStudy back = order_study_from_json(to_json(s));
   EXPECT_EQ(order_section(back, "lepp paper --orders --test"), md);
+}
+
+// docs/paper/index.html on a small fixture (the whole `lepp paper` takes minutes): Table 1
+// with a row per table angle, ours beside the paper's; a table per problem run; the
+// figures found inlined (a PNG as a data: URI, Fig. 13's SVG inline), the others named missing.
+TEST(PaperHtml, TablesAndFiguresOfASmallStudy) {
+  namespace fs = std::filesystem;
+  const fs::path figdir = fs::temp_directory_path() / ("lepp-paper-html-" + std::to_string(::getpid()));
+  fs::create_directories(figdir);
+  std::ofstream(figdir / plot_figures()[0].first, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n", 8) << "fake";
+  std::ofstream(figdir / fig13_files()[0]) << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 4 4\"><path d=\"M0 0L4 4\"/></svg>\n";
+  Study study;
+  study.engine = "fast";
+  study.angles = {20, 30};
+  study.results.add(finished_run("A", "centroid", 20, 33));
+  study.results.add(finished_run("A", "centroid", 30, 52));
+  study.results.add(finished_run("A", "triangle", 30, 47));
+  Options options;
+  const std::string page = paper_html(options, study, figdir.string(), 12);
+  fs::remove_all(figdir);
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u);
+  std::size_t rows = 0;
+  for (std::size_t at = page.find("<tr data-theta="); at != std::string::npos && at < page.find("</table>"); at = page.find("<tr data-theta=", at + 1)) ++rows;
+  EXPECT_EQ(rows, table_angles().size());
+  // A at 30: ours 52 beside the paper's 49, Triangle's 47 beside 47 (Table 1).
+  const std::size_t row30 = page.find("<tr data-theta=\"30\">");
+  ASSERT_NE(row30, std::string::npos);
+  const std::string row = page.substr(row30, page.find("</tr>", row30) - row30);
+  EXPECT_NE(row.find("<td class=\"n\">52</td><td class=\"n\">49</td><td class=\"n\">47</td><td class=\"n\">47</td>"), std::string::npos) << row;
+  EXPECT_NE(page.find("<table class=\"problem\" id=\"problem-A\">"), std::string::npos);
+  EXPECT_EQ(page.find("id=\"problem-square400\""), std::string::npos);  // no run of it: no table
+  EXPECT_NE(page.find("src=\"data:image/png;base64,iVBORw0KGgpmYWtl\""), std::string::npos);
+  EXPECT_NE(page.find("<path d=\"M0 0L4 4\"/>"), std::string::npos);
+  EXPECT_NE(page.find(plot_figures()[1].first + " is missing"), std::string::npos);
+  EXPECT_NE(page.find(fig13_files()[1] + " is missing"), std::string::npos);
 }
 
 }  // namespace

@@ -21,11 +21,13 @@ class AuditReport:
                finding.svg, finding.md; the shrunk input's size; detail)
     markdown   the report `lepp audit` prints
     json       the report `lepp audit --json` prints
+    html       the page `lepp audit --html` writes (Jupyter shows it: _repr_html_)
     """
 
-    def __init__(self, report, markdown, status):
+    def __init__(self, report, markdown, status, html=""):
         self.json = report
         self.markdown = markdown
+        self.html = html
         self.holds = status == 0
         self.rows = {r["check"]: r for r in report["rows"]}
 
@@ -34,6 +36,9 @@ class AuditReport:
 
     def __str__(self):
         return self.markdown
+
+    def _repr_html_(self):
+        return self.html
 
     def __repr__(self):
         failed = [k for k, r in self.rows.items() if not r["holds"]]
@@ -113,11 +118,11 @@ def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, s
         installed = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "..", "share", "lepp")
         root = os.path.normpath(installed) if os.path.isdir(os.path.join(installed, "corpus")) else ""
     root = os.fspath(root)
-    report, markdown, status = _lepp.audit(
+    report, markdown, status, html = _lepp.audit(
         _adapter(engine), name=name, method=method, thetas=thetas, cases=int(cases), seed=int(seed),
         sources=sources, inputs=[os.fspath(i) for i in inputs], compare=list(compare), root=root,
         out=os.fspath(out), junit="" if junit is None else os.fspath(junit),
         timeout=0.0 if timeout is None else float(timeout), angle_tolerance=float(angle_tolerance),
         point_tolerance=float(point_tolerance), shrink=bool(shrink), max_findings=int(max_findings),
         shrink_seconds=float(shrink_seconds))
-    return AuditReport(report, markdown, status)
+    return AuditReport(report, markdown, status, html)

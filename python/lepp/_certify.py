@@ -25,7 +25,8 @@ class Report:
     warnings    what validating the input repaired
     """
 
-    def __init__(self, report, text, warnings, ran):
+    def __init__(self, report, text, warnings, ran, page_args=None):
+        self._page_args = page_args
         self.json = report
         self.ok = bool(report["certified"])
         self.violations = report["violations"]
@@ -45,6 +46,18 @@ class Report:
         bad = sum(self.counts.values())
         return f"<lepp.Report {'certified' if self.ok else f'{bad} violations'}>"
 
+    def html(self):
+        """The certificate as `lepp certify --html` writes it: one self-contained HTML page
+        (the mesh and each violation as pictures that pan and zoom). Certifies again."""
+        if self._page_args is None:
+            raise ValueError("this report has no mesh to draw")
+        args, kwargs = self._page_args
+        return _lepp.certify_html(*args, **kwargs)
+
+    def _repr_html_(self):
+        """Jupyter shows the report as its HTML page."""
+        return self.html()
+
 
 def certify(pslg, mesh, *, min_angle=0, exempt_small_input_angles=False, conforming=False, theorem2=True,
             max_area=None, region_areas=False, convex_hull=False, split_crossings=False, max_listed=50,
@@ -63,14 +76,15 @@ def certify(pslg, mesh, *, min_angle=0, exempt_small_input_angles=False, conform
         pslg = pslg_dict(pslg)
     if unimprovable is None:
         unimprovable = getattr(mesh, "unimprovable", [])
-    report, text, warnings = _lepp.certify(
-        pslg, mesh_dict(mesh), min_angle=float(min_angle), conforming=bool(conforming), theorem2=bool(theorem2),
-        exempt_small_input_angles=bool(exempt_small_input_angles),
-        max_area=0.0 if max_area is None else float(max_area), region_areas=bool(region_areas),
-        max_listed=int(max_listed), convex_hull=bool(convex_hull), split_crossings=bool(split_crossings),
-        unimprovable=list(unimprovable))
+    args = (pslg, mesh_dict(mesh))
+    kwargs = dict(min_angle=float(min_angle), conforming=bool(conforming), theorem2=bool(theorem2),
+                  exempt_small_input_angles=bool(exempt_small_input_angles),
+                  max_area=0.0 if max_area is None else float(max_area), region_areas=bool(region_areas),
+                  max_listed=int(max_listed), convex_hull=bool(convex_hull), split_crossings=bool(split_crossings),
+                  unimprovable=list(unimprovable))
+    report, text, warnings = _lepp.certify(*args, **kwargs)
     ran = {c: True for c in CHECKS}
     ran["min-angle"] = min_angle > 0
     ran["theorem-2"] = bool(theorem2)
     ran["size-bound"] = max_area is not None and max_area > 0 or bool(region_areas)
-    return Report(report, text, warnings, ran)
+    return Report(report, text, warnings, ran, (args, dict(kwargs, title="lepp.certify")))

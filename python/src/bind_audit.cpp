@@ -16,6 +16,7 @@
 #include "bindings.h"
 #include "lepp/audit/audit.h"
 #include "lepp/audit/inputs/data_root.h"
+#include "lepp/audit/report/html.h"
 #include "lepp/audit/report/report.h"
 #include "lepp/engines/builtin_engines.h"
 #include "lepp/engines/registry.h"
@@ -140,7 +141,7 @@ py::tuple run(py::object engine, const AuditCall& c) {
   o.max_findings_per_row = c.max_findings;
   o.shrink_max_seconds = c.shrink_seconds;
   audit::Engine adapted = python_engine(std::move(engine));
-  std::string json, markdown;
+  std::string json, markdown, page;
   int status = 0;
   {
     py::gil_scoped_release release;
@@ -148,6 +149,7 @@ py::tuple run(py::object engine, const AuditCall& c) {
       const audit::AuditReport report = audit::run_audit(adapted, o);
       json = audit::json_report(report).dump();
       markdown = audit::markdown_report(report);
+      page = audit::html_report(report);  // now, while the findings' pictures are on disk
       status = audit::exit_status(report);
       if (!c.junit.empty()) {
         std::ofstream junit(c.junit);
@@ -158,7 +160,7 @@ py::tuple run(py::object engine, const AuditCall& c) {
       throw std::invalid_argument(e.what());
     }
   }
-  return py::make_tuple(py::module_::import("json").attr("loads")(json), markdown, status);
+  return py::make_tuple(py::module_::import("json").attr("loads")(json), markdown, status, page);
 }
 
 }  // namespace

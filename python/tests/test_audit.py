@@ -48,6 +48,13 @@ def test_a_seeded_bug_is_found_and_shrunk(tmp_path):
     bad = skips_refinement_on_larger_inputs(pslg, cx["theta"])
     assert not lepp.certify(pslg, bad, min_angle=cx["theta"], exempt_small_input_angles=True).ok
     assert "failures=\"" in (tmp_path / "j.xml").read_text()
+    # The page Jupyter shows: the row with its counts, each saved finding with its pictures.
+    page = report._repr_html_()
+    assert page.startswith("<!DOCTYPE html>") and 'data-holds="false"' in page
+    assert f'<tr data-row="min-angle" data-runs="{row["runs"]}" data-held="{row["held"]}" data-failed="{row["failed"]}"' in page
+    saved = sum(len(r["counterexamples"]) for r in report.rows.values())
+    assert page.count('<section class="finding"') == saved
+    assert page.count('class="pz picture"') >= 2 * saved  # the input and the mesh around the violation, at least
 
 
 def test_an_engine_that_raises_is_a_crashed_run(tmp_path):

@@ -89,3 +89,21 @@ def test_render_is_lepp_render(workdir):
     assert marked != svg and marked.startswith("<")
     with pytest.raises(ValueError):
         lepp.render({"vertices": np.zeros((0, 2)), "triangles": np.zeros((0, 3))})
+
+
+def test_repr_html_is_the_cli_page(workdir):
+    """Jupyter's page is the one `lepp certify --html` writes (the title apart), every kind found on it."""
+    mesh = lepp.refine(A, min_angle=30)
+    mesh.write(workdir / "m")
+    report = lepp.certify(A, mesh, min_angle=33)
+    assert not report.ok
+    page = report._repr_html_()
+    assert page.startswith("<!DOCTYPE html>") and 'data-certified="false"' in page
+    for reason, n in report.counts.items():
+        if n:
+            assert f'<tr data-reason="{reason}" data-count="{n}">' in page
+    r = run_cli("certify", A, str(workdir / "m"), "--min-angle", "33", "--html", str(workdir / "m.html"))
+    assert r.returncode == 1, r.stdout
+    cli = (workdir / "m.html").read_text()
+    strip = lambda p: p[p.index('<p id="verdict"'):]  # the title and the command line differ
+    assert strip(cli) == strip(page)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -76,6 +77,28 @@ const Tri& triangle(const Mesh& mesh, int t) {
 bool meets(const Window& w, const Point& a, const Point& b, const Point& c) {
   return std::max({a.x, b.x, c.x}) >= w.min_x && std::min({a.x, b.x, c.x}) <= w.max_x && std::max({a.y, b.y, c.y}) >= w.min_y &&
          std::min({a.y, b.y, c.y}) <= w.max_y;
+}
+
+// The edges of exactly one triangle (the mesh's boundary, holes included), as vertex id pairs.
+// Sorted 64-bit keys, not a hash map: 3 x 10^6 edges in a fraction of a second.
+std::vector<std::array<int, 2>> boundary_edges(const Mesh& mesh) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * mesh.triangles.size());
+  for (const Tri& t : mesh.triangles)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto a = static_cast<std::uint32_t>(std::min(t[i], t[(i + 1) % 3]));
+      const auto b = static_cast<std::uint32_t>(std::max(t[i], t[(i + 1) % 3]));
+      keys.push_back(std::uint64_t{a} << 32 | b);
+    }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::array<int, 2>> out;
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    if (j - i == 1) out.push_back({static_cast<int>(keys[i] >> 32), static_cast<int>(keys[i] & 0xffffffffu)});
+    i = j;
+  }
+  return out;
 }
 
 }  // namespace
@@ -152,6 +175,7 @@ std::string render_svg(const Mesh& mesh, const RenderOptions& options) {
     worst_angle = std::min(worst_angle, angle);
     if (angle < options.min_angle_deg) ++bad;  // the summary counts the whole mesh, drawn or not
     if (options.window && !meets(*options.window, a, b, c)) continue;
+    if (options.outline_only) continue;
     ++drawn;
     double value = by_angle ? angle / 60.0 : area_quality(a, b, c);
     auto bin = static_cast<std::size_t>(std::clamp(value, 0.0, 0.999999) * kPalette.size());
@@ -170,6 +194,14 @@ std::string render_svg(const Mesh& mesh, const RenderOptions& options) {
     if (options.window && !meets(*options.window, a, b, b)) continue;
     constrained += segment_path(vp, a, b);
   }
+  std::string boundary;
+  if (options.outline_only)
+    for (const auto& e : boundary_edges(mesh)) {
+      const Point& a = mesh.vertices[static_cast<std::size_t>(e[0])];
+      const Point& b = mesh.vertices[static_cast<std::size_t>(e[1])];
+      if (options.window && !meets(*options.window, a, b, b)) continue;
+      boundary += segment_path(vp, a, b);
+    }
 
   // Mesh lines thin out as triangles grow in number, so colour still shows.
   double edge_w = std::clamp(std::sqrt(canvas_w * canvas_h / static_cast<double>(std::max<std::size_t>(drawn, 1))) / 25, 0.05, 0.6);
@@ -189,6 +221,8 @@ std::string render_svg(const Mesh& mesh, const RenderOptions& options) {
   for (std::size_t i = 0; i < bins.size(); ++i)
     if (!bins[i].d.empty()) out += std::string("<path fill=\"") + kPalette[i] + "\" d=\"" + bins[i].d + "\"/>\n";
   out += "</g>\n";
+  if (!boundary.empty())
+    out += "<path fill=\"none\" stroke=\"#555\" stroke-width=\"1.2\" stroke-linecap=\"round\" d=\"" + boundary + "\"/>\n";
   out += "<path fill=\"none\" stroke=\"black\" stroke-width=\"2\" stroke-linecap=\"round\" d=\"" + constrained + "\"/>\n";
   if (!bad_outlines.d.empty()) {
     out += "<path fill=\"#ff000040\" stroke=\"red\" stroke-width=\"1.2\" d=\"" + bad_outlines.d + "\"/>\n";

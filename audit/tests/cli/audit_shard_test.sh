@@ -101,6 +101,19 @@ split_and_compare builtin --engine fast --sources paper,corpus --theta 20,25,30 
 python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); assert r["runs"]==60 and r["points_ratio"][0]["runs"]>=40, (r["runs"], r["points_ratio"])' \
   "$dir/builtin-single.json" || fail "builtin: not the 60 runs expected"
 
+# merge's --json as lepp audit's (issue 41): bare, the JSON on stdout instead of the
+# markdown; --json-file FILE writes the same JSON; --json FILE (above) still works;
+# --json FILE with --json-file FILE is bad usage.
+run_lepp audit merge builtin-1.json builtin-2.json builtin-3.json --out bare-out --json > bare.json || [ $? -eq 1 ] \
+  || fail "merge --json: exit status"
+run_lepp audit merge builtin-1.json builtin-2.json builtin-3.json --out bare-out --json-file file.json > file.md || [ $? -eq 1 ] \
+  || fail "merge --json-file: exit status"
+head -1 file.md | grep -q '^# lepp audit' || fail "merge --json-file: no markdown on stdout"
+python3 -c 'import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); assert a==b, "differ"' bare.json file.json \
+  || fail "merge: bare --json on stdout and --json-file differ"
+run_lepp audit merge builtin-1.json builtin-2.json builtin-3.json --out bare-out --json x.json --json-file y.json > /dev/null 2>&1
+[ $? -eq 2 ] || fail "merge --json FILE --json-file FILE: not bad usage"
+
 # A --cmd program failing two rows on some inputs (no-flips: certificate and
 # conformance), each input in two shards (two angles, three shards), every case
 # run twice, at most two findings per row: the merge must keep the single run's.

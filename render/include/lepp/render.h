@@ -44,6 +44,10 @@ struct RenderOptions {
   std::vector<Highlight> highlights;
   // Draw only this window (the triangles meeting it, clipped to it); nullopt: the whole mesh.
   std::optional<Window> window;
+  // An outline for a mesh too large to draw triangle by triangle (the overview of a
+  // certificate of 10^6 triangles): the mesh's boundary edges, the constrained edges and
+  // the highlights only; no triangles, no bad-triangle marks. The summary still counts them all.
+  bool outline_only = false;
 };
 
 // The window around some triangles and points with context: their bounding box

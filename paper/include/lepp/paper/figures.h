@@ -4,10 +4,18 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "lepp/paper/run.h"
 
 namespace lepp::paper {
+
+// The plots plots.py makes, in the page's order: (file in FIGDIR, caption).
+const std::vector<std::pair<std::string, std::string>>& plot_figures();
+
+// Fig. 13's two drawings (draw_fig13's files in FIGDIR): centroid, then Triangle.
+const std::vector<std::string>& fig13_files();
 
 // Runs `/usr/bin/python3 ROOT/paper/plots.py FIGDIR/results.json FIGDIR`; true
 // when it exits 0, else false with its output (stdout and stderr) in `output`.
