@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "judge/chain_summary.h"
 #include "lepp/audit/replay.h"
 
 namespace lepp::audit {
@@ -44,12 +45,6 @@ ReplayRules rules_of(const ConformanceOptions& options) {
   rules.cocircular_search_budget = options.cocircular_search_budget;
   rules.centroid = options.area_centroid ? CentroidReading::Area : CentroidReading::Vertex;
   return rules;
-}
-
-Deviation deviation_named(const std::string& name) {
-  for (int k = 0; k < kDeviations; ++k)
-    if (name == to_string(static_cast<Deviation>(k))) return static_cast<Deviation>(k);
-  return Deviation::Unknown;
 }
 
 // A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
@@ -233,7 +228,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     ConformanceFailure& f = *report.failure;
     follow_chain(replay, trace, f.step, f, centroid_inside);
     merge_remark10(f);
-    f.consistent_variant = f.chain_complete && f.chain.size() == 1 && has_variant(deviation_named(f.deviation));
+    f.consistent_variant = fits_one_variant(f);
     if (f.consistent_variant) f.variant_steps = f.chain.front().steps;
   }
   if (report.failure) {
