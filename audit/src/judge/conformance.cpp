@@ -60,12 +60,13 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
                   std::size_t& centroid_inside) {
   f.chain = {{f.deviation, first + 1, 0}};
   Deviation named = deviation_named(f.deviation);
+  std::string named_what;  // the diagnosis of the step that named it (an unknown's nearest rules)
   std::size_t i = first;
   while (i < trace.size()) {
     if (!has_variant(named)) {
       if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
       f.chain_end = named == Deviation::Unknown
-                        ? fmt::format("step {} is no rule of the catalogue", i + 1)
+                        ? fmt::format("step {} is {}", i + 1, named_what)
                         : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
       return;
     }
@@ -73,7 +74,9 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
     const Point& p = trace[i];
     ReplayChoice choice;
     if (!replay.match(p, choice)) {
-      const Deviation next = replay.diagnose(p).deviation;
+      const DeviationMatch diagnosis = replay.diagnose(p);
+      const Deviation next = diagnosis.deviation;
+      named_what = diagnosis.what;
       const std::string name = to_string(next);
       for (const DeviationLink& l : f.chain)
         if (l.deviation == name) {
