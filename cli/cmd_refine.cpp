@@ -44,6 +44,11 @@ int run_refine(const engines::RefineRequest& args) {
   engines::RefineWritten written;
   try {
     written = engines::write_refine_files(args, result, input.pslg);
+  } catch (const InputError& e) {
+    // An output that cannot be written (a directory in the way, a full disk, a
+    // folder that does not exist) is the user's to fix: bad usage, naming the file.
+    std::fprintf(stderr, "lepp refine: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     message("lepp refine: %s\n", e.what());
     return 1;

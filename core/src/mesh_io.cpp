@@ -177,13 +177,17 @@ void write_unimprovable(const std::string& prefix, const std::vector<Unimprovabl
     std::remove(path.c_str());
     return;
   }
-  auto out = fmt::output_file(path);
+  // BlockFile, not fmt::output_file: that one flushes in its destructor, where a
+  // full disk's error would end the process instead of reaching the caller as the
+  // std::system_error naming the file that write_refined_mesh promises.
+  detail::BlockFile out(path);
   out.print("# triangles left bad: by the small-input-angle rule (section 8) or at double precision (section 8b,\n");
   out.print("# apex and segments 0) of docs/ALGORITHM.md\n");
   out.print("# v1 v2 v3 apex segment1 segment2 input_angle_deg reason (1-based ids)\n{}\n", list.size());
   for (const UnimprovableTriangle& u : list)
     out.print("{} {} {} {} {} {} {} {}\n", u.triangle[0] + 1, u.triangle[1] + 1, u.triangle[2] + 1, u.apex + 1,
               u.segment1 + 1, u.segment2 + 1, u.input_angle_deg, to_string(u.reason));
+  out.close();
 }
 
 std::vector<UnimprovableTriangle> read_unimprovable(const std::string& prefix) {

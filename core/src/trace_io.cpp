@@ -2,10 +2,9 @@
 // The definitions behind lepp/trace_io.h: PREFIX.trace, the trace of every insertion, read and written.
 #include "lepp/trace_io.h"
 
-#include <cstdio>
-#include <memory>
-#include <stdexcept>
+#include <fmt/format.h>
 
+#include "block_file.h"
 #include "lepp/io.h"
 #include "line_reader.h"
 
@@ -23,11 +22,12 @@ std::vector<Point> read_trace(const std::string& path) {
 }
 
 void write_trace(const std::string& path, const std::vector<Point>& points) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "w"), &std::fclose);
-  if (!f) throw std::runtime_error("cannot write " + path);
-  std::fprintf(f.get(), "# %zu Steiner points in insertion order: x y\n", points.size());
-  for (const Point& p : points) std::fprintf(f.get(), "%.17g %.17g\n", p.x, p.y);
-  if (std::ferror(f.get())) throw std::runtime_error("cannot write " + path);
+  // Through BlockFile, whose writes and close are checked (std::system_error naming
+  // the file): a full disk shows only when the buffer is written, often at the close.
+  detail::BlockFile out(path);
+  out.print("# {} Steiner points in insertion order: x y\n", points.size());
+  for (const Point& p : points) out.print("{:.17g} {:.17g}\n", p.x, p.y);  // as printf's %.17g
+  out.close();
 }
 
 std::vector<Point> trace_points(const std::vector<TraceStep>& steps) {

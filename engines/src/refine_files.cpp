@@ -6,8 +6,10 @@
 #include <cstddef>
 #include <future>
 #include <string>
+#include <system_error>
 
 #include "lepp/input.h"
+#include "lepp/io.h"
 #include "lepp/mesh_output.h"
 #include "lepp/trace_io.h"
 #include "lepp/validate.h"
@@ -45,8 +47,15 @@ void write_refine_outputs(const RefineRequest& request, const RefineResult& resu
   MeshWriteOptions write_options;
   write_options.binary = request.binary;
   write_options.threads = output_threads(request);
-  write_refined_mesh(request.output, result.mesh, labels, result.unimprovable, output.formats, write_options);
-  if (request.trace) write_trace(request.output + ".trace", trace_points(result.trace));
+  // A file that cannot be written is the user's to fix (exit 2 in lepp refine), as
+  // Triangle's files already are (their InputError): the writers' std::system_error
+  // (the other formats, the .unimprovable, the trace) names the file.
+  try {
+    write_refined_mesh(request.output, result.mesh, labels, result.unimprovable, output.formats, write_options);
+    if (request.trace) write_trace(request.output + ".trace", trace_points(result.trace));
+  } catch (const std::system_error& e) {
+    throw InputError(request.output, 0, std::string("cannot write the output: ") + e.what());
+  }
 }
 
 int output_threads(const RefineRequest& request) {

@@ -5,7 +5,8 @@
 # for terminals only). Each subcommand runs on a small input, the refines long
 # enough to pass their progress ticks (fast engine every 65536 Steiner points,
 # reference every 1000). And the progress is still there on a terminal (script(1)
-# gives the command one), so the check cannot pass by the progress being gone.
+# gives the command one), so the check cannot pass by the progress being gone; there
+# `refine -q` (and --json) write none (issue 42), and `lepp audit` writes its own.
 # usage: quiet_logs_test.sh LEPP_BINARY SOURCE_DIR
 set -u
 lepp=$1; src=$2
@@ -59,5 +60,28 @@ if script -qec "'$lepp' refine '$src/tests/formats/data/labelled.poly' -o '$dir/
 else
   status=1; echo "FAIL: refine under script(1) failed"; cat "$dir/tty.log"
 fi
+# -q (and --json, which keeps stdout for the JSON) on a terminal, where the run above
+# shows the progress line: none, and no escape byte at all (issue 42).
+for quiet in -q --quiet --json; do
+  if script -qec "'$lepp' refine '$src/tests/formats/data/labelled.poly' -o '$dir/tty' --max-area 5e-5 $quiet" \
+       "$dir/tty-quiet.log" > /dev/null 2>&1 < /dev/null; then
+    if grep -q 'lepp refine: [0-9]* Steiner points' "$dir/tty-quiet.log"; then
+      status=1; echo "FAIL: $quiet: a progress line on a terminal"
+    elif [ "$(tr -cd '\033' < "$dir/tty-quiet.log" | wc -c)" -ne 0 ]; then
+      status=1; echo "FAIL: $quiet: escape bytes on a terminal"
+    else
+      echo "ok: refine $quiet on a terminal: no progress line"
+    fi
+  else
+    status=1; echo "FAIL: refine $quiet under script(1) failed"; cat "$dir/tty-quiet.log"
+  fi
+done
+
+# The audit's progress line on a terminal (it has no -q: stderr a file or a pipe is its quiet).
+script -qec "'$lepp' audit --engine fast --theta 25 --cases 2 --sources paper --compare none --no-cache -j 1 \
+  --out '$dir/tty-audit' --root '$src'" "$dir/tty-audit.log" > /dev/null 2>&1 < /dev/null
+if grep -q '/2 runs, ' "$dir/tty-audit.log"; then echo "ok: audit progress on a terminal"
+else status=1; echo "FAIL: no audit progress line on a terminal"; cat "$dir/tty-audit.log"; fi
+
 [ "$status" -eq 0 ] && echo "ok: quiet logs"
 exit "$status"

@@ -31,11 +31,16 @@ double with_digits(double x, int d) {
   return std::strtod(buf, nullptr);
 }
 
+// The most digits a program can write short of a double's 17: a stream at
+// setprecision(16) (digits10 + 1) moves every coordinate that needs 17.
+constexpr int kMostPrintedDigits = 16;
+
 // The fewest significant digits that read back as x; 17 for any x that needs
-// more than 15 (all the rules ask; one conversion for most doubles a program computed).
+// more than 16 (all the rules ask; two conversions for most doubles a program computed).
 int digits_of(double x) {
   if (!std::isfinite(x) || x == 0) return 1;
-  if (with_digits(x, 15) != x) return 17;
+  if (with_digits(x, kMostPrintedDigits) != x) return 17;
+  if (with_digits(x, 15) != x) return 16;
   for (int d = 1; d < 15; ++d)
     if (with_digits(x, d) == x) return d;
   return 15;
@@ -84,7 +89,7 @@ ArithmeticEvidence mesh_arithmetic(const Pslg& input, const Mesh& mesh) {
     digits = std::max(digits, digits_of(v));
     floats = floats && is_float(v);
   }
-  if (digits > 0 && digits <= 15) {
+  if (digits > 0 && digits <= kMostPrintedDigits) {
     ArithmeticEvidence e = moved_by(input, out, "printed-digits", [&](const Point& p) {
       return Point{with_digits(p.x, digits), with_digits(p.y, digits)};
     });
@@ -112,9 +117,16 @@ ArithmeticEvidence step_arithmetic(const ConformanceFailure& f) {
   const ConformanceCandidate& c = f.candidates.front();  // the nearest of the paper's choices
   const Point& p = f.point;
   const int digits = digits_of(p);
-  if (digits <= 15 && digits_of(c.point) > digits &&
-      std::abs(p.x - c.point.x) <= std::max(half_digit_unit(p.x, digits), half_digit_unit(c.point.x, digits)) &&
-      std::abs(p.y - c.point.y) <= std::max(half_digit_unit(p.y, digits), half_digit_unit(c.point.y, digits))) {
+  // The program's own double may be off the choice by the point tolerance (the
+  // replay would have taken it written in full); writing it with D digits moves
+  // it by half a unit of the D-th digit, and reading that back by half an ulp more,
+  // which the tolerance covers too.
+  auto printed_from = [&](double written, double choice) {
+    return std::abs(written - choice) <=
+           std::max(half_digit_unit(written, digits), half_digit_unit(choice, digits)) + c.tolerance;
+  };
+  if (digits <= kMostPrintedDigits && digits_of(c.point) > digits && printed_from(p.x, c.point.x) &&
+      printed_from(p.y, c.point.y)) {
     e.name = "printed-digits";
     e.digits = digits;
     e.what = fmt::format("the point {} has {} significant digits and is the paper's choice {} ({}) written with "

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "judge/chain_summary.h"
 #include "lepp/audit/replay.h"
 
 namespace lepp::audit {
@@ -46,12 +47,6 @@ ReplayRules rules_of(const ConformanceOptions& options) {
   return rules;
 }
 
-Deviation deviation_named(const std::string& name) {
-  for (int k = 0; k < kDeviations; ++k)
-    if (name == to_string(static_cast<Deviation>(k))) return static_cast<Deviation>(k);
-  return Deviation::Unknown;
-}
-
 // A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
 bool remark10_centroid(const ReplayChoice& choice) {
   return choice.rule == Rule::CentroidInOther && choice.deviation == Deviation::Unknown;
@@ -65,12 +60,13 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
                   std::size_t& centroid_inside) {
   f.chain = {{f.deviation, first + 1, 0}};
   Deviation named = deviation_named(f.deviation);
+  std::string named_what;  // the diagnosis of the step that named it (an unknown's nearest rules)
   std::size_t i = first;
   while (i < trace.size()) {
     if (!has_variant(named)) {
       if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
       f.chain_end = named == Deviation::Unknown
-                        ? fmt::format("step {} is no rule of the catalogue", i + 1)
+                        ? fmt::format("step {} is {}", i + 1, named_what)
                         : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
       return;
     }
@@ -78,7 +74,9 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
     const Point& p = trace[i];
     ReplayChoice choice;
     if (!replay.match(p, choice)) {
-      const Deviation next = replay.diagnose(p).deviation;
+      const DeviationMatch diagnosis = replay.diagnose(p);
+      const Deviation next = diagnosis.deviation;
+      named_what = diagnosis.what;
       const std::string name = to_string(next);
       for (const DeviationLink& l : f.chain)
         if (l.deviation == name) {
@@ -233,7 +231,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     ConformanceFailure& f = *report.failure;
     follow_chain(replay, trace, f.step, f, centroid_inside);
     merge_remark10(f);
-    f.consistent_variant = f.chain_complete && f.chain.size() == 1 && has_variant(deviation_named(f.deviation));
+    f.consistent_variant = fits_one_variant(f);
     if (f.consistent_variant) f.variant_steps = f.chain.front().steps;
   }
   if (report.failure) {

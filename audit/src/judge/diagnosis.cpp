@@ -83,7 +83,9 @@ std::string diagnosis_markdown(const StepDiagnosis& d) {
                       f.deviation_at->euclidean, f.deviation_at->tolerance);
     for (const ConformanceCandidate& c : f.deviation_paper)
       md += fmt::format("- the paper's choice there: {} ({}), {:.3g} from the program's point\n", pt(c.point), to_string(c.rule), c.euclidean);
-  } else if (f.deviation != "unknown" && !f.deviation_what.empty()) {
+  } else if (f.deviation == "unknown") {
+    md += fmt::format("The program's point is {}.\n", f.deviation_what);  // with the rules that came nearest
+  } else if (!f.deviation_what.empty()) {
     md += fmt::format("What the program's output shows: {}.\n", f.deviation_what);  // its arithmetic (arithmetic.h)
   }
   if (f.consistent_variant)

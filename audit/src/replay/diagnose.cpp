@@ -3,12 +3,37 @@
 // (Replay::diagnose): every triangle's Lepp walked, the catalogue's points
 // and the paper's choices for good triangles and at 1000 times the tolerance
 // tried, the first rule in catalogue order (lepp/audit/deviations.h) names it.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include <fmt/format.h>
 
 #include "replayer.h"
 
 namespace lepp::audit::replay_detail {
+namespace {
+
+// "; nearest rules: precision 0.01 away (1.2e+10 tolerances), ..." for the three
+// rules whose points came nearest, in units of their tolerances (the first is the
+// one a reader would widen or add a rule beside); "" when no rule had a point.
+std::string nearest_rules_text(const std::array<std::pair<double, double>, kDeviations>& nearest) {
+  std::vector<int> ranks;
+  for (int k = 0; k < kDeviations; ++k)
+    if (static_cast<Deviation>(k) != Deviation::Unknown && std::isfinite(nearest[static_cast<std::size_t>(k)].first))
+      ranks.push_back(k);
+  auto ratio = [&](int k) { return nearest[static_cast<std::size_t>(k)].first / nearest[static_cast<std::size_t>(k)].second; };
+  std::stable_sort(ranks.begin(), ranks.end(), [&](int a, int b) { return ratio(a) < ratio(b); });
+  if (ranks.size() > 3) ranks.resize(3);
+  std::string s;
+  for (int k : ranks)
+    s += fmt::format("{}{} {:.3g} away ({:.3g} tolerances)", s.empty() ? "; nearest rules: " : ", ",
+                     to_string(static_cast<Deviation>(k)), nearest[static_cast<std::size_t>(k)].first, ratio(k));
+  return s;
+}
+
+}  // namespace
 
 // One table (catalogue_points, triangle_points, the paper's choices for good
 // triangles and at 1000 times the tolerance), one loop: the first rule in
@@ -18,6 +43,10 @@ DeviationMatch Replayer::diagnose(const Point& p) const {
   int best_rank = kDeviations;
   double best_d = std::numeric_limits<double>::infinity();
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return best;
+  // Each rule's nearest point (distance, tolerance), for a point no rule names:
+  // the reader sees how far it is from every rule, in units of each one's tolerance.
+  std::array<std::pair<double, double>, kDeviations> nearest;
+  nearest.fill({std::numeric_limits<double>::infinity(), 1.0});
   auto consider = [&](const Candidate& c, double tol, const Terminal* t, const std::vector<FH>& lepp) {
     const int rank = static_cast<int>(c.deviation);
     if (rank > best_rank) return;
@@ -25,6 +54,8 @@ DeviationMatch Replayer::diagnose(const Point& p) const {
     // triangle) has an infinite scale: it would match every point.
     if (!std::isfinite(tol)) return;
     const double d = distance(p, c.point);
+    auto& near = nearest[static_cast<std::size_t>(rank)];
+    if (tol > 0 && d / tol < near.first / near.second) near = {d, tol};
     if (!(d <= tol) || (rank == best_rank && d >= best_d)) return;
     best_rank = rank, best_d = d;
     best.deviation = c.deviation;
@@ -81,6 +112,7 @@ DeviationMatch Replayer::diagnose(const Point& p) const {
     });
   }
   best.what = match_text(best.deviation, best.where.terminal_edge, best.where.bad);
+  if (best.deviation == Deviation::Unknown) best.what += nearest_rules_text(nearest);
   return best;
 }
 

@@ -27,14 +27,14 @@ struct ArithmeticEvidence {
 // From the final mesh: every input vertex that the rounding moves is in the
 // output at its rounding, none where it is (and at least one). printed-digits
 // is tried first (the coarser rounding), with D the most significant digits of
-// any output coordinate (D <= 15); single-precision when every output
+// any output coordinate (D <= 16); single-precision when every output
 // coordinate is a float.
 ArithmeticEvidence mesh_arithmetic(const Pslg& input, const Mesh& mesh);
 
 // From a failing conformance step: the program's point is a rounding of the
 // paper's nearest choice there that the choice itself is not: a float within
 // the point tolerance scaled from DBL_EPSILON to FLT_EPSILON, or a point of
-// D <= 15 significant digits within half a unit of its D-th digit.
+// D <= 16 significant digits within half a unit of its D-th digit.
 ArithmeticEvidence step_arithmetic(const ConformanceFailure& failure);
 
 // One sentence each, as in docs/CONFORMANCE.md.
