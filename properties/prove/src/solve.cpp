@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "solve.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <numeric>
+#include <sstream>
+#include <unistd.h>
+#include <cstdio>
+
+namespace lepp::prove {
+namespace {
+
+Answer to_answer(z3::check_result r) {
+  return r == z3::unsat ? Answer::Unsat : r == z3::sat ? Answer::Sat : Answer::Unknown;
+}
+
+// A numeral of the model as a double (rational or algebraic).
+double approx(const z3::expr& v) { return std::strtod(v.get_decimal_string(30).c_str(), nullptr); }
+
+struct Rational {
+  std::int64_t num = 0, den = 1;
+};
+
+// The model's own value when it is a rational with a small denominator.
+std::optional<Rational> small_rational(const z3::expr& v) {
+  if (!v.is_numeral() || v.is_algebraic()) return std::nullopt;
+  std::int64_t n = 0, d = 0;
+  if (!v.numerator().is_numeral_i64(n) || !v.denominator().is_numeral_i64(d)) return std::nullopt;
+  if (d <= 0 || d > (std::int64_t(1) << 24) || std::llabs(n) > (std::int64_t(1) << 40)) return std::nullopt;
+  return Rational{n, d};
+}
+
+}  // namespace
+
+void build(const Row& row, Obligation& o, const std::string& k, const std::string& dropped) {
+  row.build(o, o.num(k.empty() ? (row.constant.empty() ? "0" : row.constant) : k));
+  if (!dropped.empty()) {
+    for (auto it = o.hyps.begin(); it != o.hyps.end(); ++it)
+      if (it->first == dropped) {
+        o.hyps.erase(it);
+        return;
+      }
+    throw std::invalid_argument("no hypothesis named '" + dropped + "' in " + row.statement);
+  }
+}
+
+z3::expr_vector assertions(const Obligation& o) {
+  z3::expr_vector all(o.ctx);
+  for (unsigned i = 0; i < o.defs.size(); ++i) all.push_back(o.defs[i]);
+  for (const auto& [name, h] : o.hyps) all.push_back(h);
+  all.push_back(!o.claim);
+  return all;
+}
+
+Solved solve(Obligation& o, double time_limit_s) {
+  auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  auto limit_ms = [&](double s) { return static_cast<unsigned>(std::max(1.0, s * 1000)); };
+  Solved out;
+  z3::solver s = z3::try_for(z3::tactic(o.ctx, kTactic), limit_ms(time_limit_s)).mk_solver();
+  s.add(assertions(o));
+  z3::check_result r = z3::unknown;
+  try {
+    r = s.check();
+  } catch (const z3::exception& e) {
+    out.reason = std::string("Z3: ") + e.msg();
+  }
+  out.answer = to_answer(r);
+  if (out.answer == Answer::Unknown && out.reason.empty())
+    out.reason = "time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s)";
+  if (out.answer != Answer::Sat) {
+    out.seconds = elapsed();
+    return out;
+  }
+  // A rational point near the model: fix the coordinates one at a time to the
+  // nearest fractions with denominators 4, 16, ..., 2^20, keeping the rest solvable;
+  // fall back on the model's own value when it is a small rational.
+  std::vector<Rational> point;
+  z3::model m = s.get_model();
+  for (const z3::expr& v : o.primary) {
+    z3::expr value = m.eval(v, true);
+    double a = approx(value);
+    bool fixed = false;
+    for (int bits = 2; bits <= 20 && !fixed; bits += 2) {
+      std::int64_t den = std::int64_t(1) << bits;
+      Rational q{static_cast<std::int64_t>(std::llround(a * static_cast<double>(den))), den};
+      std::int64_t g = std::gcd(q.num, q.den);
+      q = {q.num / g, q.den / g};
+      s.push();
+      s.add(v == o.ctx.real_val(std::to_string(q.num).c_str()) / o.ctx.real_val(std::to_string(q.den).c_str()));
+      z3::check_result fixed_result = z3::unknown;
+      try {
+        fixed_result = s.check();
+      } catch (const z3::exception&) {
+      }
+      if (fixed_result == z3::sat) {
+        point.push_back(q);
+        m = s.get_model();
+        fixed = true;
+      } else {
+        s.pop();
+      }
+    }
+    if (!fixed) {
+      auto q = small_rational(value);
+      if (!q) {
+        out.answer = Answer::Unknown;
+        out.reason = "satisfiable (a counterexample exists), but no rational point with small denominators found near "
+                     "Z3's algebraic model";
+        out.seconds = elapsed();
+        return out;
+      }
+      s.push();
+      s.add(v == value);
+      point.push_back(*q);
+    }
+  }
+  // The grid: L = lcm of the denominators; B = (0, 0), A = (L, 0).
+  Config c;
+  for (const Rational& q : point) c.L = std::lcm(c.L, q.den);
+  for (const Rational& q : point) c.v.push_back(q.num * (c.L / q.den));
+  out.config = c;
+  out.seconds = elapsed();
+  return out;
+}
+
+}  // namespace lepp::prove
+
+namespace lepp::prove {
+
+Solved solve_qepcad(const Obligation& o, double time_limit_s) {
+  auto t0 = std::chrono::steady_clock::now();
+  Solved out;
+  out.reason = "QEPCAD B did not answer";
+  char path[] = "/tmp/lepp-prove-XXXXXX";
+  int fd = mkstemp(path);
+  if (fd < 0) return out;
+  std::string input = qepcad_input(o, "lepp");
+  bool written = write(fd, input.data(), input.size()) == static_cast<ssize_t>(input.size());
+  close(fd);
+  if (written) {
+    std::string cmd = "timeout " + std::to_string(static_cast<int>(std::ceil(time_limit_s))) +
+                      " qepcad +N200000000 < " + path + " 2>&1";
+    std::string text;
+    if (FILE* p = popen(cmd.c_str(), "r")) {
+      char buf[4096];
+      for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) text.append(buf, n);
+      int status = pclose(p);
+      (void)status;
+    }
+    // The answer follows "An equivalent quantifier-free formula:".
+    auto at = text.find("An equivalent quantifier-free formula:");
+    if (at != std::string::npos) {
+      std::istringstream rest(text.substr(at + 38));
+      std::string word;
+      rest >> word;
+      if (word == "TRUE") out.answer = Answer::Unsat;
+      if (word == "FALSE") out.answer = Answer::Sat;
+    } else if (text.find("Failure occurred") != std::string::npos) {
+      out.reason = "QEPCAD B failed (" + text.substr(text.find("Reason for the failure:") == std::string::npos
+                                                          ? text.find("Failure occurred")
+                                                          : text.find("Reason for the failure:") + 24,
+                                                      40) + ")";
+      for (char& c : out.reason)
+        if (c == '\n') c = ' ';
+    } else if (text.empty() || text.find("The End") == std::string::npos) {
+      out.reason = "QEPCAD B: time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s) or not installed";
+    }
+  }
+  std::remove(path);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace lepp::prove
