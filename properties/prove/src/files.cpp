@@ -184,16 +184,25 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
     bool by_z3 = d.method.rfind("Z3", 0) == 0, by_qepcad = d.method.rfind("QEPCAD", 0) == 0;
     if (!row || !row->build || d.outcome == Outcome::NotDecided || !(by_z3 || by_qepcad)) continue;
     std::string expected = d.outcome == Outcome::Proved ? "unsat" : "sat";
+    const bool proved = d.outcome == Outcome::Proved;
     z3::context ctx;
     Obligation o(ctx);
     build(*row, o);
     const theorems::Statement* st = theorems::find_statement(statement);
     std::string where = st ? st->where : statement;
+    // The premises, then one check per conjunct of the claim for a proved row (as the
+    // library decides it), one check of the whole claim for a refuted one.
     z3::solver s(ctx);
-    s.add(assertions(o));
+    s.add(premises(o));
     std::string body = s.to_smt2();
-    if (auto at = body.rfind("(check-sat)"); at != std::string::npos)
-      body.replace(at, 11, std::string("(check-sat-using ") + kTactic + ")");
+    if (auto at = body.rfind("(check-sat)"); at != std::string::npos) body.erase(at);
+    std::vector<z3::expr> parts = expected == "unsat" ? conjuncts(o.claim) : std::vector<z3::expr>{o.claim};
+    std::string answers;
+    for (const z3::expr& part : parts) {
+      body += "(push 1)\n(assert " + (!part).to_string() + ")\n(check-sat-using " + kTactic + ")\n(pop 1)\n";
+      answers += (answers.empty() ? "" : ",") + expected;
+    }
+    expected = answers;
     std::ostringstream smt;
     smt << "; expected: " << expected << "\n"
         << "; " << where << " (" << statement << "), written by `lepp theorems --prove`.\n"
@@ -202,7 +211,7 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
         << body;
     if (by_z3) out.push_back({stem(statement) + ".smt2", smt.str(), expected});
     if (row->qepcad_file && qepcad_writable(o))
-      out.push_back({stem(statement) + ".qepcad", qepcad_input(o, statement), expected == "unsat" ? "TRUE" : "FALSE"});
+      out.push_back({stem(statement) + ".qepcad", qepcad_input(o, statement), proved ? "TRUE" : "FALSE"});
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 #include <cstdio>
@@ -12,9 +13,6 @@
 namespace lepp::prove {
 namespace {
 
-Answer to_answer(z3::check_result r) {
-  return r == z3::unsat ? Answer::Unsat : r == z3::sat ? Answer::Sat : Answer::Unknown;
-}
 
 // A numeral of the model as a double (rational or algebraic).
 double approx(const z3::expr& v) { return std::strtod(v.get_decimal_string(30).c_str(), nullptr); }
@@ -54,26 +52,56 @@ z3::expr_vector assertions(const Obligation& o) {
   return all;
 }
 
+std::vector<z3::expr> conjuncts(const z3::expr& claim) {
+  if (!claim.is_app() || claim.decl().decl_kind() != Z3_OP_AND) return {claim};
+  std::vector<z3::expr> out;
+  for (unsigned i = 0; i < claim.num_args(); ++i)
+    for (const z3::expr& c : conjuncts(claim.arg(i))) out.push_back(c);
+  return out;
+}
+
+z3::expr_vector premises(const Obligation& o) {
+  z3::expr_vector all(o.ctx);
+  for (unsigned i = 0; i < o.defs.size(); ++i) all.push_back(o.defs[i]);
+  for (const auto& [name, h] : o.hyps) all.push_back(h);
+  return all;
+}
+
 Solved solve(Obligation& o, double time_limit_s) {
   auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   auto limit_ms = [&](double s) { return static_cast<unsigned>(std::max(1.0, s * 1000)); };
   Solved out;
-  z3::solver s = z3::try_for(z3::tactic(o.ctx, kTactic), limit_ms(time_limit_s)).mk_solver();
-  s.add(assertions(o));
-  z3::check_result r = z3::unknown;
-  try {
-    r = s.check();
-  } catch (const z3::exception& e) {
-    out.reason = std::string("Z3: ") + e.msg();
+  // A conjunctive claim is decided one conjunct at a time (nlsat is much faster on
+  // each than on their disjunction of negations): proved when every one is.
+  std::optional<z3::solver> found;
+  out.answer = Answer::Unsat;
+  for (const z3::expr& part : conjuncts(o.claim)) {
+    z3::solver s = z3::try_for(z3::tactic(o.ctx, kTactic), limit_ms(time_limit_s)).mk_solver();
+    s.add(premises(o));
+    s.add(!part);
+    z3::check_result r = z3::unknown;
+    try {
+      r = s.check();
+    } catch (const z3::exception& e) {
+      out.reason = std::string("Z3: ") + e.msg();
+    }
+    if (r == z3::sat) {
+      found.emplace(s);
+      break;
+    }
+    if (r == z3::unknown) {
+      out.answer = Answer::Unknown;
+      if (out.reason.empty()) out.reason = "time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s)";
+    }
   }
-  out.answer = to_answer(r);
-  if (out.answer == Answer::Unknown && out.reason.empty())
-    out.reason = "time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s)";
-  if (out.answer != Answer::Sat) {
+  if (!found) {
     out.seconds = elapsed();
     return out;
   }
+  out.answer = Answer::Sat;
+  out.reason.clear();
+  z3::solver& s = *found;
   // A rational point near the model: fix the coordinates one at a time to the
   // nearest fractions with denominators 4, 16, ..., 2^20, keeping the rest solvable;
   // fall back on the model's own value when it is a small rational.

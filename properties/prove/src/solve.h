@@ -26,6 +26,10 @@ void build(const Row& row, Obligation& o, const std::string& k = "", const std::
 // The assertions whose unsatisfiability proves the row: definitions, hypotheses, not claim.
 z3::expr_vector assertions(const Obligation& o);
 Solved solve(Obligation& o, double time_limit_s);
+// The claim's top-level conjuncts (solve decides them one at a time), and the premises
+// (definitions and hypotheses).
+std::vector<z3::expr> conjuncts(const z3::expr& claim);
+z3::expr_vector premises(const Obligation& o);
 
 // QEPCAD B (cylindrical algebraic decomposition), the second procedure: its input for
 // the universal closure of "definitions and hypotheses imply claim", when the
