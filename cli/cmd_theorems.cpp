@@ -29,6 +29,7 @@ struct TheoremsArgs {
   bool prove = false;
   bool tight = false;
   double time_limit = 30;
+  double tight_time_limit = 10;
   std::string write_proofs;
   std::string corpus = "corpus/theorems";
 };
@@ -171,7 +172,9 @@ int run_theorems(const TheoremsArgs& args) {
         if (!args.only.empty() && std::find(args.only.begin(), args.only.end(), id) == args.only.end()) continue;
         std::fprintf(stderr, "tighten %-62s ", id.c_str());
         std::fflush(stderr);
-        tight.push_back(prove::tighten(id, opt));
+        prove::Options tight_opt = opt;
+        tight_opt.time_limit_s = args.tight_time_limit;
+        tight.push_back(prove::tighten(id, tight_opt));
         std::fprintf(stderr, "%.9f .. %.9f (%d steps, %.1f s)\n", tight.back().proved, tight.back().refuted,
                      tight.back().steps, tight.back().seconds);
       }
@@ -217,6 +220,9 @@ void add_theorems_command(CLI::App& app, int& status) {
                 "Also decide every row for all configurations (Z3): proved, refuted by an exact counterexample, or "
                 "not decided and why (the \"decided\" column)");
   cmd->add_option("--time-limit", args->time_limit, "With --prove: seconds per solver call (default 30)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--tight-time-limit", args->tight_time_limit,
+                  "With --tight: seconds per solver call of the bisection (default 10)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--tight", args->tight,
                 "With --prove: the tight constants (bisection: largest value proved, smallest refuted within 1e-6)");

@@ -124,6 +124,10 @@ Decision decide_without(const std::string& statement, const std::string& dropped
     d.note = s.reason;
     return d;
   }
+  if (!s.config) {
+    d.note = s.reason;
+    return d;
+  }
   d.outcome = Outcome::Refuted;
   d.counterexample = s.config->show();
   if (row->check) {

@@ -6,6 +6,7 @@
 // lepp found, so CI can re-check it (scripts/ci.d/50-proofs.sh).
 #include <gmpxx.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -226,6 +227,14 @@ bool write_obligation_files(const std::string& dir, const std::vector<Decision>&
       return false;
     }
     index << f.name << " " << f.expected << "\n";
+  }
+  // Files of rows no longer decided (or renamed) go: the directory is what the library writes.
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    std::string ext = entry.path().extension().string();
+    if (ext != ".smt2" && ext != ".qepcad") continue;
+    if (index.str().find("\n" + entry.path().filename().string() + " ") == std::string::npos)
+      std::filesystem::remove(entry.path(), ec);
   }
   std::ofstream out(dir + "/expected.txt");
   if (!out || !(out << index.str())) {

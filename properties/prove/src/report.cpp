@@ -62,11 +62,11 @@ std::string add_decided_column(const std::string& table, const std::vector<Decis
 std::string tight_markdown(const std::vector<TightConstant>& rows) {
   std::ostringstream md;
   md << "| where | property | constant's reading | paper | largest proved | smallest refuted | configuration "
-        "refuting it | known extreme | steps, time |\n|---|---|---|---|---|---|---|---|---|\n";
+        "refuting it (at k) | known extreme | steps, time |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const TightConstant& t : rows) {
     md << "| " << t.where << " | `" << t.statement << "` | " << escape(t.meaning) << " | " << t.paper << " | "
        << (t.complete || t.proved != 0 ? fixed(t.proved, 9) : "-") << " | "
-       << (t.complete ? fixed(t.refuted, 9) : "not reached (" + t.stopped + ")") << " | " << escape(t.extreme)
+       << (t.complete ? fixed(t.refuted, 9) : "not reached (" + t.stopped + ")") << " | " << escape(t.extreme) << (t.extreme.empty() ? "" : " (k = " + fixed(t.witnessed, 9) + ")")
        << " | " << escape(t.known) << " | " << t.steps << ", " << seconds(t.seconds) << " |\n";
   }
   return md.str();

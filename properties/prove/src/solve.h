@@ -15,7 +15,9 @@ constexpr const char* kTactic = "qfnra-nlsat";
 enum class Answer { Unsat, Sat, Unknown };
 struct Solved {
   Answer answer = Answer::Unknown;
-  std::optional<Config> config;  // Sat: a rational point of "hypotheses and not claim", scaled to the grid
+  // Sat: a rational point of "hypotheses and not claim", scaled to the grid (none when
+  // the solutions found have no rational point with small denominators near them).
+  std::optional<Config> config;
   std::string reason;            // Unknown: why (time limit, no rational point found)
   double seconds = 0;
 };

@@ -46,6 +46,9 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
   t.meaning = row->constant_meaning;
   t.known = row->known_extreme;
   // Decides the row at k: Unsat (proved), Sat (refuted, with its configuration) or Unknown.
+  // Sat without a grid point (the solutions Z3 found have no small rational point
+  // near them) still refutes k exactly; the configuration shown stays the last one with a point.
+  std::string why;
   auto at = [&](double k, std::string* config) {
     ++t.steps;
     z3::context ctx;
@@ -53,6 +56,8 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
     build(*row, o, decimal(k));
     Solved s = solve(o, opt.time_limit_s);
     if (s.answer == Answer::Sat && config) *config = s.config ? s.config->show() : "";
+    if (s.answer == Answer::Sat && s.config && (t.witnessed == 0 || k < t.witnessed)) t.witnessed = k;
+    why = s.reason;
     return s.answer;
   };
   double k = value_of(row->constant);
@@ -70,7 +75,7 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
     double probe = have_lo ? lo + step : hi - step;
     Answer a = at(probe, &config);
     if (a == Answer::Unknown) {
-      t.stopped = "time limit at k = " + decimal(probe);
+      t.stopped = why + " at k = " + decimal(probe);
       break;
     }
     if (a == Answer::Unsat) {
@@ -79,7 +84,7 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
     } else {
       hi = probe;
       have_hi = true;
-      t.extreme = config;
+      if (!config.empty()) t.extreme = config;
     }
     step *= 2;
   }
@@ -89,14 +94,14 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
     std::string c;
     Answer a = at(mid, &c);
     if (a == Answer::Unknown) {
-      t.stopped = "time limit at k = " + decimal(mid);
+      t.stopped = why + " at k = " + decimal(mid);
       break;
     }
     if (a == Answer::Unsat) {
       lo = mid;
     } else {
       hi = mid;
-      t.extreme = c;
+      if (!c.empty()) t.extreme = c;
     }
   }
   t.proved = lo;

@@ -118,6 +118,15 @@ TEST(ProveNotDecided, NamesTheReason) {
   EXPECT_NE(d.note.find("not first-order"), std::string::npos);
 }
 
+// A solver that runs out of time proves nothing.
+TEST(ProveNotDecided, TimeLimitIsNotAProof) {
+  Options o = options();
+  o.time_limit_s = 0.001;
+  Decision d = decide("Theorem2.TerminalTrianglesLargestAngleAtMost120", o);
+  EXPECT_EQ(d.outcome, Outcome::NotDecided) << decided_cell(d);
+  EXPECT_NE(d.note.find("time limit"), std::string::npos) << d.note;
+}
+
 // Every statement of the table is a row of the prover, and a row's essential hypothesis is one of its own.
 TEST(ProveRows, EveryStatementOfTheTableIsARow) {
   EXPECT_EQ(row_statements().size(), lepp::theorems::statements().size());
