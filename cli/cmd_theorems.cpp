@@ -8,6 +8,7 @@
 // `--tight` adds the tight constants, `--write-proofs DIR` the obligation files.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <fstream>
 #include <iterator>
@@ -120,6 +121,10 @@ says where.
 )";
 
 int run_theorems(const TheoremsArgs& args) {
+  if (!args.write_proofs.empty() && !std::filesystem::is_directory(args.write_proofs)) {
+    std::fprintf(stderr, "lepp theorems: --write-proofs %s: not a directory\n", args.write_proofs.c_str());
+    return 2;
+  }
   std::vector<theorems::CertificateRow> rows;
   int cases = args.long_run ? theorems::kLongCases : theorems::kDefaultCases;
   int inputs = args.long_run ? theorems::kLongInputs : theorems::kDefaultInputs;

@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat,unsat,unsat,unsat
 ; Lemma 4 (narrowed) (Lemma4.HoldsWhenBCShorterThanCA), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -55,12 +55,28 @@
  (> ?x14 (* (* 3.0 y1) y1)))))
 (assert
  (< x1 (/ 1.0 2.0)))
-(assert
- (let (($x73 (and (> (- cosbC) 0.0) (> (* (* 4.0 (- cosbC)) (- cosbC)) 3.0))))
- (let (($x74 (or (and (> cosa0C 0.0) (> (* (* 4.0 cosa0C) cosa0C) 3.0)) $x73)))
- (let (($x80 (or $x74 (and (> cosa1C 0.0) (> (* (* 4.0 cosa1C) cosa1C) 3.0)))))
- (let (($x60 (< (+ (- (* x1 x1) (/ x1 2.0)) (* y1 y1)) (* (* cosa0C bcC) cmC))))
- (let (($x81 (and (and (and (< x1 (* cosa0C bcC)) (< cosbC cosa0C)) $x60) $x80)))
- (let (($x83 (and $x81 (> cosbC 0.0))))
- (not $x83))))))))
+(push 1)
+(assert (not (< x1 (* cosa0C bcC))))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (not (< cosbC cosa0C)))
+(check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (< (+ (- (* x1 x1) (/ x1 2.0)) (* y1 y1)) (* cosa0C bcC cmC))))
+  (not a!1)))
+(check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (and (> (- cosbC) 0.0) (> (* 4.0 (- cosbC) (- cosbC)) 3.0))))
+(let ((a!2 (or (and (> cosa0C 0.0) (> (* 4.0 cosa0C cosa0C) 3.0))
+               a!1
+               (and (> cosa1C 0.0) (> (* 4.0 cosa1C cosa1C) 3.0)))))
+  (not a!2))))
+(check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (not (> cosbC 0.0)))
+(check-sat-using qfnra-nlsat)
+(pop 1)

@@ -44,7 +44,7 @@
  (<= x1 (/ 1.0 2.0)))
 (assert
  (< (+ (- (* x1 x1) x1) (* y1 y1)) 0.0))
-(assert
- (let (($x62 (< cosa1C cosa0C)))
- (not $x62)))
+(push 1)
+(assert (not (< cosa1C cosa0C)))
 (check-sat-using qfnra-nlsat)
+(pop 1)

@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat
 ; Lemma 8 (a)(ii) (narrowed) (Lemma8.AcuteBelow30OwnDistanceAbove096), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -27,11 +27,15 @@
  (let ((?x15 (- 1.0 x1)))
  (let ((?x16 (* ?x15 ?x15)))
  (>= ?x16 (* (* 3.0 y1) y1)))))
-(assert
- (let ((?x13 (* y1 y1)))
- (let ((?x19 (* x1 x1)))
- (let ((?x20 (+ ?x19 ?x13)))
- (let ((?x48 (* (* (/ 24.0 25.0) (/ 24.0 25.0)) ?x20)))
- (let (($x55 (and (> (/ 1.0 4.0) ?x48) (> (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) ?x13) ?x48))))
- (not $x55)))))))
+(push 1)
+(assert (let ((a!1 (> (/ 1.0 4.0)
+              (* (/ 24.0 25.0) (/ 24.0 25.0) (+ (* x1 x1) (* y1 y1))))))
+  (not a!1)))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (> (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1))
+              (* (/ 24.0 25.0) (/ 24.0 25.0) (+ (* x1 x1) (* y1 y1))))))
+  (not a!1)))
+(check-sat-using qfnra-nlsat)
+(pop 1)

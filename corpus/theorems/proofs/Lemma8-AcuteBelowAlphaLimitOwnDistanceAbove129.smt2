@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat
 ; Lemma 8 (a)(i) (narrowed) (Lemma8.AcuteBelowAlphaLimitOwnDistanceAbove129), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -32,11 +32,15 @@
  (let ((?x13 (* y1 y1)))
  (let ((?x17 (+ (* (- 1.0 x1) (- 1.0 x1)) ?x13)))
  (>= (* (* 16.0 (- 1.0 x1)) (- 1.0 x1)) (* (+ 7.0 (* 3.0 s5)) ?x17)))))
-(assert
- (let ((?x13 (* y1 y1)))
- (let ((?x19 (* x1 x1)))
- (let ((?x20 (+ ?x19 ?x13)))
- (let ((?x58 (* (* (/ 129.0 100.0) (/ 129.0 100.0)) ?x20)))
- (let (($x65 (and (> (/ 1.0 4.0) ?x58) (> (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) ?x13) ?x58))))
- (not $x65)))))))
+(push 1)
+(assert (let ((a!1 (> (/ 1.0 4.0)
+              (* (/ 129.0 100.0) (/ 129.0 100.0) (+ (* x1 x1) (* y1 y1))))))
+  (not a!1)))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (> (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1))
+              (* (/ 129.0 100.0) (/ 129.0 100.0) (+ (* x1 x1) (* y1 y1))))))
+  (not a!1)))
+(check-sat-using qfnra-nlsat)
+(pop 1)

@@ -45,7 +45,7 @@
  (<= x1 (/ 1.0 2.0)))
 (assert
  (< (+ (- (* x1 x1) x1) (* y1 y1)) 0.0))
-(assert
- (let (($x63 (< cosbC (- (* (* 2.0 cosa0C) cosa0C) 1.0))))
- (not $x63)))
+(push 1)
+(assert (not (< cosbC (- (* 2.0 cosa0C cosa0C) 1.0))))
 (check-sat-using qfnra-nlsat)
+(pop 1)

@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat
 ; Proposition 3 (a) (Proposition3.Alpha1AtLeastHalfAlpha0), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -45,7 +45,11 @@
  (let ((?x11 (* y1 y1)))
  (let ((?x15 (+ (* (- 1.0 x1) (- 1.0 x1)) ?x11)))
  (<= ?x15 1.0))))
-(assert
- (let (($x56 (and (<= cosa1C ch) (<= cosbC (- (* (* (* 4.0 ch) ch) ch) (* 3.0 ch))))))
- (not $x56)))
+(push 1)
+(assert (not (<= cosa1C ch)))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (not (<= cosbC (- (* 4.0 ch ch ch) (* 3.0 ch)))))
+(check-sat-using qfnra-nlsat)
+(pop 1)

@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat
 ; Proposition 3 (b) (Proposition3.ObtuseAlpha1AtLeastAlpha0), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -41,7 +41,11 @@
  (<= ?x15 1.0))))
 (assert
  (< (+ (- (* x1 x1) x1) (* y1 y1)) 0.0))
-(assert
- (let (($x50 (and (<= cosa1C cosa0C) (<= cosbC (- (* (* 2.0 cosa0C) cosa0C) 1.0)))))
- (not $x50)))
+(push 1)
+(assert (not (<= cosa1C cosa0C)))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (not (<= cosbC (- (* 2.0 cosa0C cosa0C) 1.0))))
+(check-sat-using qfnra-nlsat)
+(pop 1)

@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat
 ; Proposition 6 (b) (Proposition6.AcuteWorstRatioIsIsosceles), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -41,13 +41,17 @@
  (>= ?x15 (* (* 3.0 y1) y1)))))
 (assert
  (> (+ (- (* x1 x1) x1) (* y1 y1)) 0.0))
-(assert
- (let ((?x13 (* y1 y1)))
- (let ((?x18 (* x1 x1)))
- (let ((?x19 (+ ?x18 ?x13)))
- (let ((?x56 (* 1.0 1.0)))
- (let ((?x57 (* ?x56 ?x19)))
- (let ((?x55 (* 8.0 (- 1.0 cosa0C))))
- (let (($x66 (and (>= (/ ?x55 4.0) ?x57) (>= (* ?x55 (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) ?x13)) ?x57))))
- (not $x66)))))))))
+(push 1)
+(assert (let ((a!1 (>= (/ (* 8.0 (- 1.0 cosa0C)) 4.0)
+               (* 1.0 1.0 (+ (* x1 x1) (* y1 y1))))))
+  (not a!1)))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (* 8.0
+              (- 1.0 cosa0C)
+              (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1)))))
+(let ((a!2 (>= a!1 (* 1.0 1.0 (+ (* x1 x1) (* y1 y1))))))
+  (not a!2))))
+(check-sat-using qfnra-nlsat)
+(pop 1)

@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat
 ; Proposition 6 (a) (Proposition6.MidpointNearestVertexOfOwnTriangle), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -29,9 +29,17 @@
  (let ((?x12 (* y1 y1)))
  (let ((?x44 (+ (- (* x1 x1) x1) ?x12)))
  (and (distinct ?x44 0.0) true))))
-(assert
- (let (($x55 (=> (< (+ (- (* x1 x1) x1) (* y1 y1)) 0.0) (<= (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1)) (/ 1.0 4.0)))))
- (let (($x52 (=> (> (+ (- (* x1 x1) x1) (* y1 y1)) 0.0) (<= (/ 1.0 4.0) (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1))))))
- (let (($x56 (and $x52 $x55)))
- (not $x56)))))
+(push 1)
+(assert (let ((a!1 (> (+ (- (* x1 x1) x1) (* y1 y1)) 0.0))
+      (a!2 (<= (/ 1.0 4.0)
+               (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1)))))
+  (not (=> a!1 a!2))))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (< (+ (- (* x1 x1) x1) (* y1 y1)) 0.0))
+      (a!2 (<= (+ (* (- (/ 1.0 2.0) x1) (- (/ 1.0 2.0) x1)) (* y1 y1))
+               (/ 1.0 4.0))))
+  (not (=> a!1 a!2))))
+(check-sat-using qfnra-nlsat)
+(pop 1)

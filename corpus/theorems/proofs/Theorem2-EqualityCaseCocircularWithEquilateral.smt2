@@ -1,4 +1,4 @@
-; expected: unsat
+; expected: unsat,unsat,unsat,unsat
 ; Theorem 2 (equality) (Theorem2.EqualityCaseCocircularWithEquilateral), written by `lepp theorems --prove`.
 ; Frame B = (0, 0), A = (1, 0), C = (x1, y1), D = (x2, y2); unsat = the statement holds.
 (set-logic QF_NRA)
@@ -26,11 +26,23 @@
  (let ((?x16 (+ (* (- 1.0 x1) (- 1.0 x1)) ?x12)))
  (let (($x44 (= (* (* 4.0 (+ (- ?x18 x1) ?x12)) (+ (- ?x18 x1) ?x12)) (* ?x16 ?x19))))
  (and (< (+ (- ?x18 x1) ?x12) 0.0) $x44)))))))
-(assert
- (let ((?x12 (* y1 y1)))
- (let ((?x38 (+ (- (* x1 x1) x1) ?x12)))
- (let ((?x35 (- (* y2 (- (+ (* x1 x1) ?x12) x1)) (* y1 (- (+ (* x2 x2) (* y2 y2)) x2)))))
- (let (($x48 (and (= (+ (* (- 1.0 x2) (- 1.0 x2)) (* y2 y2)) 1.0) (= (+ (* x2 x2) (* y2 y2)) 1.0))))
- (let (($x55 (and (and $x48 (= ?x35 0.0)) (= (* (* 3.0 ?x38) ?x38) ?x12))))
- (not $x55)))))))
+(push 1)
+(assert (let ((a!1 (= (+ (* (- 1.0 x2) (- 1.0 x2)) (* y2 y2)) 1.0)))
+  (not a!1)))
 (check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (not (= (+ (* x2 x2) (* y2 y2)) 1.0)))
+(check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (* y2 (- (+ (* x1 x1) (* y1 y1)) x1)))
+      (a!2 (* y1 (- (+ (* x2 x2) (* y2 y2)) x2))))
+  (not (= (- a!1 a!2) 0.0))))
+(check-sat-using qfnra-nlsat)
+(pop 1)
+(push 1)
+(assert (let ((a!1 (* 3.0 (+ (- (* x1 x1) x1) (* y1 y1)) (+ (- (* x1 x1) x1) (* y1 y1)))))
+  (not (= a!1 (* y1 y1)))))
+(check-sat-using qfnra-nlsat)
+(pop 1)

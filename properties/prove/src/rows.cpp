@@ -417,7 +417,7 @@ std::vector<Row> make_rows() {
   rows.push_back(not_first_order("Theorem9.BetaChainGrowsGeometrically", theorem9));
   rows.push_back(not_first_order(
       "Theorem9.MidpointNotTooCloseToMeshVertices",
-      "not decided here: its two claims are Lemma 8 (b)(i) and (b)(ii) with theta as a parameter (see those rows)"));
+      "theta is a parameter of the statement; its two claims are Lemma 8 (b)(i) and (b)(ii), decided in those rows"));
   auto lemma11 = [](bool narrowed) {
     Row r;
     r.statement = narrowed ? "Lemma11.CentroidBoundsWithCornerEquality" : "Lemma11.CentroidBoundsInLongestEdgeCoordinates";

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Z3's nlsat on an obligation, one conjunct of the claim at a time, and a model
+// made an exact integer-grid configuration.
 #include "solve.h"
 
 #include <chrono>
@@ -6,13 +8,9 @@
 #include <cstdlib>
 #include <numeric>
 #include <optional>
-#include <sstream>
-#include <unistd.h>
-#include <cstdio>
 
 namespace lepp::prove {
 namespace {
-
 
 // A numeral of the model as a double (rational or algebraic).
 double approx(const z3::expr& v) { return std::strtod(v.get_decimal_string(30).c_str(), nullptr); }
@@ -42,14 +40,6 @@ void build(const Row& row, Obligation& o, const std::string& k, const std::strin
       }
     throw std::invalid_argument("no hypothesis named '" + dropped + "' in " + row.statement);
   }
-}
-
-z3::expr_vector assertions(const Obligation& o) {
-  z3::expr_vector all(o.ctx);
-  for (unsigned i = 0; i < o.defs.size(); ++i) all.push_back(o.defs[i]);
-  for (const auto& [name, h] : o.hyps) all.push_back(h);
-  all.push_back(!o.claim);
-  return all;
 }
 
 std::vector<z3::expr> conjuncts(const z3::expr& claim) {
@@ -150,54 +140,6 @@ Solved solve(Obligation& o, double time_limit_s) {
   for (const Rational& q : point) c.v.push_back(q.num * (c.L / q.den));
   out.config = c;
   out.seconds = elapsed();
-  return out;
-}
-
-}  // namespace lepp::prove
-
-namespace lepp::prove {
-
-Solved solve_qepcad(const Obligation& o, double time_limit_s) {
-  auto t0 = std::chrono::steady_clock::now();
-  Solved out;
-  out.reason = "QEPCAD B did not answer";
-  char path[] = "/tmp/lepp-prove-XXXXXX";
-  int fd = mkstemp(path);
-  if (fd < 0) return out;
-  std::string input = qepcad_input(o, "lepp");
-  bool written = write(fd, input.data(), input.size()) == static_cast<ssize_t>(input.size());
-  close(fd);
-  if (written) {
-    std::string cmd = "timeout " + std::to_string(static_cast<int>(std::ceil(time_limit_s))) +
-                      " qepcad +N200000000 < " + path + " 2>&1";
-    std::string text;
-    if (FILE* p = popen(cmd.c_str(), "r")) {
-      char buf[4096];
-      for (std::size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) text.append(buf, n);
-      int status = pclose(p);
-      (void)status;
-    }
-    // The answer follows "An equivalent quantifier-free formula:".
-    auto at = text.find("An equivalent quantifier-free formula:");
-    if (at != std::string::npos) {
-      std::istringstream rest(text.substr(at + 38));
-      std::string word;
-      rest >> word;
-      if (word == "TRUE") out.answer = Answer::Unsat;
-      if (word == "FALSE") out.answer = Answer::Sat;
-    } else if (text.find("Failure occurred") != std::string::npos) {
-      out.reason = "QEPCAD B failed (" + text.substr(text.find("Reason for the failure:") == std::string::npos
-                                                          ? text.find("Failure occurred")
-                                                          : text.find("Reason for the failure:") + 24,
-                                                      40) + ")";
-      for (char& c : out.reason)
-        if (c == '\n') c = ' ';
-    } else if (text.empty() || text.find("The End") == std::string::npos) {
-      out.reason = "QEPCAD B: time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s) or not installed";
-    }
-  }
-  std::remove(path);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 

@@ -25,8 +25,6 @@ struct Solved {
 // Builds the row's obligation in `o` with constant k (the row's own when empty),
 // without the hypothesis `dropped` (none when empty).
 void build(const Row& row, Obligation& o, const std::string& k = "", const std::string& dropped = "");
-// The assertions whose unsatisfiability proves the row: definitions, hypotheses, not claim.
-z3::expr_vector assertions(const Obligation& o);
 Solved solve(Obligation& o, double time_limit_s);
 // The claim's top-level conjuncts (solve decides them one at a time), and the premises
 // (definitions and hypotheses).

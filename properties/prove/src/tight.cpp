@@ -64,7 +64,8 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
   std::string config;
   Answer first = at(k, &config);
   if (first == Answer::Unknown) {
-    t.stopped = "the paper's constant is not decided within the time limit";
+    t.stopped = "the row's own constant is not decided: " + why;
+    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return t;
   }
   double lo = k, hi = k;
