@@ -2,9 +2,13 @@
 // `lepp theorems [--long] [--out docs/THEOREMS.md] [--only Suite.Name]`: re-runs
 // the paper's statements as RapidCheck properties (properties/theorems) and
 // prints the certificate table; exit 0 when every row holds or is a documented
-// finding whose narrowed statement holds, 1 otherwise.
+// finding whose narrowed statement holds, 1 otherwise. With `--prove`, each row is
+// also decided for all configurations (properties/prove: proved, refuted by a
+// confirmed exact counterexample, or not decided and why) in a "decided" column;
+// `--tight` adds the tight constants, `--write-proofs DIR` the obligation files.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <fstream>
 #include <iterator>
@@ -12,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "lepp/prove/prove.h"
 #include "message.h"
 #include "lepp/theorems/statements.h"
 
@@ -23,6 +28,12 @@ struct TheoremsArgs {
   std::string out;
   std::vector<std::string> only;
   std::uint64_t seed = theorems::kSeed;
+  bool prove = false;
+  bool tight = false;
+  double time_limit = 30;
+  double tight_time_limit = 10;
+  std::string write_proofs;
+  std::string corpus = "corpus/theorems";
 };
 
 const char* kPreamble = R"(# The paper's statements, certified
@@ -59,7 +70,7 @@ Readings where the text is ambiguous or the figures are needed:
 - Lemma 7 (I)(c) is a limit; it is checked as two finite facts (see its row).
 - Lemma 8 (c): beta_2 is not defined in the text; read as beta of t's bisection.
 - Lemma 8 (a)(i): the proof bounds MB/BC from above ("< 1.32") where a lower
-  bound is needed; the isosceles worst case gives 1.2967 < 1.3.
+  bound is needed; the isosceles worst case gives 1.29632 < 1.3.
 - Theorem 9: "the sequence t_Bj" is read as repeated longest-edge bisection of
   the son t_B (the one keeping edge CB), beta_j its angle at the new midpoint.
 - Lemma 11: U, W are where CC(ABC) meets the arcs of the lens (circles of
@@ -77,9 +88,44 @@ statement that fails as written: its shrunk counterexample is kept in
 `corpus/theorems/` and asserted by ctest to violate it, and a narrowed
 statement (its own row) holds.
 
+**Sampled and decided.** The "sampled" column is the RapidCheck run above. The
+"decided" column (`lepp theorems --prove`, library `properties/prove/`, see
+`docs/PROOFS.md`) decides each row for *all* configurations. A similarity puts
+the terminal edge at B = (0, 0), A = (1, 0); a terminal pair is two points
+C = (x1, y1), D = (x2, y2) (and, for a claim about every vertex of a mesh, one
+free vertex V = (x3, y3) not strictly inside either circumcircle). Hypotheses
+and claims become polynomial inequalities (cosines and squared lengths for
+angles and lengths, a square root as a variable r with r^2 = E, r >= 0) and
+Z3's nlsat procedure, complete for nonlinear real arithmetic, decides
+"hypotheses and not claim": **proved** when it has no solution; **refuted**
+when it has one, turned into an exact integer-grid configuration that the
+row's own check function (the one its sampling property calls) rejects;
+**not decided** with the reason otherwise (not first-order over the reals, or
+the time limit). Rows refuted by a sampled mesh counterexample stay refuted by
+it, re-checked. Each decided obligation is written to
+`corpus/theorems/proofs/` (SMT-LIB 2, and QEPCAD B input where it has at most
+four variables) and re-checked in CI by Debian's `z3` and `qepcad`
+(`scripts/ci.d/50-proofs.sh`). Every proof is re-run by one command:
+`lepp theorems --long --prove --tight --out docs/THEOREMS.md --write-proofs corpus/theorems/proofs`.
+
+)";
+
+const char* kTightPreamble = R"(
+## Tight constants (`lepp theorems --prove --tight`)
+
+For each row with a numeric constant k (every claim gets stronger as k grows),
+bisection on k: the largest value proved and the smallest value refuted, a
+rational configuration at which Z3, with every coordinate fixed, re-checks
+"hypotheses and not claim" exactly. A row whose bisection stopped (time limit)
+says where.
+
 )";
 
 int run_theorems(const TheoremsArgs& args) {
+  if (!args.write_proofs.empty() && !std::filesystem::is_directory(args.write_proofs)) {
+    message("lepp theorems: --write-proofs %s: not a directory\n", args.write_proofs.c_str());
+    return 2;
+  }
   std::vector<theorems::CertificateRow> rows;
   int cases = args.long_run ? theorems::kLongCases : theorems::kDefaultCases;
   int inputs = args.long_run ? theorems::kLongInputs : theorems::kDefaultInputs;
@@ -97,13 +143,56 @@ int run_theorems(const TheoremsArgs& args) {
   }
   std::string table = theorems::certificate_markdown(rows, args.long_run, cases, inputs);
   bool ok = theorems::certificate_ok(rows);
-  std::string flags = args.long_run ? " --long" : "";
+  std::string flags = std::string(args.long_run ? " --long" : "") + (args.prove ? " --prove" : "") +
+                      (args.tight ? " --tight" : "");
+  std::string tight_table;
+  if (args.prove) {
+    prove::Options opt;
+    opt.time_limit_s = args.time_limit;
+    opt.corpus_dir = args.corpus;
+    std::vector<prove::Decision> decisions;
+    for (const auto& r : rows) {
+      std::string id = r.statement->suite + "." + r.statement->name;
+      message("prove %-64s ", id.c_str());
+      std::fflush(stderr);
+      decisions.push_back(prove::decide(id, opt));
+      const auto& d = decisions.back();
+      message("%s (%.1f s)\n", prove::name(d.outcome), d.seconds);
+      // A refutation its check function does not confirm is an internal error.
+      if (d.outcome == prove::Outcome::Refuted && !d.confirmed && d.method.rfind("Z3", 0) == 0 &&
+          d.note.find("no check function") == std::string::npos)
+        ok = false;
+    }
+    table = prove::add_decided_column(table, decisions);
+    if (!args.write_proofs.empty()) {
+      std::string error;
+      if (!prove::write_obligation_files(args.write_proofs, decisions, &error)) {
+        message("lepp theorems: %s\n", error.c_str());
+        return 2;
+      }
+    }
+    if (args.tight) {
+      std::vector<prove::TightConstant> tight;
+      for (const std::string& id : prove::tight_statements()) {
+        if (!args.only.empty() && std::find(args.only.begin(), args.only.end(), id) == args.only.end()) continue;
+        message("tighten %-62s ", id.c_str());
+        std::fflush(stderr);
+        prove::Options tight_opt = opt;
+        tight_opt.time_limit_s = args.tight_time_limit;
+        tight.push_back(prove::tighten(id, tight_opt));
+        message("%.9f .. %.9f (%d steps, %.1f s)\n", tight.back().proved, tight.back().refuted,
+                     tight.back().steps, tight.back().seconds);
+      }
+      tight_table = prove::tight_markdown(tight);
+    }
+  }
   std::string doc = kPreamble;
   doc.replace(doc.find("%s"), 2, flags);
   doc.replace(doc.find("%llu"), 4, std::to_string(args.seed));
   doc += table;
   doc += ok ? "\nEvery row holds or is a documented finding whose narrowed statement holds.\n"
             : "\nSome rows fail without a documented finding: see above.\n";
+  if (!tight_table.empty()) doc += std::string(kTightPreamble) + tight_table;
   if (!args.out.empty()) {
     // Hand-written empirical sections (after this marker) are kept as they are.
     const std::string kept_marker = "<!-- kept by lepp theorems: empirical statements below -->";
@@ -119,6 +208,7 @@ int run_theorems(const TheoremsArgs& args) {
     f << doc;
   }
   std::fputs(table.c_str(), stdout);
+  if (!tight_table.empty()) std::fputs(("\n" + tight_table).c_str(), stdout);
   return ok ? 0 : 1;
 }
 
@@ -131,6 +221,21 @@ void add_theorems_command(CLI::App& app, int& status) {
   cmd->add_option("--out", args->out, "Also write the certificate (Markdown) to this file, e.g. docs/THEOREMS.md");
   cmd->add_option("--only", args->only, "Run only these statements (Suite.Name)");
   cmd->add_option("--seed", args->seed, "RapidCheck seed (default: the fixed seed of the certificate)");
+  cmd->add_flag("--prove", args->prove,
+                "Also decide every row for all configurations (Z3): proved, refuted by an exact counterexample, or "
+                "not decided and why (the \"decided\" column)");
+  cmd->add_option("--time-limit", args->time_limit, "With --prove: seconds per solver call (default 30)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--tight-time-limit", args->tight_time_limit,
+                  "With --tight: seconds per solver call of the bisection (default 10)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--tight", args->tight,
+                "With --prove: the tight constants (bisection: largest value proved, smallest refuted within 1e-6)");
+  cmd->add_option("--write-proofs", args->write_proofs,
+                  "With --prove: write the obligation files (SMT-LIB 2, QEPCAD B) into this directory, e.g. "
+                  "corpus/theorems/proofs");
+  cmd->add_option("--corpus", args->corpus,
+                  "With --prove: the sampled counterexamples' directory (default corpus/theorems)");
   cmd->callback([args, &status] { status = run_theorems(*args); });
 }
 

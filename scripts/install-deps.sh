@@ -6,6 +6,8 @@
 # python3-dev, python3-numpy: the Python package (python/); pytest, Hypothesis: its tests.
 # meshio and Gmsh (its program and Python API) read back the .vtu and .msh files in tests/formats.
 # chromium and python3-pil: the HTML reports opened, screenshotted and checked in a real browser (scripts/ci.d/50-html-browser.sh).
+# libz3-dev: `lepp theorems --prove` (properties/prove); z3 and qepcad: the obligation files'
+# re-check in CI (scripts/ci.d/50-proofs.sh), qepcad also the prover's second procedure.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
@@ -19,7 +21,8 @@ apt-get install -y --no-install-recommends \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis \
   python3-meshio gmsh python3-gmsh \
   dpkg-dev file gcovr llvm-14 \
-  chromium python3-pil
+  chromium python3-pil \
+  libz3-dev z3 qepcad
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
 if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi

@@ -190,7 +190,7 @@ const std::vector<Statement>& statements() {
                             "to every vertex, exact integers. Acute, alpha <= alpha_limit: d(M) > 1.3 |BC|.",
                             [] { props::lemma8(Lemma8Part::a_i); }),
                         "Two defects. (1) The constant: the proof's own worst case, the isosceles triangle BA = CA "
-                        "at alpha = alpha_limit, has d(M)/BC = 1/(4 sin(alpha_limit/2)) = 1.2967 < 1.3 (the proof "
+                        "at alpha = alpha_limit, has d(M)/BC = 1/(4 sin(alpha_limit/2)) = 1.29632 < 1.3 (the proof "
                         "writes MB/BC < 1.32, an upper bound, where a lower bound is needed). (2) In a mesh the apex D of "
                         "the neighbouring terminal triangle is nearer M than BM whenever ABD is obtuse (D is then "
                         "inside the circle on diameter AB): d(M)/BC = 1.275 was found at alpha = 19.7.",

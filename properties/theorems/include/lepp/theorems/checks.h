@@ -117,7 +117,7 @@ Verdict check_theorem2_equality(const Theorem2EqualityInput& in);
 // --- Statements measured in a Delaunay mesh: d(M) to every mesh vertex.
 enum class Lemma8Part { a_i, a_ii, b_i, b_ii, b_iii, c };
 // Narrowed (a)(i), (a)(ii): d(M) to the triangle's own three vertices, as in the
-// proof, and (a)(i) with the constant its worst case gives, 1/(4 sin(alpha_limit/2)) = 1.2967 > 1.29.
+// proof, and (a)(i) with the constant its worst case gives, 1/(4 sin(alpha_limit/2)) = 1.29632 > 1.29.
 enum class Lemma8Narrowed { a_i_own_129, a_ii_own_096 };
 Verdict check_lemma8_narrowed(const TerminalInMesh& t, Lemma8Narrowed part);
 Verdict check_lemma8(const TerminalInMesh& t, Lemma8Part part);

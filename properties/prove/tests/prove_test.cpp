@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The prover decides, and can say no: each proved row with its essential
+// hypothesis dropped is refuted, and the counterexample is rejected by the row's
+// own check function; false statements are refuted; the committed obligation
+// files are what the library writes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "lepp/prove/prove.h"
+#include "lepp/theorems/statements.h"
+
+using namespace lepp::prove;
+
+namespace {
+
+Options options() {
+  Options o;
+  o.time_limit_s = 60;
+  o.corpus_dir = std::string(LEPP_SOURCE_DIR) + "/corpus/theorems";
+  return o;
+}
+
+// The rows the prover proves within seconds: each one's negative test. Proposition 6 (a)
+// on the triangle's own vertices needs no hypothesis at all (Thales), so it has none to drop.
+const char* kProvedRows[] = {
+    "Theorem2.TerminalTrianglesLargestAngleAtMost120",
+    "Theorem2.EqualityCaseCocircularWithEquilateral",
+    "Proposition3.Alpha1AtLeastHalfAlpha0",
+    "Proposition3.ObtuseAlpha1AtLeastAlpha0",
+    "Lemma4.HoldsWhenBCShorterThanCA",
+    "Proposition6.AcuteWorstRatioIsIsosceles",
+    "Lemma7.ObtuseAlpha1AboveAlpha0",
+    "Lemma8.AcuteBelowAlphaLimitOwnDistanceAbove129",
+    "Lemma8.AcuteBelow30OwnDistanceAbove096",
+    "Lemma8.ObtuseBelow14DistanceAboveBC",
+    "Lemma8.ObtuseAbove14BetaAbove28",
+    "Corollary12.CentroidInsideBetterTriangleWhenItIsTaller",
+    "Theorem14.CentroidOnTerminalEdgeIffEqualHeights",
+};
+
+std::string test_name(const std::string& statement) {
+  std::string s;
+  for (char c : statement) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return s;
+}
+
+class ProvedRow : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ProvedRow, ProvedAndRefutedWithoutItsEssentialHypothesis) {
+  std::string statement = GetParam();
+  Decision d = decide(statement, options());
+  EXPECT_EQ(d.outcome, Outcome::Proved) << decided_cell(d);
+  std::string dropped = essential_hypothesis(statement);
+  ASSERT_FALSE(dropped.empty());
+  Decision n = decide_without(statement, dropped, options());
+  EXPECT_EQ(n.outcome, Outcome::Refuted) << "without '" << dropped << "': " << decided_cell(n);
+  EXPECT_FALSE(n.counterexample.empty());
+  // The counterexample is rejected by the row's check function (hypothesis and
+  // conclusion both fail), except for Theorem 2's equality case and Lemma 8 (c),
+  // whose obligations have no check function taking a grid configuration.
+  bool has_check = statement != "Theorem2.EqualityCaseCocircularWithEquilateral" &&
+                   statement != "Lemma8.ObtuseAbove14BetaAbove28";
+  if (has_check) EXPECT_TRUE(n.confirmed) << n.note;
+}
+
+INSTANTIATE_TEST_SUITE_P(Prove, ProvedRow, ::testing::ValuesIn(kProvedRows),
+                         [](const auto& info) { return test_name(info.param); });
+
+// False statements of the paper are refuted, and the row's check function rejects the point.
+TEST(ProveRefutes, FindingsAreRefutedAndConfirmed) {
+  for (const char* statement :
+       {"Lemma4.BisectionImprovesTBLeavesObtuseTA", "Lemma11.CentroidBoundsInLongestEdgeCoordinates",
+        "Corollary12.CentroidInsideBetterTriangle", "Remark13.CentroidDistanceAtLeast075ShortestEdge",
+        "Theorem14.CentroidNotCollinearExceptRightIsosceles"}) {
+    Decision d = decide(statement, options());
+    EXPECT_EQ(d.outcome, Outcome::Refuted) << statement << ": " << decided_cell(d);
+    EXPECT_TRUE(d.confirmed) << statement << ": " << d.note;
+  }
+}
+
+// Rows refuted by a sampled mesh counterexample stay refuted by it.
+TEST(ProveRefutes, SampledMeshCounterexamplesStay) {
+  for (const char* statement : {"Proposition6.MidpointNearestVertexInDelaunayMesh",
+                                "Lemma8.AcuteBelowAlphaLimitDistanceAbove13", "Lemma8.AcuteBelow30DistanceAbove096"}) {
+    Decision d = decide(statement, options());
+    EXPECT_EQ(d.outcome, Outcome::Refuted) << statement << ": " << decided_cell(d);
+    EXPECT_TRUE(d.confirmed);
+    EXPECT_EQ(d.method, "sampled counterexample");
+  }
+}
+
+// A constant made too strong is refuted: Theorem 2 with 119 degrees (cos >= -0.48, 118.7 degrees)
+// and Lemma 8 (a)(i)'s own-vertices bound with the paper's 1.3 instead of 1.29.
+TEST(ProveRefutes, StrongerConstantsAreRefuted) {
+  Options o = options();
+  TightConstant t2 = tighten("Theorem2.TerminalTrianglesLargestAngleAtMost120", o, 1e-3, 12);
+  EXPECT_TRUE(t2.complete);
+  // cos 120 = -1/2 is the exact bound (equality case): proved at -1/2, refuted just above.
+  EXPECT_NEAR(t2.proved, -0.5, 1e-3);
+  EXPECT_FALSE(t2.extreme.empty());
+  TightConstant l8 = tighten("Lemma8.AcuteBelowAlphaLimitOwnDistanceAbove129", o, 1e-3, 20);
+  EXPECT_TRUE(l8.complete);
+  // The isosceles worst case: 1/(4 sin(alpha_limit/2)) = 1.29632.
+  EXPECT_NEAR(l8.proved, 1.29632, 2e-3);
+  EXPECT_LT(l8.refuted, 1.3);
+}
+
+// Rows that are not first-order statements over the reals say why.
+TEST(ProveNotDecided, NamesTheReason) {
+  Decision d = decide("Theorem1.FinitelyManySimilarityClasses", options());
+  EXPECT_EQ(d.outcome, Outcome::NotDecided);
+  EXPECT_NE(d.note.find("not first-order"), std::string::npos);
+}
+
+// A solver that runs out of time proves nothing.
+TEST(ProveNotDecided, TimeLimitIsNotAProof) {
+  Options o = options();
+  o.time_limit_s = 0.001;
+  Decision d = decide("Theorem2.TerminalTrianglesLargestAngleAtMost120", o);
+  EXPECT_EQ(d.outcome, Outcome::NotDecided) << decided_cell(d);
+  EXPECT_NE(d.note.find("time limit"), std::string::npos) << d.note;
+}
+
+// Every statement of the table is a row of the prover, and a row's essential hypothesis is one of its own.
+TEST(ProveRows, EveryStatementOfTheTableIsARow) {
+  EXPECT_EQ(row_statements().size(), lepp::theorems::statements().size());
+  for (const std::string& s : row_statements()) {
+    EXPECT_FALSE(row_kind(s).empty()) << s;
+    std::string e = essential_hypothesis(s);
+    if (e.empty()) continue;
+    auto h = hypotheses(s);
+    EXPECT_NE(std::find(h.begin(), h.end(), e), h.end()) << s << ": " << e;
+  }
+  EXPECT_EQ(row_kind("Theorem2.TerminalTrianglesLargestAngleAtMost120"), "algebraic");
+  EXPECT_EQ(row_kind("Lemma8.AcuteBelow30DistanceAbove096"), "sampled");
+  EXPECT_EQ(row_kind("Section5.CentroidAddsFewerPoints"), "not first-order");
+  EXPECT_EQ(row_kind("No.Such"), "");
+}
+
+// corpus/theorems/proofs/ holds exactly what the library writes for the recorded answers.
+TEST(ProveFiles, CommittedObligationsAreCurrent) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(LEPP_SOURCE_DIR) / "corpus/theorems/proofs";
+  std::ifstream index(dir / "expected.txt");
+  ASSERT_TRUE(index) << dir / "expected.txt";
+  std::vector<Decision> decisions;
+  std::map<std::string, std::string> expected;
+  for (std::string line; std::getline(index, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ss(line);
+    std::string file, answer;
+    ss >> file >> answer;
+    expected[file] = answer;
+    auto dot = file.rfind('.');
+    std::string statement = file.substr(0, dot), kind = file.substr(dot + 1);
+    statement[statement.find('-')] = '.';
+    bool proved = answer.rfind("unsat", 0) == 0 || answer == "TRUE";
+    auto it = std::find_if(decisions.begin(), decisions.end(), [&](const Decision& d) { return d.statement == statement; });
+    if (it == decisions.end()) {
+      Decision d;
+      d.statement = statement;
+      d.method = kind == "smt2" ? "Z3" : "QEPCAD B";
+      d.outcome = proved ? Outcome::Proved : Outcome::Refuted;
+      decisions.push_back(d);
+    } else if (kind == "smt2") {
+      it->method = "Z3";
+    }
+  }
+  auto files = obligation_files(decisions);
+  EXPECT_EQ(files.size(), expected.size());
+  for (const ObligationFile& f : files) {
+    std::ifstream in(dir / f.name);
+    ASSERT_TRUE(in) << f.name << " is not committed: run lepp theorems --prove --write-proofs";
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text, f.contents) << f.name << " is stale: run lepp theorems --prove --write-proofs";
+    EXPECT_EQ(expected[f.name], f.expected) << f.name;
+  }
+}
+
+}  // namespace
