@@ -19,7 +19,8 @@ void bind_certify(py::module_& m) {
       "certify",
       [](const py::dict& pslg, const py::dict& mesh, double min_angle, bool conforming, bool theorem2,
          bool exempt_small_input_angles, double max_area, bool region_areas, std::size_t max_listed, bool convex_hull,
-         bool split_crossings, const py::list& unimprovable) {
+         bool split_crossings, const py::list& unimprovable, int threads) {
+        if (threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: the machine's cores)");
         if (!(min_angle >= 0 && min_angle <= 60)) throw std::invalid_argument("min_angle: must be in [0, 60] degrees");
         if (!(max_area >= 0)) throw std::invalid_argument("max_area: must be >= 0 (or None)");
         Pslg raw = pslg_from_dict(pslg);
@@ -33,6 +34,7 @@ void bind_certify(py::module_& m) {
         o.region_area_bounds = region_areas;
         o.max_listed_per_reason = max_listed;
         o.unimprovable = unimprovable_from_list(unimprovable);
+        o.threads = threads;
         std::vector<std::string> warnings;
         std::string json, text;
         {
@@ -48,7 +50,7 @@ void bind_certify(py::module_& m) {
       py::arg("pslg"), py::arg("mesh"), py::arg("min_angle") = 0.0, py::arg("conforming") = false,
       py::arg("theorem2") = true, py::arg("exempt_small_input_angles") = false, py::arg("max_area") = 0.0,
       py::arg("region_areas") = false, py::arg("max_listed") = 50, py::arg("convex_hull") = false,
-      py::arg("split_crossings") = false, py::arg("unimprovable") = py::list(),
+      py::arg("split_crossings") = false, py::arg("unimprovable") = py::list(), py::arg("threads") = 1,
       "The exact certificate: (report dict as lepp certify --json, report text, warnings).");
   m.def(
       "certify_checks",
