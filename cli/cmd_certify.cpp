@@ -19,6 +19,7 @@
 #include "lepp/engines/registry.h"
 #include "lepp/input.h"
 #include "lepp/io.h"
+#include "lepp/mesh_read.h"
 #include "lepp/validate.h"
 #include "lepp/version.h"
 
@@ -38,6 +39,7 @@ struct CertifyArgs {
   double max_area = 0;
   bool region_areas = false;
   std::size_t max_listed = 50;
+  int threads = 1;
   std::string svg, svg_zoom, html;
   DomainOptions domain;
 };
@@ -76,7 +78,7 @@ int run_certify(const CertifyArgs& args) {
   std::vector<std::string> warnings;
   try {
     input = validate(read_input(args.input, warnings), args.domain, warnings);
-    mesh = read_mesh(args.mesh);
+    mesh = read_mesh(args.mesh, args.threads);
     options.unimprovable = read_unimprovable(args.mesh);
   } catch (const InputError& e) {
     message("lepp certify: %s\n", e.what());
@@ -96,6 +98,7 @@ int run_certify(const CertifyArgs& args) {
   options.precision_method = *engines::parse_method(args.method);  // the option admits only the registry's names
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
+  options.threads = args.threads;
   const certify::Report report = certify::certify(input, mesh, options);
   if (args.json) {
     nlohmann::json j = certify::json_report(report, args.max_listed);
@@ -150,6 +153,9 @@ void add_certify_command(CLI::App& app, int& status) {
                 "The domain has the convex hull's edges as segments (as refine --convex-hull, Triangle's -c)");
   cmd->add_flag("--split-crossings", args->domain.split_crossings,
                 "Crossing segments are split at their rounded intersection (as refine --split-crossings)");
+  cmd->add_option("--threads", args->threads,
+                  "Threads for reading the mesh and for the checks (0: the machine's cores); the report is the same for any count")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print the report as JSON");
   cmd->add_option("--svg", args->svg, "Also draw the mesh with every listed violation in red to this SVG file");
   cmd->add_option("--svg-zoom", args->svg_zoom, "Also draw the window around the first listed violation to this SVG file");

@@ -19,6 +19,9 @@ class LineReader {
   bool next(std::vector<std::string_view>& tokens);
   // Like next(), but a missing line is an error saying what was expected.
   void expect(std::vector<std::string_view>& tokens, const std::string& what);
+  // expect() for the i-th of n items ("triangle 5 of 9"): the message is formatted only
+  // when the line is missing (a format per line was a tenth of reading a mesh).
+  void expect_item(std::vector<std::string_view>& tokens, const char* item, std::size_t i, std::size_t n);
   int line() const { return line_; }  // 1-based number of the last line returned
   const std::string& path() const { return path_; }
   // Lines left to read, an upper bound on how many items a header may promise.

@@ -7,13 +7,17 @@
 #include <future>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <type_traits>
 
 #include <fmt/format.h>
 #include <fmt/os.h>
 
 #include "lepp/io.h"
+#include "lepp/mesh_read.h"
 #include "block_file.h"
 #include "line_reader.h"
+#include "node_reader.h"
 
 namespace lepp {
 namespace {
@@ -38,56 +42,143 @@ int vertex_id(LineReader& in, std::string_view token, int first, std::size_t n) 
 
 }  // namespace
 
-Mesh read_mesh(const std::string& prefix) {
+namespace {
+
+// Vertex ids as the .ele and .poly give them, checked against the .node's count and
+// numbering once the .node is read: the files read at once (read_mesh with threads).
+// An id that does not fit an int is recorded as failed; the sequential read then names it.
+struct DeferredIds {
+  bool failed = false;
+  int operator()(LineReader& in, std::string_view token) {
+    const std::int64_t v = in.integer(token, "vertex id");
+    if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) failed = true;
+    return static_cast<int>(v);
+  }
+  // Shifts ids from the file's numbering to 0-based; false if one is out of range.
+  template <class Item>
+  static bool resolve(std::vector<Item>& items, int first, std::size_t n) {
+    constexpr int ids = std::is_same_v<Item, Tri> ? 3 : 2;
+    for (Item& item : items)
+      for (int k = 0; k < ids; ++k) {
+        int& id = item_id(item, k);
+        const std::int64_t v = static_cast<std::int64_t>(id) - first;
+        if (v < 0 || v >= static_cast<std::int64_t>(n)) return false;
+        id = static_cast<int>(v);
+      }
+    return true;
+  }
+  static int& item_id(Tri& t, int k) { return t[static_cast<std::size_t>(k)]; }
+  static int& item_id(ConstrainedEdge& e, int k) { return k == 0 ? e.a : e.b; }
+};
+
+template <class VertexId>
+std::vector<Tri> read_ele(const std::string& path, VertexId&& vertex) {
+  LineReader in(path);
+  Tokens t;
+  in.expect(t, "triangle header (count, nodes per triangle, attributes)");
+  in.fields(t, 1, 3, "triangle header (count, nodes per triangle, attributes)");
+  std::size_t nt = header_count(in, t[0], "triangle count");
+  std::int64_t corners = t.size() >= 2 ? in.integer(t[1], "nodes per triangle") : 3;
+  if (corners != 3 && corners != 6) in.fail("nodes per triangle must be 3 or 6");
+  std::int64_t attributes = t.size() >= 3 ? in.integer(t[2], "attribute count") : 0;
+  if (attributes < 0 || attributes > 1000) in.fail("attribute count out of range");
+  const std::size_t fields = 1 + static_cast<std::size_t>(corners + attributes);
+  std::vector<Tri> triangles;
+  triangles.reserve(nt);
+  for (std::size_t i = 0; i < nt; ++i) {
+    in.expect_item(t, "triangle", i + 1, nt);
+    in.fields(t, fields, fields, "triangle line (number, corners, attributes)");
+    // One statement each: the corners are read (and checked) in order.
+    const int a = vertex(in, t[1]);
+    const int b = vertex(in, t[2]);
+    const int c = vertex(in, t[3]);
+    triangles.push_back({a, b, c});
+  }
+  return triangles;
+}
+
+// The .poly beside a mesh: its segments, the mesh's constrained edges (none if there is no .poly).
+template <class VertexId>
+std::vector<ConstrainedEdge> read_poly_edges(const std::string& path, VertexId&& vertex) {
+  std::vector<ConstrainedEdge> edges;
+  if (!std::ifstream(path)) return edges;
+  LineReader in(path);
+  Tokens t;
+  in.expect(t, "vertex header");
+  if (in.integer(t[0], "vertex count") != 0) {
+    // A full .poly: skip its vertex lines (the .node holds the same vertices).
+    std::size_t nv = header_count(in, t[0], "vertex count");
+    for (std::size_t i = 0; i < nv; ++i) in.expect(t, "vertex line");
+  }
+  in.expect(t, "segment header");
+  in.fields(t, 1, 2, "segment header (count, markers)");
+  std::size_t ns = header_count(in, t[0], "segment count");
+  for (std::size_t i = 0; i < ns; ++i) {
+    in.expect_item(t, "segment", i + 1, ns);
+    in.fields(t, 3, 4, "segment line (number, endpoint, endpoint, marker)");
+    // Markers are not trusted to be segment ids: the certifier finds the
+    // input segment of each constrained edge by geometry.
+    const int a = vertex(in, t[1]);
+    const int b = vertex(in, t[2]);
+    edges.push_back({a, b, -1});
+  }
+  return edges;
+}
+
+// The three files at once: the .ele on a second thread, the .node then the .poly on this
+// one. nullopt if anything is wrong but the .node: read_mesh's sequential read then
+// reports the first error as it always does (the .node's errors are thrown here, first).
+std::optional<Mesh> read_mesh_at_once(const std::string& prefix) {
+  DeferredIds ele_ids;
+  auto ele = std::async(std::launch::async, [&] { return read_ele(prefix + ".ele", ele_ids); });
   Mesh mesh;
   int first = 1;
-  {
-    Pslg nodes = read_node(prefix + ".node");
+  std::vector<std::string> ignored;
+  std::vector<ConstrainedEdge> edges;
+  DeferredIds poly_ids;
+  bool poly_ok = true;
+  try {
+    Pslg nodes = detail::read_node_numbered(prefix + ".node", ignored, first);
     mesh.vertices = std::move(nodes.vertices);
-    LineReader probe(prefix + ".node");
-    Tokens h;
-    probe.expect(h, "vertex header");
-    if (probe.next(h)) first = static_cast<int>(probe.integer(h[0], "vertex number"));
+    try {
+      edges = read_poly_edges(prefix + ".poly", poly_ids);
+    } catch (const InputError&) {
+      poly_ok = false;
+    }
+  } catch (...) {
+    ele.wait();  // the thread reads this function's locals
+    throw;
+  }
+  std::vector<Tri> triangles;
+  try {
+    triangles = ele.get();
+  } catch (const InputError&) {
+    return std::nullopt;
   }
   const std::size_t n = mesh.vertices.size();
-  {
-    LineReader in(prefix + ".ele");
-    Tokens t;
-    in.expect(t, "triangle header (count, nodes per triangle, attributes)");
-    in.fields(t, 1, 3, "triangle header (count, nodes per triangle, attributes)");
-    std::size_t nt = header_count(in, t[0], "triangle count");
-    std::int64_t corners = t.size() >= 2 ? in.integer(t[1], "nodes per triangle") : 3;
-    if (corners != 3 && corners != 6) in.fail("nodes per triangle must be 3 or 6");
-    std::int64_t attributes = t.size() >= 3 ? in.integer(t[2], "attribute count") : 0;
-    if (attributes < 0 || attributes > 1000) in.fail("attribute count out of range");
-    const std::size_t fields = 1 + static_cast<std::size_t>(corners + attributes);
-    mesh.triangles.reserve(nt);
-    for (std::size_t i = 0; i < nt; ++i) {
-      in.expect(t, fmt::format("triangle {} of {}", i + 1, nt));
-      in.fields(t, fields, fields, "triangle line (number, corners, attributes)");
-      mesh.triangles.push_back({vertex_id(in, t[1], first, n), vertex_id(in, t[2], first, n), vertex_id(in, t[3], first, n)});
-    }
-  }
-  if (std::ifstream(prefix + ".poly")) {
-    LineReader in(prefix + ".poly");
-    Tokens t;
-    in.expect(t, "vertex header");
-    if (in.integer(t[0], "vertex count") != 0) {
-      // A full .poly: skip its vertex lines (the .node holds the same vertices).
-      std::size_t nv = header_count(in, t[0], "vertex count");
-      for (std::size_t i = 0; i < nv; ++i) in.expect(t, "vertex line");
-    }
-    in.expect(t, "segment header");
-    in.fields(t, 1, 2, "segment header (count, markers)");
-    std::size_t ns = header_count(in, t[0], "segment count");
-    for (std::size_t i = 0; i < ns; ++i) {
-      in.expect(t, fmt::format("segment {} of {}", i + 1, ns));
-      in.fields(t, 3, 4, "segment line (number, endpoint, endpoint, marker)");
-      // Markers are not trusted to be segment ids: the certifier finds the
-      // input segment of each constrained edge by geometry.
-      mesh.constrained_edges.push_back({vertex_id(in, t[1], first, n), vertex_id(in, t[2], first, n), -1});
-    }
-  }
+  if (!poly_ok || ele_ids.failed || poly_ids.failed || !DeferredIds::resolve(triangles, first, n) ||
+      !DeferredIds::resolve(edges, first, n))
+    return std::nullopt;
+  mesh.triangles = std::move(triangles);
+  mesh.constrained_edges = std::move(edges);
+  return mesh;
+}
+
+}  // namespace
+
+Mesh read_mesh(const std::string& prefix) { return read_mesh(prefix, 1); }
+
+Mesh read_mesh(const std::string& prefix, int threads) {
+  if (threads != 1)
+    if (std::optional<Mesh> mesh = read_mesh_at_once(prefix)) return std::move(*mesh);
+  Mesh mesh;
+  int first = 1;
+  std::vector<std::string> ignored;
+  mesh.vertices = detail::read_node_numbered(prefix + ".node", ignored, first).vertices;
+  const std::size_t n = mesh.vertices.size();
+  auto vertex = [&](LineReader& in, std::string_view token) { return vertex_id(in, token, first, n); };
+  mesh.triangles = read_ele(prefix + ".ele", vertex);
+  mesh.constrained_edges = read_poly_edges(prefix + ".poly", vertex);
   return mesh;
 }
 

@@ -9,6 +9,7 @@
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "line_reader.h"
+#include "node_reader.h"
 
 namespace lepp {
 
@@ -117,7 +118,7 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
   Section section(in, lenient, 3, fields, "vertex line (number, x, y, attributes, marker)");
   Tokens t;
   for (std::size_t i = 0; i < n; ++i) {
-    in.expect(t, fmt::format("vertex {} of {}", i + 1, n));
+    in.expect_item(t, "vertex", i + 1, n);
     section.line(t);
     std::int64_t number = in.integer(t[0], "vertex number");
     if (i == 0) {
@@ -161,18 +162,23 @@ bool is_directory(const std::string& path) {
 
 }  // namespace
 
-Pslg read_node(const std::string& path, std::vector<std::string>& warnings) {
+Pslg detail::read_node_numbered(const std::string& path, std::vector<std::string>& warnings, int& first) {
   LineReader in(path);
   Leniency lenient{path};
   Pslg pslg;
   pslg.source = path;
   Tokens t;
   in.expect(t, "vertex header");
-  int first = 1;
+  first = 1;
   read_vertices(in, lenient, t, pslg, first);
   if (in.next(t)) in.fail("unexpected content after the last vertex");
   lenient.report(warnings);
   return pslg;
+}
+
+Pslg read_node(const std::string& path, std::vector<std::string>& warnings) {
+  int first = 1;
+  return detail::read_node_numbered(path, warnings, first);
 }
 
 Pslg read_node(const std::string& path) {
@@ -220,7 +226,7 @@ Pslg read_poly(const std::string& path, std::vector<std::string>& warnings) {
   const std::size_t fields = 3 + static_cast<std::size_t>(markers);
   Section segments(in, lenient, 3, fields, "segment line (number, endpoint, endpoint, marker)");
   for (std::size_t i = 0; i < ns; ++i) {
-    in.expect(t, fmt::format("segment {} of {}", i + 1, ns));
+    in.expect_item(t, "segment", i + 1, ns);
     segments.line(t);
     std::int64_t number = in.integer(t[0], "segment number");
     if (number != first + static_cast<std::int64_t>(i))
@@ -251,7 +257,7 @@ Pslg read_poly(const std::string& path, std::vector<std::string>& warnings) {
   std::size_t nh = count(in, t[0], "hole count");
   Section holes(in, lenient, 3, 3, "hole line (number, x, y)");
   for (std::size_t i = 0; i < nh; ++i) {
-    in.expect(t, fmt::format("hole {} of {}", i + 1, nh));
+    in.expect_item(t, "hole", i + 1, nh);
     holes.line(t);
     in.integer(t[0], "hole number");
     pslg.holes.push_back({in.real(t[1], "hole x"), in.real(t[2], "hole y")});
@@ -267,7 +273,7 @@ Pslg read_poly(const std::string& path, std::vector<std::string>& warnings) {
     std::size_t nr = count(in, t[0], "region count");
     Section regions(in, lenient, 4, 4, "region line (number, x, y, attribute, max area)", 5);
     for (std::size_t i = 0; i < nr; ++i) {
-      in.expect(t, fmt::format("region {} of {}", i + 1, nr));
+      in.expect_item(t, "region", i + 1, nr);
       regions.line(t);
       in.integer(t[0], "region number");
       Region r;

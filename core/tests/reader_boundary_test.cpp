@@ -5,6 +5,7 @@
 // mutants of tools/mutation/mutants.txt it kills.
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -114,6 +115,50 @@ TEST_F(ReaderBoundary, MeshFullPolyVertexLinesSkipped) {
   ASSERT_EQ(m.constrained_edges.size(), 3u);
   EXPECT_EQ(m.constrained_edges[2].a, 2);
   EXPECT_EQ(m.constrained_edges[2].b, 0);
+}
+
+}  // namespace
+}  // namespace lepp
+
+namespace lepp {
+namespace {
+
+// The numbers' fast path (std::from_chars) and the strtod/strtoll path it falls back to
+// give the same values and the same errors: a sign '+', hexadecimal, a decimal point
+// without digits on one side, subnormals, underflow to zero, overflow, inf and nan,
+// integers with '+' and beyond 64 bits. Each row: a coordinate (or a vertex number) as
+// written, and the value read, or the error's words.
+TEST_F(ReaderBoundary, NumberTokensReadAsStrtodReadsThem) {
+  struct Row {
+    const char* token;
+    double value;         // read
+    const char* error;    // or this error (nullptr: none)
+  };
+  const Row rows[] = {
+      {"1.5", 1.5, nullptr},          {"+1.5", 1.5, nullptr},       {"-0", -0.0, nullptr},
+      {".5", 0.5, nullptr},           {"5.", 5.0, nullptr},         {"1e3", 1000.0, nullptr},
+      {"1E-3", 1e-3, nullptr},        {"0x10", 16.0, nullptr},      {"0x1p-3", 0.125, nullptr},
+      {"4.9e-324", 4.9e-324, nullptr}, {"1e-400", 0.0, nullptr},    {"2.2250738585072011e-308", 2.2250738585072011e-308, nullptr},
+      {"1e400", 0, "too large"},       {"inf", 0, "not finite"},    {"nan", 0, "not finite"},
+      {"1e", 0, "not a number"},       {"1.5x", 0, "not a number"}, {"--1", 0, "not a number"},
+  };
+  for (const Row& r : rows) {
+    const std::string node = write("v.node", std::string("1 2 0 0\n1 ") + r.token + " 2\n");
+    try {
+      const Pslg p = read_node(node);
+      ASSERT_EQ(r.error, nullptr) << r.token << " was read as " << p.vertices[0].x;
+      EXPECT_EQ(p.vertices[0].x, r.value) << r.token;
+      EXPECT_EQ(std::signbit(p.vertices[0].x), std::signbit(r.value)) << r.token;
+    } catch (const InputError& e) {
+      ASSERT_NE(r.error, nullptr) << r.token << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(r.error), std::string::npos) << r.token << ": " << e.what();
+      EXPECT_EQ(e.line(), 2) << r.token;
+    }
+  }
+  // Integers: '+' and leading zeros read as strtoll reads them; beyond 64 bits an error.
+  EXPECT_EQ(read_node(write("p.node", "+1 2 0 0\n+1 0 0\n")).vertices.size(), 1u);
+  EXPECT_EQ(read_node(write("z.node", "001 2 0 0\n0001 0 0\n")).vertices.size(), 1u);
+  EXPECT_THROW(read_node(write("big.node", "99999999999999999999 2 0 0\n1 0 0\n")), InputError);
 }
 
 }  // namespace

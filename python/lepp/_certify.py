@@ -61,14 +61,15 @@ class Report:
 
 def certify(pslg, mesh, *, min_angle=0, exempt_small_input_angles=False, conforming=False, theorem2=True,
             max_area=None, region_areas=False, convex_hull=False, split_crossings=False, max_listed=50,
-            unimprovable=None):
+            unimprovable=None, threads=1):
     """Certifies a mesh of a PSLG exactly, as `lepp certify` does.
 
     pslg: a PSLG dict, a path, or a (vertices, segments[, holes[, regions]]) tuple.
     mesh: a lepp.Mesh or a dict with vertices (n, 2), triangles (m, 3) and optionally
     edges (the constrained edges) and input_vertices. A lepp.Mesh's unimprovable
     triangles are passed on (they are exempt when the rule of ALGORITHM.md section 8
-    holds for them). Returns a lepp.Report; bad input raises InputError.
+    holds for them). threads: as `lepp certify --threads` (0: the machine's cores); the
+    report is the same for any count. Returns a lepp.Report; bad input raises InputError.
     """
     if isinstance(pslg, tuple):
         pslg = pslg_dict(*pslg)
@@ -82,7 +83,7 @@ def certify(pslg, mesh, *, min_angle=0, exempt_small_input_angles=False, conform
                   max_area=0.0 if max_area is None else float(max_area), region_areas=bool(region_areas),
                   max_listed=int(max_listed), convex_hull=bool(convex_hull), split_crossings=bool(split_crossings),
                   unimprovable=list(unimprovable))
-    report, text, warnings = _lepp.certify(*args, **kwargs)
+    report, text, warnings = _lepp.certify(*args, **kwargs, threads=int(threads))
     ran = {c: True for c in CHECKS}
     ran["min-angle"] = min_angle > 0
     ran["theorem-2"] = bool(theorem2)

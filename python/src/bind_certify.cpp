@@ -41,9 +41,11 @@ void bind_certify(py::module_& m) {
       "certify",
       [](const py::dict& pslg, const py::dict& mesh, double min_angle, bool conforming, bool theorem2,
          bool exempt_small_input_angles, double max_area, bool region_areas, std::size_t max_listed, bool convex_hull,
-         bool split_crossings, const py::list& unimprovable) {
-        const certify::Options o = options_of(min_angle, conforming, theorem2, exempt_small_input_angles, max_area, region_areas,
+         bool split_crossings, const py::list& unimprovable, int threads) {
+        if (threads < 0) throw std::invalid_argument("threads: must be >= 0 (0: the machine's cores)");
+        certify::Options o = options_of(min_angle, conforming, theorem2, exempt_small_input_angles, max_area, region_areas,
                                               max_listed, unimprovable);
+        o.threads = threads;
         Pslg raw = pslg_from_dict(pslg);
         Mesh m = mesh_from_dict(mesh);
         std::vector<std::string> warnings;
@@ -61,7 +63,7 @@ void bind_certify(py::module_& m) {
       py::arg("pslg"), py::arg("mesh"), py::arg("min_angle") = 0.0, py::arg("conforming") = false,
       py::arg("theorem2") = true, py::arg("exempt_small_input_angles") = false, py::arg("max_area") = 0.0,
       py::arg("region_areas") = false, py::arg("max_listed") = 50, py::arg("convex_hull") = false,
-      py::arg("split_crossings") = false, py::arg("unimprovable") = py::list(),
+      py::arg("split_crossings") = false, py::arg("unimprovable") = py::list(), py::arg("threads") = 1,
       "The exact certificate: (report dict as lepp certify --json, report text, warnings).");
   m.def(
       "certify_html",

@@ -107,3 +107,18 @@ def test_repr_html_is_the_cli_page(workdir):
     cli = (workdir / "m.html").read_text()
     strip = lambda p: p[p.index('<p id="verdict"'):]  # the title and the command line differ
     assert strip(cli) == strip(page)
+
+
+def test_threads_change_nothing_but_the_time(workdir):
+    """threads=N (as lepp certify --threads N) gives the same report, violations in the same order."""
+    mesh = lepp.refine(A, min_angle=25)
+    mesh.write(workdir / "m")
+    for angle in (25, 35):  # certified, then many angle violations
+        one = lepp.certify(A, mesh, min_angle=angle, max_listed=5)
+        for threads in (2, 3, 0):
+            many = lepp.certify(A, mesh, min_angle=angle, max_listed=5, threads=threads)
+            assert many.json == one.json and many.text == one.text
+        cli = run_cli("certify", A, str(workdir / "m"), "--min-angle", str(angle), "--max-listed", "5", "--json", "--threads", "2")
+        assert without_version(json.loads(cli.stdout)) == one.json
+    with pytest.raises(ValueError):
+        lepp.certify(A, mesh, threads=-1)

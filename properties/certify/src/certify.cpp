@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <optional>
 
+#include "lepp/refine.h"
 #include "passes.h"
 
 namespace lepp::certify {
@@ -47,6 +50,11 @@ Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
   Certification cert(pslg, mesh, options, report);
   // 1. Topology (and the index's half-edges), 2. input vertices.
   pass::index_triangles(cert);
+  // With threads, the statistics' angles and edges beside every other pass (they read
+  // only the valid triangles).
+  std::optional<std::future<MeshStats>> stats_ahead;
+  if (threads_or_cores(options.threads) > 1)
+    stats_ahead = std::async(std::launch::async, [&cert] { return pass::valid_triangle_stats(cert.index); });
   pass::index_half_edges(cert);
   pass::merge_duplicate_vertices(cert);
   pass::index_domain(cert);
@@ -66,7 +74,7 @@ Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
   pass::min_angle(cert);
   pass::theorem2(cert);
   pass::size_bound(cert);
-  pass::statistics(cert);
+  pass::statistics(cert, stats_ahead ? &*stats_ahead : nullptr);
   return report;
 }
 

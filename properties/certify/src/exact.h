@@ -7,17 +7,68 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/Interval_nt.h>
 
+#include <cmath>
+
 #include "lepp/pslg.h"
 
 namespace lepp::certify::exact {
 
+// A double with a bound on its distance from the exact value of the expression that
+// computed it (round to nearest): the first, cheapest filter of sign(). Each +, - adds
+// half an ulp of the result; each * the propagated errors and half an ulp, plus the
+// largest error of a product below the normal range (2^-1075, taken as 2^-1072 to cover
+// the bound's own products there). The bound's own roundings are covered by widening it
+// by 2^-40 relative before it is used. Overflow gives inf or NaN: no decision.
+struct ErrorBounded {
+  double v = 0;
+  double e = 0;  // |exact - v| <= e (up to the widening above)
+  ErrorBounded() = default;
+  explicit ErrorBounded(double x) : v(x) {}
+  ErrorBounded(double x, double err) : v(x), e(err) {}
+  static constexpr double kHalfUlp = 0x1p-53;
+  static constexpr double kTiny = 0x1p-1072;
+  friend ErrorBounded operator+(const ErrorBounded& a, const ErrorBounded& b) {
+    const double r = a.v + b.v;
+    return {r, a.e + b.e + kHalfUlp * std::abs(r)};
+  }
+  friend ErrorBounded operator-(const ErrorBounded& a, const ErrorBounded& b) {
+    const double r = a.v - b.v;
+    return {r, a.e + b.e + kHalfUlp * std::abs(r)};
+  }
+  friend ErrorBounded operator*(const ErrorBounded& a, const ErrorBounded& b) {
+    const double r = a.v * b.v;
+    return {r, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e + kHalfUlp * std::abs(r) + kTiny};
+  }
+  // The sign of the exact value if the bound decides it, else 2.
+  int sign_or_undecided() const {
+    const double bound = e * (1 + 0x1p-40) + kTiny;
+    if (!(std::isfinite(v) && std::isfinite(bound))) return 2;
+    if (v > bound) return 1;
+    if (v < -bound) return -1;
+    if (v == 0 && e == 0) return 0;  // every step exact (differences of equal doubles, sums of zeros)
+    return 2;
+  }
+};
+
+}  // namespace lepp::certify::exact
+
+// CGAL::abs for ErrorBounded, as the predicates write it (a plain overload: CGAL's own
+// template would take the type's traits).
+namespace CGAL {
+inline lepp::certify::exact::ErrorBounded abs(const lepp::certify::exact::ErrorBounded& a) { return {std::abs(a.v), a.e}; }
+}  // namespace CGAL
+
+namespace lepp::certify::exact {
+
 // f is a generic callable taking a number-type tag (a value of type NT) and
-// returning an NT: evaluated on intervals first, exactly only if needed. The
-// polynomials use only +, - and *, which Mpzf computes exactly. (Boost's
+// returning an NT: evaluated with a rounding-error bound first (ErrorBounded),
+// then on intervals, exactly only if both leave the sign open. The
+// polynomials use only +, -, * and abs, which Mpzf computes exactly. (Boost's
 // expression-template rationals were used here before; g++ -O3 turned a path
 // through them into a null dereference, caught by fuzz_support_test.)
 template <class F>
 int sign(const F& f) {
+  if (const int s = f(ErrorBounded(0)).sign_or_undecided(); s != 2) return s;
   {
     CGAL::Protect_FPU_rounding<true> guard;
     const CGAL::Interval_nt<false> r = f(CGAL::Interval_nt<false>(0));

@@ -2,9 +2,11 @@
 // The certifier's passes over one Certification, in the order certify() runs them (certify.cpp).
 // Private to the certifier; lepp/certify/checks.h runs one group alone.
 #pragma once
+#include <future>
 #include <optional>
 
 #include "certification.h"
+#include "lepp/stats.h"
 
 namespace lepp::certify::pass {
 
@@ -38,8 +40,10 @@ void min_angle(Certification& cert);   // with the small-input-angle and precisi
 void theorem2(Certification& cert);
 void size_bound(Certification& cert);  // regions flooded, then areas against their bounds
 
-// Not a check: the statistics the report shows.
-void statistics(Certification& cert);
+// Not a check: the statistics the report shows; mesh_stats of the valid triangles
+// (valid_triangle_stats, which needs only index_triangles) taken from `ahead` if given.
+MeshStats valid_triangle_stats(const MeshIndex& ix);
+void statistics(Certification& cert, std::future<MeshStats>* ahead = nullptr);
 
 // One group alone on the full index: the report of lepp/certify/checks.h.
 Report run_alone(Check group, void (*group_pass)(Certification&), const Pslg& pslg, const Mesh& mesh, const Options& options);

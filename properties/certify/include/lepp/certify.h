@@ -109,6 +109,10 @@ struct Options {
   double max_area = 0;
   bool region_area_bounds = false;
   std::size_t max_listed_per_reason = 50;  // further violations are counted, not listed
+  // Threads for the passes over triangles and edges (0: the machine's cores). Each pass
+  // splits its work into fixed ranges and adds their violations in range order, so the
+  // report is the same for any count (docs/CERTIFIER.md, "Threads").
+  int threads = 1;
 };
 
 // The statistics the paper plots (doubles, for display) and what was checked.

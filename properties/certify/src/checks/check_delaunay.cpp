@@ -2,6 +2,7 @@
 // The Delaunay check on the built index: the in-circle test across every edge it covers.
 #include "../exact.h"
 #include "../passes.h"
+#include "../ranges.h"
 #include "lepp/certify/checks.h"
 
 namespace lepp::certify {
@@ -10,21 +11,28 @@ namespace pass {
 // Every interior edge (constrained ones only when conforming) locally Delaunay, exactly.
 void delaunay(Certification& cert) {
   const MeshIndex& ix = cert.index;
-  for (std::size_t h = 0; h < ix.twin.size(); ++h) {
-    const int g = ix.twin[h];
-    if (g < static_cast<int>(h)) continue;  // each interior edge once; boundary and bad edges skipped
-    if (ix.constrained_half[h] && !cert.options.conforming) continue;
-    const int a = ix.from(static_cast<int>(h)), b = ix.to(static_cast<int>(h)), c = ix.apex(static_cast<int>(h)), d = ix.apex(g);
-    ++cert.report.stats.delaunay_edges_checked;
-    if (exact::orient(ix.P(a), ix.P(b), ix.P(c)) <= 0) continue;  // reported; in-circle meaningless
-    const int side = exact::incircle(ix.P(a), ix.P(b), ix.P(c), ix.P(d));
-    if (side == 0) ++cert.report.stats.cocircular_edges;
-    if (side > 0)
-      cert.add({Reason::NotLocallyDelaunay,
-                fmt::format("{}edge {}-{} {} {} is not locally Delaunay: vertex {} {} is strictly inside the circumcircle of {}",
-                            ix.constrained_half[h] ? "constrained " : "", a, b, pt(ix.P(a)), pt(ix.P(b)), d, pt(ix.P(d)), ix.tri_text(h / 3)),
-                {static_cast<int>(h / 3), g / 3}, {{a, b}}, {a, b, c, d}, {}, -1});
-  }
+  const bool conforming = cert.options.conforming;
+  // counters: [0] edges checked, [1] cocircular edges.
+  const auto counts = over_ranges(cert, ix.twin.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    for (std::size_t h = begin; h < end; ++h) {
+      const int g = ix.twin[h];
+      if (g < static_cast<int>(h)) continue;  // each interior edge once; boundary and bad edges skipped
+      if (ix.constrained_half[h] && !conforming) continue;
+      const int a = ix.from(static_cast<int>(h)), b = ix.to(static_cast<int>(h)), c = ix.apex(static_cast<int>(h)), d = ix.apex(g);
+      ++found.counters[0];
+      if (exact::orient(ix.P(a), ix.P(b), ix.P(c)) <= 0) continue;  // reported; in-circle meaningless
+      const int side = exact::incircle(ix.P(a), ix.P(b), ix.P(c), ix.P(d));
+      if (side == 0) ++found.counters[1];
+      if (side > 0)
+        found.add({Reason::NotLocallyDelaunay,
+                   fmt::format("{}edge {}-{} {} {} is not locally Delaunay: vertex {} {} is strictly inside the circumcircle of {}",
+                               ix.constrained_half[h] ? "constrained " : "", a, b, pt(ix.P(a)), pt(ix.P(b)), d, pt(ix.P(d)),
+                               ix.tri_text(h / 3)),
+                   {static_cast<int>(h / 3), g / 3}, {{a, b}}, {a, b, c, d}, {}, -1});
+    }
+  });
+  cert.report.stats.delaunay_edges_checked += counts[0];
+  cert.report.stats.cocircular_edges += counts[1];
 }
 
 }  // namespace pass

@@ -2,6 +2,7 @@
 // The Theorem 2 check on the built index: no angle over 120 degrees at an unconstrained terminal edge.
 #include "../exact.h"
 #include "../passes.h"
+#include "../ranges.h"
 #include "lepp/stats.h"
 #include "lepp/certify/checks.h"
 
@@ -11,25 +12,29 @@ namespace {
 
 void check_terminal_edges(Certification& cert) {
   const MeshIndex& ix = cert.index;
-  for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t) {
-    if (!ix.tri_ok[t]) continue;
-    const int h = ix.longest_half(t), g = ix.twin[static_cast<std::size_t>(h)];
-    if (g < h || ix.constrained_half[static_cast<std::size_t>(h)]) continue;  // once per pair; boundary, bad, constrained skipped
-    if (ix.longest_half(static_cast<std::size_t>(g / 3)) != g) continue;       // not terminal
-    ++cert.report.stats.terminal_pairs_checked;
-    const int a = ix.from(h), b = ix.to(h);
-    for (int half : {h, g}) {
-      const int c = ix.apex(half);
-      if (exact::angle_over_120(ix.P(c), ix.P(a), ix.P(b))) {
-        const Point &C = ix.P(c), &A = ix.P(a), &B = ix.P(b);
-        const double deg = angle_deg(C, A, B);  // scaled: right at 1e299 and 1e-301 too
-        cert.add({Reason::TerminalAngleOver120,
-                  fmt::format("terminal edge {}-{} {} {} (triangles {} and {}): the angle at {} {} is over 120 degrees (about {})", a, b,
-                              pt(A), pt(B), h / 3, g / 3, c, pt(C), deg),
-                  {h / 3, g / 3}, {{a, b}}, {a, b, c}, {}, -1});
+  // counters: [0] terminal pairs checked.
+  const auto counts = over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!ix.tri_ok[t]) continue;
+      const int h = ix.longest_half(t), g = ix.twin[static_cast<std::size_t>(h)];
+      if (g < h || ix.constrained_half[static_cast<std::size_t>(h)]) continue;  // once per pair; boundary, bad, constrained skipped
+      if (ix.longest_half(static_cast<std::size_t>(g / 3)) != g) continue;       // not terminal
+      ++found.counters[0];
+      const int a = ix.from(h), b = ix.to(h);
+      for (int half : {h, g}) {
+        const int c = ix.apex(half);
+        if (exact::angle_over_120(ix.P(c), ix.P(a), ix.P(b))) {
+          const Point &C = ix.P(c), &A = ix.P(a), &B = ix.P(b);
+          const double deg = angle_deg(C, A, B);  // scaled: right at 1e299 and 1e-301 too
+          found.add({Reason::TerminalAngleOver120,
+                     fmt::format("terminal edge {}-{} {} {} (triangles {} and {}): the angle at {} {} is over 120 degrees (about {})",
+                                 a, b, pt(A), pt(B), h / 3, g / 3, c, pt(C), deg),
+                     {h / 3, g / 3}, {{a, b}}, {a, b, c}, {}, -1});
+        }
       }
     }
-  }
+  });
+  cert.report.stats.terminal_pairs_checked += counts[0];
 }
 
 }  // namespace

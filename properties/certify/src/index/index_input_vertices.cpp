@@ -44,10 +44,19 @@ void index_input_vertices(Certification& cert) {
   const std::size_t n = ix.pslg.vertices.size();
   ix.input_to_mesh.assign(n, -1);
   ix.mesh_to_input.assign(ix.mesh.vertices.size(), -1);
+  // For the input vertices the mesh does not number as the input does (all of them in a
+  // mesh read from files), the first mesh vertex at the same coordinates not merged away,
+  // -1 if none: one pass over the mesh against a table of those input vertices only.
   std::unordered_map<Point, int, PointHash> where;
-  where.reserve(ix.mesh.vertices.size() * 2);
-  for (std::size_t i = ix.mesh.vertices.size(); i-- > 0;)
-    if (!ix.merged[i]) where[ix.mesh.vertices[i]] = static_cast<int>(i);  // the first copy not merged away
+  if (ix.mesh.input_vertices < n) {
+    where.reserve(2 * (n - ix.mesh.input_vertices));
+    for (std::size_t i = ix.mesh.input_vertices; i < n; ++i) where.emplace(ix.pslg.vertices[i], -1);
+    for (std::size_t v = 0; v < ix.mesh.vertices.size(); ++v) {
+      if (ix.merged[v]) continue;
+      const auto it = where.find(ix.mesh.vertices[v]);
+      if (it != where.end() && it->second < 0) it->second = static_cast<int>(v);
+    }
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const Point& p = ix.pslg.vertices[i];
     if (i < ix.mesh.input_vertices) {
@@ -61,7 +70,7 @@ void index_input_vertices(Certification& cert) {
       if (i < ix.mesh.vertices.size()) ix.input_to_mesh[i] = static_cast<int>(i);
     } else {
       auto it = where.find(p);
-      if (it != where.end()) ix.input_to_mesh[i] = it->second;
+      if (it != where.end() && it->second >= 0) ix.input_to_mesh[i] = it->second;
       else if (i + ix.pslg.crossing_vertices >= n) ix.input_to_mesh[i] = nearest_mesh_vertex(ix, p);
     }
     const int m = ix.input_to_mesh[i];

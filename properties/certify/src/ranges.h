@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A pass over [0, n) on Options::threads threads: fixed ranges, each with its own list of
+// violations and counters, merged in range order. The report is the one a single
+// thread makes, for any count: the same violations in the same order, the same counts.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include "certification.h"
+#include "lepp/refine.h"
+
+namespace lepp::certify {
+
+// What one range of a pass found: its violations in order, and counters the pass sums.
+struct RangeFindings {
+  std::vector<Violation> violations;
+  std::array<std::size_t, 2> counters{};
+  void add(Violation v) { violations.push_back(std::move(v)); }
+};
+
+// Calls body(begin, end, findings) on consecutive ranges covering [0, n): one range per
+// thread (a single call on one thread, or when n is small), then adds each range's
+// violations through cert.add in range order. Returns the counters summed.
+// body may read the index and the options only: the report is written here, after.
+template <class Body>
+std::array<std::size_t, 2> over_ranges(Certification& cert, std::size_t n, const Body& body) {
+  // One range per thread, however small n is: a thread costs microseconds, and small
+  // meshes (the tests') then run the same merging as large ones.
+  const std::size_t threads = static_cast<std::size_t>(threads_or_cores(cert.options.threads));
+  const std::size_t ranges = std::max<std::size_t>(1, std::min(threads, n));
+  std::vector<RangeFindings> found(ranges);
+  std::vector<std::exception_ptr> failed(ranges);
+  auto range = [&](std::size_t r) {
+    try {
+      body(n * r / ranges, n * (r + 1) / ranges, found[r]);
+    } catch (...) {
+      failed[r] = std::current_exception();  // rethrown below, on the calling thread
+    }
+  };
+  if (ranges == 1) {
+    range(0);
+  } else {
+    std::vector<std::thread> workers;
+    for (std::size_t r = 1; r < ranges; ++r) workers.emplace_back(range, r);
+    range(0);
+    for (std::thread& w : workers) w.join();
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  std::array<std::size_t, 2> sums{};
+  for (RangeFindings& f : found) {
+    for (Violation& v : f.violations) cert.add(std::move(v));
+    for (std::size_t i = 0; i < sums.size(); ++i) sums[i] += f.counters[i];
+  }
+  return sums;
+}
+
+}  // namespace lepp::certify
