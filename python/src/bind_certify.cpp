@@ -19,9 +19,10 @@ void bind_certify(py::module_& m) {
       "certify",
       [](const py::dict& pslg, const py::dict& mesh, double min_angle, bool conforming, bool theorem2,
          bool exempt_small_input_angles, double max_area, bool region_areas, std::size_t max_listed, bool convex_hull,
-         bool split_crossings, const py::list& unimprovable) {
+         bool split_crossings, const py::list& unimprovable, std::size_t tie_search_states, double time_limit) {
         if (!(min_angle >= 0 && min_angle <= 60)) throw std::invalid_argument("min_angle: must be in [0, 60] degrees");
         if (!(max_area >= 0)) throw std::invalid_argument("max_area: must be >= 0 (or None)");
+        if (!(time_limit >= 0)) throw std::invalid_argument("time_limit: must be >= 0 seconds (or None)");
         Pslg raw = pslg_from_dict(pslg);
         Mesh m = mesh_from_dict(mesh);
         certify::Options o;
@@ -33,6 +34,8 @@ void bind_certify(py::module_& m) {
         o.region_area_bounds = region_areas;
         o.max_listed_per_reason = max_listed;
         o.unimprovable = unimprovable_from_list(unimprovable);
+        o.tie_search_states = tie_search_states;
+        o.time_limit_seconds = time_limit;
         std::vector<std::string> warnings;
         std::string json, text;
         {
@@ -49,6 +52,7 @@ void bind_certify(py::module_& m) {
       py::arg("theorem2") = true, py::arg("exempt_small_input_angles") = false, py::arg("max_area") = 0.0,
       py::arg("region_areas") = false, py::arg("max_listed") = 50, py::arg("convex_hull") = false,
       py::arg("split_crossings") = false, py::arg("unimprovable") = py::list(),
+      py::arg("tie_search_states") = kTieSearchStates, py::arg("time_limit") = 0.0,
       "The exact certificate: (report dict as lepp certify --json, report text, warnings).");
   m.def(
       "certify_checks",
