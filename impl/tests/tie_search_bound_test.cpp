@@ -169,6 +169,17 @@ TEST(TieSearchBound, UnboundedCertifierRejectsTheDefaultMeshWithAWitness) {
     EXPECT_NE(text.find(fmt::format("Lepp triangle {} (longest {}-{})", c.triangle, w.longest[0][0], w.longest[0][1])),
               std::string::npos)
         << text;
+    // A Lepp of thousands of triangles along the strip: both ends named, the middle counted (the JSON has all).
+    ASSERT_GT(w.lepp.size(), 7u);
+    const std::size_t n = w.lepp.size();
+    EXPECT_NE(text.find(fmt::format("... {} more triangles ... -> triangle {} (longest {}-{})", n - 6, w.lepp[n - 3],
+                                    w.longest[n - 3][0], w.longest[n - 3][1])),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find(fmt::format("-> triangle {} (longest {}-{}), terminal pair", w.lepp.back(), w.longest.back()[0],
+                                    w.longest.back()[1])),
+              std::string::npos)
+        << text;
   }
 }
 

@@ -50,7 +50,8 @@ class Search {
         out.witness = std::move(witness_);
         break;
       }
-    out.states = seen_.size();
+    // The states followed: at the bound, the one past it was only counted.
+    out.states = stopped_ && why_ == PrecisionUndecided::Bound ? seen_.size() - 1 : seen_.size();
     return out;
   }
 

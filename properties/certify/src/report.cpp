@@ -154,10 +154,10 @@ std::string format_report(const Report& report) {
   if (!report.precision_claims.empty()) {
     std::size_t by[3] = {0, 0, 0};
     for (const PrecisionClaim& c : report.precision_claims) ++by[static_cast<int>(c.outcome)];
-    out += fmt::format("{} triangles listed at double precision: {} exempt, {} rejected (witness below), {} undecided at bound {}"
-                       " Lepp states{}\n",
+    out += fmt::format("{} triangles listed at double precision: {} exempt, {} rejected (witness below), {} undecided {}{}\n",
                        report.precision_claims.size(), by[0], by[1], by[2],
-                       report.tie_search_states == 0 ? std::string("none (no bound)") : std::to_string(report.tie_search_states),
+                       report.tie_search_states == 0 ? std::string("(no bound)")
+                                                     : fmt::format("at bound {} Lepp states", report.tie_search_states),
                        report.time_limit_seconds > 0 ? fmt::format(" (time limit {} s)", report.time_limit_seconds) : std::string());
   }
   if (report.precision_exempt_count > 0) {

@@ -38,14 +38,25 @@ std::vector<int> segments_of(const MeshIndex& ix, int v) {
   return out;
 }
 
+// Triangles of a witness's Lepp named in its text, at each end (the JSON has them all):
+// a Lepp along a strip at the limit runs through thousands.
+constexpr std::size_t kWitnessLeppEnds = 3;
+
 // The witness of a rejected claim, one clause: the point with its exact value (the
 // shortest decimal that reads back to it, and hexadecimal), the branch and the choice
 // that reach it (the Lepp under one resolution of exact length ties).
 std::string witness_text(const PrecisionWitness& w) {
   auto edge = [](const std::array<int, 2>& e) { return fmt::format("{}-{}", e[0], e[1]); };
   std::string lepp;
-  for (std::size_t i = 0; i < w.lepp.size(); ++i)
+  const std::size_t n = w.lepp.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == kWitnessLeppEnds && n > 2 * kWitnessLeppEnds + 1) {
+      lepp += fmt::format(" -> ... {} more triangles ...", n - 2 * kWitnessLeppEnds);
+      i = n - kWitnessLeppEnds - 1;
+      continue;
+    }
     lepp += fmt::format("{}triangle {} (longest {})", i ? " -> " : "", w.lepp[i], edge(w.longest[i]));
+  }
   std::string choice = w.terminal_other >= 0 ? fmt::format(", terminal pair with triangle {}", w.terminal_other) : std::string();
   if (w.second1[0] >= 0) choice += fmt::format(", second-longest edges {} and {}", edge(w.second1), edge(w.second2));
   if (w.split[0] >= 0) choice += fmt::format(", splitting edge {}", edge(w.split));
