@@ -65,6 +65,7 @@ TEST(TieSearchBound, DefaultIs1024LeppStatesInTheEnginesAndTheCertifier) {
 // The bound reaches each engine: on tie-finding.poly at 20 degrees the default's
 // search inserts through another tie resolution; with a bound of one state it
 // cannot follow any other Lepp, so the run differs. Both engines agree at each bound.
+// With no bound (0) the run is the default's: every search there ends within 1024 states.
 TEST(TieSearchBound, ReachesEachEngine) {
   const Pslg p = load("tie-finding.poly");
   const RefineOptions wide = options(20, Method::Centroid, kTieSearchStates), narrow = options(20, Method::Centroid, 1);
@@ -77,6 +78,10 @@ TEST(TieSearchBound, ReachesEachEngine) {
   EXPECT_NE(difference(reference_wide, reference_narrow), "") << "the reference ignores tie_search_states";
   EXPECT_LT(fast_narrow.tie_resolutions, fast_wide.tie_resolutions);
   EXPECT_LT(reference_narrow.tie_resolutions, reference_wide.tie_resolutions);
+  // 0 is no bound: here every search ends within the default, so the run is the default's.
+  const RefineOptions unbounded = options(20, Method::Centroid, 0);
+  EXPECT_EQ(difference(fast::refine(p, unbounded), fast_wide), "") << "the fast engine takes 0 for a bound of 0 states";
+  EXPECT_EQ(difference(reference::refine(p, unbounded), reference_wide), "") << "the reference takes 0 for a bound of 0 states";
 }
 
 // The three outcomes on one claim: lepp's mesh of tie-finding.poly at 20 degrees leaves
