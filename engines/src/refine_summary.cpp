@@ -120,7 +120,7 @@ std::string refine_text_summary(const RefineRequest& request, const RefineInput&
                    "unimprovable          {} triangles ({} by small input angles, {} at double precision; listed in "
                    "{}.unimprovable)\n",
                    result.unimprovable.size(), result.unimprovable.size() - at_precision, at_precision, request.output);
-  // The bound those were left at: lepp certify with the same --tie-search-states decides the same claims.
+  // The bound those were left at: their certificate is asked at the same --tie-search-states (CERTIFIER.md 5c).
   if (at_precision > 0)
     fmt::format_to(out, "tie search bound      {}\n",
                    options.tie_search_states == 0 ? std::string("none") : fmt::format("{} Lepp states", options.tie_search_states));

@@ -15,46 +15,15 @@
 
 #include "lepp/certify.h"
 #include "lepp/fast.h"
-#include "lepp/input.h"
 #include "lepp/reference.h"
-#include "lepp/validate.h"
 #include "result_diff.h"
+#include "tie_search_support.h"
 
 namespace lepp {
 namespace {
 
 using impl_test::difference;
-
-const std::string kPrecision = LEPP_SOURCE_DIR "/corpus/regressions/precision/";
-
-Pslg load(const std::string& file) {
-  std::vector<std::string> warnings;
-  return validate(read_input(kPrecision + file, warnings), DomainOptions{}, warnings);
-}
-
-RefineOptions options(double theta, Method method, std::size_t states) {
-  RefineOptions o;
-  o.min_angle_deg = theta;
-  o.method = method;
-  o.tie_search_states = states;
-  return o;
-}
-
-// The strict certificate at theta (the engine's list held to the certifier's rules) at `states`.
-certify::Report certificate(const Pslg& pslg, const RefineResult& r, double theta, Method method, std::size_t states) {
-  certify::Options o;
-  o.min_angle_deg = theta;
-  o.unimprovable = r.unimprovable;
-  o.precision_method = method;
-  o.tie_search_states = states;
-  return certify::certify(pslg, r.mesh, o);
-}
-
-std::size_t count(const certify::Report& rep, certify::PrecisionOutcome outcome) {
-  std::size_t n = 0;
-  for (const certify::PrecisionClaim& c : rep.precision_claims) n += c.outcome == outcome;
-  return n;
-}
+using namespace tie_search_test;
 
 TEST(TieSearchBound, DefaultIs1024LeppStatesInTheEnginesAndTheCertifier) {
   EXPECT_EQ(kTieSearchStates, 1024u);
@@ -118,26 +87,6 @@ TEST(TieSearchBound, ClaimsAreExemptOrUndecidedAtTheBoundNamed) {
   ASSERT_EQ(count(timed, certify::PrecisionOutcome::Undecided), timed.precision_claims.size());
   EXPECT_EQ(timed.precision_claims.front().undecided, certify::PrecisionUndecided::TimeLimit);
   EXPECT_NE(certify::format_report(timed).find("stopped undecided at the time limit"), std::string::npos);
-}
-
-// Issue 39: the two corpus runs that did not certify at the default bound (the corpus
-// sweep, docs/PRECISION.md) certify strictly when both engines and the certifier
-// search 4096 Lepp states: tie-finding-subnormal-midpoint.poly by the centroid method at
-// 10 and 15 degrees; fast == reference. At the default the same runs leave a claim the
-// certifier calls undecided at bound 1024 (the next test).
-TEST(TieSearchBound, SubnormalMidpointInputCertifiesAt4096StatesInBothEngines) {
-  const Pslg p = load("tie-finding-subnormal-midpoint.poly");
-  for (int theta : {10, 15}) {
-    SCOPED_TRACE(fmt::format("theta {}", theta));
-    const RefineOptions o = options(theta, Method::Centroid, 4096);
-    const RefineResult fast_run = fast::refine(p, o), reference_run = reference::refine(p, o);
-    EXPECT_EQ(difference(fast_run, reference_run), "");
-    const certify::Report rep = certificate(p, fast_run, theta, Method::Centroid, 4096);
-    EXPECT_TRUE(rep.certified()) << certify::format_report(rep);
-    EXPECT_EQ(count(rep, certify::PrecisionOutcome::Exempt), rep.precision_claims.size());
-    std::printf("[ outcome  ] theta %d at 4096 states: %s, %lld Steiner points, %zu claims of double precision, all exempt\n",
-                theta, to_string(fast_run.outcome), static_cast<long long>(fast_run.steiner_points), rep.precision_claims.size());
-  }
 }
 
 // A recorded known violation (docs/THEOREMS.md, "The precision stop and exact length
