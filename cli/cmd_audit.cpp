@@ -133,6 +133,10 @@ void add_audit_command(CLI::App& app, int& status) {
                   "paper's choice reached through two lengths within double rounding of a tie is accepted, as a note)")
       ->default_val("exact")
       ->check(CLI::IsMember({"exact", "double"}));
+  cmd->add_option("--tie-search-states", a->tie_search_states,
+                  "The precision-limit search's bound, Lepp states per triangle, of the certificate and of lepp's built-in "
+                  "engines (under audit and compared): beyond it no exemption (0: no bound; docs/CERTIFIER.md section 5c)")
+      ->default_val(a->tie_search_states);
   cmd->add_option("--out", a->out, "Directory of the findings (ROW-N/: input.poly, out.*, finding.svg, reproduce.sh)")->default_val("audit-out");
   cmd->add_option("--junit", a->junit, "Also write the rows as JUnit XML to this file");
   cmd->add_flag("--json", a->json, "Print the report as JSON instead of markdown");

@@ -35,6 +35,8 @@ struct CertifyArgs {
   bool exempt = false;
   bool exempt_precision = false;
   bool ties_by_ids = false;
+  std::size_t tie_search_states = kTieSearchStates;
+  double time_limit = 0;
   std::string method = to_string(Method::Centroid);
   double max_area = 0;
   bool region_areas = false;
@@ -95,6 +97,8 @@ int run_certify(const CertifyArgs& args) {
   options.exempt_small_input_angles = args.exempt;
   options.exempt_precision_limited = args.exempt_precision;
   options.precision_ties_by_ids = args.ties_by_ids;
+  options.tie_search_states = args.tie_search_states;
+  options.time_limit_seconds = args.time_limit;
   options.precision_method = *engines::parse_method(args.method);  // the option admits only the registry's names
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
@@ -140,6 +144,15 @@ void add_certify_command(CLI::App& app, int& status) {
                 "With the precision-limit exemption (and for PREFIX.unimprovable's double-precision lines): equal edge "
                 "lengths decided by vertex ids, as lepp's engines decide them; reads numbering, so only for lepp's own "
                 "meshes, no certificate for another mesher (docs/CERTIFIER.md section 5c, Finding)");
+  cmd->add_option("--tie-search-states", args->tie_search_states,
+                  "The precision-limit search's bound: at most this many Lepp states per triangle (the engines' default); "
+                  "beyond it no exemption, and a listed claim is undecided at this bound. 0: no bound, the search decides "
+                  "(or stops at --time-limit) (docs/CERTIFIER.md section 5c)")
+      ->default_val(args->tie_search_states);
+  cmd->add_option("--time-limit", args->time_limit,
+                  "Seconds for the precision-limit searches in all (0: none); a search still running then stops undecided")
+      ->default_val(0)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--method", args->method, "The Select Point of the precision-limit exemption: centroid or midpoint")
       ->default_val(args->method)
       ->check(CLI::IsMember(engines::method_names()));

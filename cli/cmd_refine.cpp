@@ -109,6 +109,10 @@ void add_refine_command(CLI::App& app, int& status) {
                 "no number); with --max-area too, the smaller bound applies");
   cmd->add_option("--time-limit", args->time_limit, "Stop after this many seconds (outcome time-limit, exit 3)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--tie-search-states", args->tie_search_states,
+                  "At the precision limit, try other resolutions of exact length ties in at most this many Lepp states "
+                  "per triangle before leaving it (0: no bound; docs/ALGORITHM.md section 8b)")
+      ->default_val(args->tie_search_states);
   cmd->add_option("--edge-floor", args->edge_floor,
                   "Stop (outcome edge-floor, exit 3) when an edge shorter than this appears; default 2^-20 x the "
                   "input's smallest feature (docs/ALGORITHM.md)")

@@ -54,6 +54,7 @@ AuditReport empty_report(const AuditOptions& opt) {
   rep.points_cache_dir = opt.points_cache_dir;
   rep.area_centroid = opt.checks.area_centroid;
   rep.arithmetic_double = opt.checks.arithmetic_double;
+  rep.tie_search_states = opt.checks.tie_search_states;
   for (std::size_t i = 0; i < kRows; ++i) rep.rows[i].row = kAllRows[i];
   return rep;
 }

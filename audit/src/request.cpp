@@ -48,6 +48,8 @@ void apply_request(const AuditRequest& a, AuditOptions& o) {
   if (o.checks.area_centroid) o.reproduce_prefix += " --centroid area";
   o.checks.arithmetic_double = a.arithmetic == "double";
   if (o.checks.arithmetic_double) o.reproduce_prefix += " --arithmetic double";
+  o.checks.tie_search_states = a.tie_search_states;
+  if (a.tie_search_states != kTieSearchStates) o.reproduce_prefix += " --tie-search-states " + std::to_string(a.tie_search_states);
   o.out_dir = a.out;
   o.shrink = !a.no_shrink;
   o.max_findings_per_row = a.max_findings;

@@ -37,7 +37,7 @@ AuditSetup audit_setup(const audit::AuditRequest& request) {
     o.reproduce_prefix = lepp_word + " audit --cmd " + audit::shell_quote(a.cmd);
   } else {
     const Engine which = *parse_engine(a.engine, audit_engines());
-    setup.engine = audited_engine(which, order, isolate, a.root);
+    setup.engine = audited_engine(which, order, isolate, a.root, a.tie_search_states);
     o.engine_name = audit_title(which, order);
     o.reproduce_prefix = lepp_word + " audit --engine " + a.engine +
                          (order == QueueOrder::Fifo ? "" : std::string(" --order ") + lepp::to_string(order));
@@ -54,7 +54,7 @@ AuditSetup audit_setup(const audit::AuditRequest& request) {
     // Cache keys name the engine's build: a new lepp or Triangle budget is a new entry.
     const std::string build = fmt::format("{} {}", kVersion, git_commit());
     try {
-      o.comparisons.push_back(comparison_engine(*which, isolate, a.root, build));
+      o.comparisons.push_back(comparison_engine(*which, isolate, a.root, build, a.tie_search_states));
     } catch (const audit::UsageError&) {
       // Triangle missing: asked for explicitly, say so; under auto, compare without it.
       if (!automatic || *which != Engine::Triangle) throw;

@@ -7,19 +7,22 @@
 
 namespace lepp::engines {
 
-audit::Engine lepp_audit_engine(Engine which, QueueOrder order) { return audit::refine_engine(refine_function(which), order); }
+audit::Engine lepp_audit_engine(Engine which, QueueOrder order, std::size_t tie_search_states) {
+  return audit::refine_engine(refine_function(which), order, tie_search_states);
+}
 
 }  // namespace lepp::engines
 
 namespace lepp::audit {
 
-Engine refine_engine(RefineFunction refine, QueueOrder order) {
-  return [refine, order](const Pslg& pslg, const EngineRequest& req) {
+Engine refine_engine(RefineFunction refine, QueueOrder order, std::size_t tie_search_states) {
+  return [refine, order, tie_search_states](const Pslg& pslg, const EngineRequest& req) {
     EngineRun run;
     RefineOptions o;
     o.min_angle_deg = req.theta;
     o.method = req.method;
     o.order = order;
+    o.tie_search_states = tie_search_states;
     o.trace = true;
     o.time_limit_seconds = req.timeout_seconds > 0 ? req.timeout_seconds : 0;
     const auto t0 = std::chrono::steady_clock::now();
@@ -53,12 +56,13 @@ Engine refine_engine(RefineFunction refine, QueueOrder order) {
   };
 }
 
-Engine reference_points_engine() {
-  Engine reference = reference_engine();
-  return [reference](const Pslg& pslg, const EngineRequest& req) {
+Engine reference_points_engine(std::size_t tie_search_states) {
+  Engine reference = reference_engine(QueueOrder::Fifo, tie_search_states);
+  return [reference, tie_search_states](const Pslg& pslg, const EngineRequest& req) {
     RefineOptions o;
     o.min_angle_deg = req.theta;
     o.method = req.method;
+    o.tie_search_states = tie_search_states;
     o.time_limit_seconds = req.timeout_seconds > 0 ? req.timeout_seconds : 0;
     const auto t0 = std::chrono::steady_clock::now();
     try {
@@ -78,7 +82,11 @@ Engine reference_points_engine() {
   };
 }
 
-Engine fast_engine(QueueOrder order) { return engines::lepp_audit_engine(engines::Engine::Fast, order); }
-Engine reference_engine(QueueOrder order) { return engines::lepp_audit_engine(engines::Engine::Reference, order); }
+Engine fast_engine(QueueOrder order, std::size_t tie_search_states) {
+  return engines::lepp_audit_engine(engines::Engine::Fast, order, tie_search_states);
+}
+Engine reference_engine(QueueOrder order, std::size_t tie_search_states) {
+  return engines::lepp_audit_engine(engines::Engine::Reference, order, tie_search_states);
+}
 
 }  // namespace lepp::audit

@@ -59,6 +59,7 @@ RefineOptions refine_options(const RefineRequest& request) {
   options.region_area_bounds = request.region_areas;
   options.time_limit_seconds = request.time_limit;
   options.edge_floor = request.edge_floor;
+  options.tie_search_states = request.tie_search_states;
   options.trace = request.trace;
   return options;
 }

@@ -69,6 +69,7 @@ nlohmann::json refine_json_summary(const RefineRequest& request, const RefineInp
         {to_string(LeftReason::DoublePrecision), at_precision}}},
       {"precision_stops", result.precision_stops},
       {"tie_resolutions", result.tie_resolutions},
+      {"tie_search_states", options.tie_search_states},
       {"outcome", to_string(result.outcome)},
       {"stuck", result.stuck},
       {"seconds", result.seconds},
@@ -119,6 +120,10 @@ std::string refine_text_summary(const RefineRequest& request, const RefineInput&
                    "unimprovable          {} triangles ({} by small input angles, {} at double precision; listed in "
                    "{}.unimprovable)\n",
                    result.unimprovable.size(), result.unimprovable.size() - at_precision, at_precision, request.output);
+  // The bound those were left at: their certificate is asked at the same --tie-search-states (CERTIFIER.md 5c).
+  if (at_precision > 0)
+    fmt::format_to(out, "tie search bound      {}\n",
+                   options.tie_search_states == 0 ? std::string("none") : fmt::format("{} Lepp states", options.tie_search_states));
   if (options.order == QueueOrder::Random)
     fmt::format_to(out, "processing order      random (seed {})\n", static_cast<unsigned long long>(options.order_seed));
   else if (options.order == QueueOrder::Batch)

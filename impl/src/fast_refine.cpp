@@ -331,7 +331,7 @@ class Refiner {
   // resolution of it can be inserted (the precision stop leaves the triangle).
   bool settle(const Item& item, Choice& choice, RefineResult& result) {
     if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_)) return true;
-    if (!other_tie_resolution(mesh_, item.tri, opt_.method, lepp_, choice, obstacles_)) {
+    if (!other_tie_resolution(mesh_, item.tri, opt_.method, opt_.tie_search_states, lepp_, choice, obstacles_)) {
       ++result.precision_stops;
       stopped_.push_back({item, choice.rule, choice.point});
       return false;

@@ -102,6 +102,8 @@ inline bool settle_choice(TriMesh& m, const Lepp& lepp, Method method, Choice& c
 // of t and every second-longest edge under exact ties, depth first in the edge
 // order, each settled as settle_choice says. True iff one can be inserted: lepp and
 // c then hold it (lepp.m1, lepp.m2 its second-longest edges); else both unchanged.
-bool other_tie_resolution(TriMesh& m, int t, Method method, Lepp& lepp, Choice& c, SliverObstacles& obstacles);
+// At most max_states Lepp states (RefineOptions::tie_search_states; 0: no bound).
+bool other_tie_resolution(TriMesh& m, int t, Method method, std::size_t max_states, Lepp& lepp, Choice& c,
+                          SliverObstacles& obstacles);
 
 }  // namespace lepp::fast

@@ -4,11 +4,11 @@
 // second-longest edges of their terminal pairs under exact ties, in one fixed
 // order, until a choice can be inserted. Cold: reached only when the edge order's
 // Lepp has none. Independent of the certifier's enumeration, its oracle.
+#include <cstddef>
 #include <cstdint>
 #include <unordered_set>
 #include <vector>
 
-#include "lepp/rounding.h"
 #include "precision_stop.h"
 
 namespace lepp::fast {
@@ -39,7 +39,8 @@ int tied_second(const TriMesh& m, int ti, int e, int out[2]) {
 
 class TieSearch {
  public:
-  TieSearch(TriMesh& m, Method method, SliverObstacles& obstacles) : m_(m), method_(method), obstacles_(obstacles) {}
+  TieSearch(TriMesh& m, Method method, std::size_t max_states, SliverObstacles& obstacles)
+      : m_(m), method_(method), max_states_(max_states), obstacles_(obstacles) {}
 
   bool run(int t, Lepp& lepp, Choice& c) {
     path_.assign(1, t);
@@ -53,7 +54,8 @@ class TieSearch {
  private:
   // The Lepp goes on from ti (path_'s last triangle) with edge e as its longest.
   bool walk(int ti, int e, Lepp& lepp, Choice& c) {
-    if (seen_.size() >= kTieSearchStates || !seen_.insert(3 * static_cast<std::int64_t>(ti) + e).second) return false;
+    if ((max_states_ > 0 && seen_.size() >= max_states_) || !seen_.insert(3 * static_cast<std::int64_t>(ti) + e).second)
+      return false;
     const FTri& f = m_.t(ti);
     if (f.seg[e] >= 0 || f.nbr[e] < 0) return terminal(ti, e, -1, -1, lepp, c);  // constrained: one terminal triangle
     const int next = nbr_tri(f.nbr[e]), j = nbr_edge(f.nbr[e]);
@@ -88,6 +90,7 @@ class TieSearch {
 
   TriMesh& m_;
   Method method_;
+  std::size_t max_states_;  // 0: no bound
   SliverObstacles& obstacles_;
   std::vector<int> path_;  // t ... the current triangle
   std::unordered_set<std::int64_t> seen_;
@@ -95,8 +98,9 @@ class TieSearch {
 
 }  // namespace
 
-bool other_tie_resolution(TriMesh& m, int t, Method method, Lepp& lepp, Choice& c, SliverObstacles& obstacles) {
-  return TieSearch(m, method, obstacles).run(t, lepp, c);
+bool other_tie_resolution(TriMesh& m, int t, Method method, std::size_t max_states, Lepp& lepp, Choice& c,
+                          SliverObstacles& obstacles) {
+  return TieSearch(m, method, max_states, obstacles).run(t, lepp, c);
 }
 
 }  // namespace lepp::fast

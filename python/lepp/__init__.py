@@ -50,7 +50,7 @@ def validate(vertices, segments=None, holes=None, regions=None, *, convex_hull=F
 def refine(vertices, segments=None, holes=None, regions=None, *, min_angle=30, max_area=None, method="centroid",
            order="fifo", engine="fast", max_steiner=None, time_limit=None, convex_hull=False, split_crossings=False,
            trace=False, region_areas=False, edge_floor=None, vertex_markers=None, segment_markers=None,
-           order_seed=0, threads=0):
+           order_seed=0, threads=0, tie_search_states=_lepp.TIE_SEARCH_STATES):
     """Refines a PSLG into a constrained Delaunay mesh with no angle below min_angle, as
     `lepp refine` does (same engines, same mesh), and returns a lepp.Mesh.
 
@@ -62,6 +62,9 @@ def refine(vertices, segments=None, holes=None, regions=None, *, min_angle=30, m
     order_seed: the seed of order="random" (as `lepp refine --order-seed`; other orders ignore it).
     threads: the threads of order="batch"'s selection (as `lepp refine --threads`; 0: the machine's
     cores). The mesh is the same for every number; the other orders run on one.
+    tie_search_states: at the precision limit, the Lepp states per triangle searched for another
+    resolution of exact length ties before the triangle is left (as `lepp refine
+    --tie-search-states`; 0: no bound).
     """
     pslg = _pslg_dict(vertices, segments, holes, regions, vertex_markers, segment_markers)
     result = _lepp.refine(
@@ -80,6 +83,7 @@ def refine(vertices, segments=None, holes=None, regions=None, *, min_angle=30, m
         trace=bool(trace),
         order_seed=int(order_seed),
         threads=int(threads),
+        tie_search_states=int(tie_search_states),
     )
     return Mesh(result)
 

@@ -83,7 +83,8 @@ def _adapter(engine):
 
 def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, sources=("gen", "paper", "corpus"),
           inputs=(), root=None, out="audit-out", compare=(), timeout=None, angle_tolerance=1e-3,
-          point_tolerance=8, shrink=True, max_findings=3, shrink_seconds=60, junit=None, name=None):
+          point_tolerance=8, shrink=True, max_findings=3, shrink_seconds=60, junit=None, name=None,
+          tie_search_states=_lepp.TIE_SEARCH_STATES):
     """Audits engine, a Python mesher: engine(pslg, theta) gets a validated PSLG dict
     (vertices, segments, holes, ...: NumPy arrays, 0-based) and the smallest angle wanted in
     degrees, and returns the mesh (a dict with vertices (n, 2) and triangles (m, 3) and, for
@@ -97,7 +98,9 @@ def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, s
     crashed run (its traceback kept with the finding), not the end of the audit;
     KeyboardInterrupt stops it. In process nothing can stop a run: with timeout (seconds) a
     run that returns later counts as timed out. compare: 'reference', 'fast' (points added,
-    against lepp's engines). Returns a lepp.AuditReport.
+    against lepp's engines). tie_search_states: the certificate's precision-limit search bound,
+    and lepp's compared engines' (as `lepp audit --tie-search-states`; 0: no bound).
+    Returns a lepp.AuditReport.
     """
     if callable(engine) is False:
         raise TypeError("engine: a callable engine(pslg, theta) -> mesh dict")
@@ -124,5 +127,5 @@ def audit(engine, theta=(20, 25, 30), cases=300, *, method="centroid", seed=1, s
         out=os.fspath(out), junit="" if junit is None else os.fspath(junit),
         timeout=0.0 if timeout is None else float(timeout), angle_tolerance=float(angle_tolerance),
         point_tolerance=float(point_tolerance), shrink=bool(shrink), max_findings=int(max_findings),
-        shrink_seconds=float(shrink_seconds))
+        shrink_seconds=float(shrink_seconds), tie_search_states=int(tie_search_states))
     return AuditReport(report, markdown, status, html)

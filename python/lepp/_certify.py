@@ -61,15 +61,20 @@ class Report:
 
 def certify(pslg, mesh, *, min_angle=0, exempt_small_input_angles=False, conforming=False, theorem2=True,
             max_area=None, region_areas=False, convex_hull=False, split_crossings=False, max_listed=50,
-            unimprovable=None, threads=1):
+            unimprovable=None, tie_search_states=_lepp.TIE_SEARCH_STATES, time_limit=None, threads=1):
     """Certifies a mesh of a PSLG exactly, as `lepp certify` does.
 
     pslg: a PSLG dict, a path, or a (vertices, segments[, holes[, regions]]) tuple.
     mesh: a lepp.Mesh or a dict with vertices (n, 2), triangles (m, 3) and optionally
     edges (the constrained edges) and input_vertices. A lepp.Mesh's unimprovable
     triangles are passed on (they are exempt when the rule of ALGORITHM.md section 8
-    holds for them). threads: as `lepp certify --threads` (0: the machine's cores); the
-    report is the same for any count. Returns a lepp.Report; bad input raises InputError.
+    holds for them). Returns a lepp.Report; bad input raises InputError.
+    tie_search_states: the bound, in Lepp states, of the search that decides a triangle listed
+    as left at double precision (exempt, rejected with a witness, or undecided at the bound;
+    as `lepp certify --tie-search-states`; 0: no bound). time_limit: seconds for those
+    searches in all (None: no limit).
+    threads: as `lepp certify --threads` (0: the machine's cores); the report is the same
+    for any count.
     """
     if isinstance(pslg, tuple):
         pslg = pslg_dict(*pslg)
@@ -82,7 +87,8 @@ def certify(pslg, mesh, *, min_angle=0, exempt_small_input_angles=False, conform
                   exempt_small_input_angles=bool(exempt_small_input_angles),
                   max_area=0.0 if max_area is None else float(max_area), region_areas=bool(region_areas),
                   max_listed=int(max_listed), convex_hull=bool(convex_hull), split_crossings=bool(split_crossings),
-                  unimprovable=list(unimprovable))
+                  unimprovable=list(unimprovable), tie_search_states=int(tie_search_states),
+                  time_limit=0.0 if time_limit is None else float(time_limit))
     report, text, warnings = _lepp.certify(*args, **kwargs, threads=int(threads))
     ran = {c: True for c in CHECKS}
     ran["min-angle"] = min_angle > 0

@@ -99,6 +99,7 @@ struct AuditCall {
   bool shrink;
   std::size_t max_findings;
   double shrink_seconds;
+  std::size_t tie_search_states;
 };
 
 py::tuple run(py::object engine, const AuditCall& c) {
@@ -131,11 +132,12 @@ py::tuple run(py::object engine, const AuditCall& c) {
   for (const std::string& e : c.compare) {
     const std::optional<engines::Engine> which = engines::parse_engine(e, comparisons);
     if (!which) throw std::invalid_argument("compare: unknown engine " + e + " (" + choices + ")");
-    o.comparisons.push_back({engines::comparison_title(*which), engines::lepp_audit_engine(*which)});
+    o.comparisons.push_back({engines::comparison_title(*which), engines::lepp_audit_engine(*which, QueueOrder::Fifo, c.tie_search_states)});
   }
   o.timeout_seconds = c.timeout;
   o.checks.angle_tolerance_deg = c.angle_tolerance;
   o.checks.point_tolerance_ulps = c.point_tolerance;
+  o.checks.tie_search_states = c.tie_search_states;
   o.out_dir = c.out;
   o.shrink = c.shrink;
   o.max_findings_per_row = c.max_findings;
@@ -172,15 +174,16 @@ void bind_audit(py::module_& m) {
          std::size_t cases, std::uint64_t seed, const std::vector<std::string>& sources,
          const std::vector<std::string>& inputs, const std::vector<std::string>& compare, const std::string& root,
          const std::string& out, const std::string& junit, double timeout, double angle_tolerance,
-         double point_tolerance, bool shrink, std::size_t max_findings, double shrink_seconds) {
+         double point_tolerance, bool shrink, std::size_t max_findings, double shrink_seconds,
+         std::size_t tie_search_states) {
         return run(std::move(engine), AuditCall{name, method, thetas, cases, seed, sources, inputs, compare, root, out,
                                                 junit, timeout, angle_tolerance, point_tolerance, shrink, max_findings,
-                                                shrink_seconds});
+                                                shrink_seconds, tie_search_states});
       },
       py::arg("engine"), py::arg("name"), py::arg("method"), py::arg("thetas"), py::arg("cases"), py::arg("seed"),
       py::arg("sources"), py::arg("inputs"), py::arg("compare"), py::arg("root"), py::arg("out"), py::arg("junit"),
       py::arg("timeout"), py::arg("angle_tolerance"), py::arg("point_tolerance"), py::arg("shrink"),
-      py::arg("max_findings"), py::arg("shrink_seconds"),
+      py::arg("max_findings"), py::arg("shrink_seconds"), py::arg("tie_search_states"),
       "lepp audit of a Python engine(pslg, theta, method, work_dir) -> mesh dict: (JSON report, markdown, exit status).");
 }
 

@@ -111,13 +111,15 @@ void bind_refine(py::module_& m) {
       "refine",
       [](const py::dict& pslg, double min_angle, double max_area, bool region_areas, const std::string& method,
          const std::string& order, const std::string& engine, std::int64_t max_steiner, double edge_floor,
-         double time_limit, bool convex_hull, bool split_crossings, bool trace, std::uint64_t order_seed, int threads) {
+         double time_limit, bool convex_hull, bool split_crossings, bool trace, std::uint64_t order_seed, int threads,
+         std::size_t tie_search_states) {
         engines::RefineRequest call;  // lepp refine's request, less its files and printing
         call.min_angle = min_angle, call.max_area = max_area, call.region_areas = region_areas;
         call.method = method, call.order = order, call.engine = engine;
         call.max_steiner = max_steiner, call.edge_floor = edge_floor, call.time_limit = time_limit;
         call.domain.convex_hull = convex_hull, call.domain.split_crossings = split_crossings;
         call.trace = trace, call.order_seed = order_seed, call.threads = threads;
+        call.tie_search_states = tie_search_states;
         return run(pslg, call);
       },
       py::arg("pslg"), py::arg("min_angle") = 30.0, py::arg("max_area") = 0.0, py::arg("region_areas") = false,
@@ -125,6 +127,7 @@ void bind_refine(py::module_& m) {
       py::arg("engine") = engines::to_string(engines::Engine::Fast), py::arg("max_steiner") = -1,
       py::arg("edge_floor") = -1.0, py::arg("time_limit") = 0.0, py::arg("convex_hull") = false,
       py::arg("split_crossings") = false, py::arg("trace") = false, py::arg("order_seed") = 0, py::arg("threads") = 0,
+      py::arg("tie_search_states") = kTieSearchStates,
       "Validate and refine a PSLG dict; a dict of the mesh arrays, statistics and outcome.");
 }
 

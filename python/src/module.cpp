@@ -8,6 +8,7 @@
 
 #include "bindings.h"
 #include "lepp/io.h"
+#include "lepp/rounding.h"
 #include "lepp/version.h"
 
 namespace py = pybind11;
@@ -39,6 +40,8 @@ PYBIND11_MODULE(_lepp, m) {
     }
   });
   m.attr("__version__") = LEPP_VERSION_STRING;
+  // The default bound of the search of tie resolutions (refine, certify, audit: tie_search_states).
+  m.attr("TIE_SEARCH_STATES") = lepp::kTieSearchStates;
   lepp::python::bind_io(m);
   lepp::python::bind_refine(m);
   lepp::python::bind_certify(m);

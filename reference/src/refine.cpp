@@ -288,7 +288,7 @@ class Refiner {
   // inserted (the precision stop leaves the triangle).
   bool settle(const Tri& t, FH f, Lepp& lepp, Selection& s) {
     if (settle_selection(tr_, lepp, options_.method, s)) return true;
-    if (!other_tie_resolution(tr_, f, options_.method, lepp, s)) {
+    if (!other_tie_resolution(tr_, f, options_.method, options_.tie_search_states, lepp, s)) {
       ++result_.precision_stops;
       stopped_.push_back({t, s.rule, s.point});
       return false;

@@ -2,11 +2,11 @@
 // Every resolution of exact length ties at the precision limit (ALGORITHM.md
 // section 8b, "Every tie resolution"): the reference's own enumeration, in the
 // order the fast engine's follows, so that both insert the same point.
+#include <cstddef>
 #include <set>
 #include <stdexcept>
 #include <utility>
 
-#include "lepp/rounding.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
@@ -14,7 +14,7 @@ namespace {
 
 class TieSearch {
  public:
-  TieSearch(const Triangulation& tr, Method method) : tr_(tr), method_(method) {}
+  TieSearch(const Triangulation& tr, Method method, std::size_t max_states) : tr_(tr), method_(method), max_states_(max_states) {}
 
   bool run(FH t, Lepp& lepp, Selection& s) {
     path_ = {t};
@@ -26,7 +26,7 @@ class TieSearch {
  private:
   // The Lepp goes on from f (the last face of path_) with edge i taken as its longest.
   bool walk(FH f, int i, Lepp& lepp, Selection& s) {
-    if (seen_.size() >= kTieSearchStates || !seen_.insert({ccw_ids(f), i}).second) return false;
+    if ((max_states_ > 0 && seen_.size() >= max_states_) || !seen_.insert({ccw_ids(f), i}).second) return false;
     if (f->is_constrained(i)) return terminal(f, i, FH(), lepp, s);
     FH n = f->neighbor(i);
     if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");
@@ -61,14 +61,15 @@ class TieSearch {
 
   const Triangulation& tr_;
   Method method_;
+  std::size_t max_states_;  // 0: no bound
   std::vector<FH> path_;  // t ... the current face
   std::set<std::pair<Tri, int>> seen_;
 };
 
 }  // namespace
 
-bool other_tie_resolution(const Triangulation& tr, FH t, Method method, Lepp& lepp, Selection& s) {
-  return TieSearch(tr, method).run(t, lepp, s);
+bool other_tie_resolution(const Triangulation& tr, FH t, Method method, std::size_t max_states, Lepp& lepp, Selection& s) {
+  return TieSearch(tr, method, max_states).run(t, lepp, s);
 }
 
 }  // namespace lepp::reference::detail

@@ -160,8 +160,9 @@ inline bool settle_selection(const Triangulation& tr, const Lepp& lepp, Method m
 // When the edge order's Lepp of bad face t has no insertable selection: every Lepp of
 // t and every second-longest edge under exact ties, depth first in the edge order,
 // each settled as settle_selection says. True iff one can be inserted (lepp and s
-// then hold it); else both unchanged.
-bool other_tie_resolution(const Triangulation& tr, FH t, Method method, Lepp& lepp, Selection& s);
+// then hold it); else both unchanged. At most max_states Lepp states
+// (RefineOptions::tie_search_states; 0: no bound).
+bool other_tie_resolution(const Triangulation& tr, FH t, Method method, std::size_t max_states, Lepp& lepp, Selection& s);
 // Inserts the selected point, restores the constrained Delaunay property by
 // flips in the legalization order of ALGORITHM.md section 7 (counting cocircular
 // ties), sets ids, segment membership and domain flags.

@@ -177,6 +177,7 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
   // method allows can be inserted as rounded is not blamed.
   o.exempt_precision_limited = true;
   o.precision_method = req.method;
+  o.tie_search_states = options.tie_search_states;
   o.max_listed_per_reason = 20;
   certify::Report report;
   bool certified = false;

@@ -9,8 +9,10 @@
 namespace lepp::audit {
 namespace {
 
-bool converges(const Pslg& pslg, Method method, double theta, QueueOrder order, std::uint64_t seed, double time_limit) {
+bool converges(const Pslg& pslg, Method method, double theta, QueueOrder order, std::uint64_t seed, double time_limit,
+               std::size_t tie_search_states) {
   RefineOptions o;
+  o.tie_search_states = tie_search_states;
   o.method = method;
   o.min_angle_deg = theta;
   o.order = order;
@@ -23,19 +25,20 @@ bool converges(const Pslg& pslg, Method method, double theta, QueueOrder order, 
 }  // namespace
 
 std::optional<OrderTermination> compare_termination(const Pslg& pslg, const std::string& input, Method method, double theta,
-                                                    bool engine_converged, double time_limit, int random_orders) {
+                                                    bool engine_converged, double time_limit, int random_orders,
+                                                    std::size_t tie_search_states) {
   OrderTermination t;
   t.input = input, t.theta = theta, t.engine_converged = engine_converged;
-  t.fifo_converged = converges(pslg, method, theta, QueueOrder::Fifo, 0, time_limit);
+  t.fifo_converged = converges(pslg, method, theta, QueueOrder::Fifo, 0, time_limit, tie_search_states);
   if (t.fifo_converged == engine_converged) return std::nullopt;
   for (QueueOrder q : all_queue_orders()) {
     if (q == QueueOrder::Random) continue;
-    if (q == QueueOrder::Fifo ? t.fifo_converged : converges(pslg, method, theta, q, 0, time_limit))
+    if (q == QueueOrder::Fifo ? t.fifo_converged : converges(pslg, method, theta, q, 0, time_limit, tie_search_states))
       t.converging.push_back(to_string(q));
   }
   t.random_tried = random_orders;
   for (int s = 1; s <= random_orders; ++s)
-    t.random_converged += converges(pslg, method, theta, QueueOrder::Random, static_cast<std::uint64_t>(s), time_limit);
+    t.random_converged += converges(pslg, method, theta, QueueOrder::Random, static_cast<std::uint64_t>(s), time_limit, tie_search_states);
   return t;
 }
 

@@ -87,7 +87,8 @@ void compare_orders(AuditSession& session, const AuditInput& input, const Case& 
   const AuditOptions& opt = session.options;
   const auto tc = Clock::now();
   out.order_termination = compare_termination(input.pslg, input.name, opt.method, c.theta,
-                                              out.statuses.front() == RunStatus::Ok, opt.timeout_seconds);
+                                              out.statuses.front() == RunStatus::Ok, opt.timeout_seconds, 10,
+                                              opt.checks.tie_search_states);
   out.comparison_seconds += since(tc);
 }
 

@@ -164,6 +164,13 @@ std::string markdown_report(const AuditReport& rep) {
     md += fmt::format("\nPrecision-limit exemptions: {} triangles below theta in {} runs for which no point the method allows can be "
                       "inserted as rounded to doubles (docs/CERTIFIER.md section 5c), not counted as violations.\n",
                       rep.precision_exempt_triangles, rep.runs_with_precision_exempt);
+  if (rep.tie_search_states != kTieSearchStates)  // the default goes without saying
+    md += fmt::format("\nTie search bound `--tie-search-states {}`: the precision-limit searches of the certificate and of lepp's "
+                      "built-in engines visit {} per triangle (default {}; docs/CERTIFIER.md section 5c).\n",
+                      rep.tie_search_states,
+                      rep.tie_search_states == 0 ? std::string("any number of Lepp states")
+                                                 : fmt::format("at most {} Lepp states", rep.tie_search_states),
+                      kTieSearchStates);
   md += "\nHow the runs ended:";
   for (int s = 0; s < 6; ++s)
     if (rep.status_counts[s]) md += fmt::format(" {} {},", to_string(static_cast<RunStatus>(s)), rep.status_counts[s]);
@@ -307,6 +314,7 @@ nlohmann::json json_report(const AuditReport& rep) {
                       {"internal_errors", internal},
                       {"centroid", rep.area_centroid ? "area" : "vertex"},
                       {"arithmetic", rep.arithmetic_double ? "double" : "exact"},
+                      {"tie_search_states", rep.tie_search_states},
                       {"points_ratio", ratios},
                       {"order_termination", to_json(rep.order_terminations)},
                       {"run_status", statuses},

@@ -151,6 +151,7 @@ nlohmann::json shard_config(const AuditOptions& o, const std::vector<AuditInput>
           {"point_tolerance", o.checks.point_tolerance_ulps},
           {"centroid", o.checks.area_centroid ? "area" : "vertex"},
           {"arithmetic", o.checks.arithmetic_double ? "double" : "exact"},
+          {"tie_search_states", o.checks.tie_search_states},
           {"shrink", o.shrink},
           {"max_findings", o.max_findings_per_row},
           {"shrink_max_runs", o.shrink_max_runs},
@@ -250,6 +251,7 @@ AuditReport merge_shards(const std::vector<MergeInput>& shards, const std::strin
   rep.skipped_inputs = first["skipped_inputs"].get<std::vector<std::string>>();
   rep.area_centroid = first["centroid"].get<std::string>() == "area";
   rep.arithmetic_double = first.value("arithmetic", "exact") == "double";
+  rep.tie_search_states = first.value("tie_search_states", kTieSearchStates);
   rep.jobs = first["jobs"].get<std::size_t>();
   rep.repeat = first["repeat"].get<std::size_t>();
   rep.points_cache_dir = first["points_cache_dir"].get<std::string>();

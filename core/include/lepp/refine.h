@@ -11,7 +11,7 @@
 
 #include "lepp/mesh.h"
 #include "lepp/pslg.h"
-#include "lepp/rounding.h"  // below_precision_floor
+#include "lepp/rounding.h"  // below_precision_floor, kTieSearchStates
 
 namespace lepp {
 
@@ -76,6 +76,10 @@ struct RefineOptions {
   std::int64_t max_steiner = -1;     // -1: default_steiner_budget()
   double edge_floor = -1;            // -1: default_edge_floor()
   double time_limit_seconds = 0;     // 0: no limit
+  // The bound of the search of every resolution of exact length ties before the
+  // precision stop leaves a triangle (ALGORITHM.md section 8b): Lepp states per
+  // triangle; 0: no bound (each state is still visited once, so the search ends).
+  std::size_t tie_search_states = kTieSearchStates;
   bool trace = false;                // record a TraceStep per insertion
   // Called after every insertion with the current mesh (domain triangles only).
   // Slow: meant for tests on small inputs (Theorem 2 on every intermediate mesh).

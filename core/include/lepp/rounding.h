@@ -33,10 +33,12 @@ inline DoublesAround doubles_around_centroid(double a, double b, double c, doubl
   return doubles_around_mean(xs, 4);
 }
 
-// The bound of the search of every resolution of exact length ties at the precision
-// limit (ALGORITHM.md section 8b): Lepp states (a triangle with one of its edges taken
-// as its longest) per triangle, the same in both engines and the certifier. Beyond it
-// an engine leaves the triangle and the certifier calls the claim undecided.
+// The default bound of the search of every resolution of exact length ties at the
+// precision limit (ALGORITHM.md section 8b): Lepp states (a triangle with one of its
+// edges taken as its longest) per triangle, the same in both engines, the certifier,
+// the audit and Python (RefineOptions::tie_search_states, certify::Options::
+// tie_search_states, --tie-search-states). Beyond it an engine leaves the triangle
+// and the certifier calls the claim undecided at that bound.
 constexpr std::size_t kTieSearchStates = 1024;
 
 namespace detail {

@@ -2,6 +2,10 @@
 // The definitions behind lepp/certify_json.h: the certifier's report as JSON.
 #include "lepp/certify_json.h"
 
+#include <utility>
+
+#include <fmt/format.h>
+
 namespace lepp::certify {
 
 nlohmann::json json_report(const Report& r, std::size_t max_listed) {
@@ -33,6 +37,30 @@ nlohmann::json json_report(const Report& r, std::size_t max_listed) {
   nlohmann::json precision = nlohmann::json::array();
   for (std::size_t i = 0; i < r.precision_exempt_triangles.size() && i < max_listed; ++i)
     precision.push_back(r.precision_exempt_triangles[i]);
+  // The claims of double precision with their outcomes (at most max_listed; all
+  // counted); a rejected one's witness, its point also in C99 hexadecimal (exact).
+  nlohmann::json claims = nlohmann::json::array();
+  nlohmann::json claim_counts = {{"exempt", 0}, {"rejected", 0}, {"undecided", 0}};
+  for (const PrecisionClaim& c : r.precision_claims) {
+    claim_counts[to_string(c.outcome)] = claim_counts[to_string(c.outcome)].get<std::size_t>() + 1;
+    if (claims.size() >= max_listed) continue;
+    nlohmann::json claim = {{"triangle", c.triangle}, {"outcome", to_string(c.outcome)}, {"states", c.states}};
+    if (c.outcome == PrecisionOutcome::Undecided) claim["undecided"] = to_string(c.undecided);
+    if (c.outcome == PrecisionOutcome::Rejected) {
+      const PrecisionWitness& w = c.witness;
+      claim["witness"] = {{"point", {w.point.x, w.point.y}},
+                          {"point_hex", {fmt::format("{:a}", w.point.x), fmt::format("{:a}", w.point.y)}},
+                          {"rounding", w.rounding},
+                          {"rule", to_string(w.rule)},
+                          {"lepp", w.lepp},
+                          {"longest", w.longest},
+                          {"terminal_other", w.terminal_other},
+                          {"second1", w.second1},
+                          {"second2", w.second2},
+                          {"split", w.split}};
+    }
+    claims.push_back(std::move(claim));
+  }
   nlohmann::json angles = nlohmann::json::array();
   for (const certify::SmallInputAngle& a : r.small_angles)
     angles.push_back({{"apex", a.apex},
@@ -72,6 +100,11 @@ nlohmann::json json_report(const Report& r, std::size_t max_listed) {
           {"exempt_triangles", exempt},
           {"precision_exempt_count", r.precision_exempt_count},
           {"precision_exempt_triangles", precision},
+          {"precision_claims", claims},
+          {"precision_claim_counts", claim_counts},
+          {"precision_undecided", r.precision_undecided},
+          {"tie_search_states", r.tie_search_states},
+          {"time_limit", r.time_limit_seconds},
           {"warnings", r.warnings},
           {"size_bound",
            {{"max_area", r.max_area}, {"region_areas", r.region_area_bounds}, {"triangles_checked", r.area_checked}, {"regions", regions}}}};

@@ -6,9 +6,13 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "exact.h"
 #include "lepp/rounding.h"
@@ -16,24 +20,73 @@
 namespace lepp::certify {
 namespace {
 
+// A point to try: its coordinates and how it was rounded (-1 down, 0 exact, 1 up;
+// kFormula for the engines' formula).
+constexpr int kFormula = 2;
+struct Candidate {
+  Point p;
+  int rx = kFormula, ry = kFormula;
+};
+
+std::string rounding_text(const Candidate& c) {
+  if (c.rx == kFormula) return "formula";
+  auto word = [](int r) { return r < 0 ? "down" : r > 0 ? "up" : "exact"; };
+  return fmt::format("x {}, y {}", word(c.rx), word(c.ry));
+}
+
 class Search {
  public:
-  Search(const PrecisionView& v, Method method, bool ties_by_ids) : v_(v), method_(method), by_ids_(ties_by_ids) {}
+  Search(const PrecisionView& v, Method method, const PrecisionLimits& limits) : v_(v), method_(method), limits_(limits) {}
 
   // Whether every choice for triangle t, at every rounding, is not insertable.
-  PrecisionVerdict verdict(std::size_t t) {
+  PrecisionClaim claim(std::size_t t) {
+    PrecisionClaim out;
+    out.triangle = static_cast<int>(t);
+    out.outcome = PrecisionOutcome::Exempt;
     for (int h : longest(static_cast<int>(t)))
-      if (!walk(h)) return too_big_ || undecided_ ? PrecisionVerdict::Undecided : PrecisionVerdict::Insertable;
-    return too_big_ ? PrecisionVerdict::Undecided : PrecisionVerdict::Limited;
+      if (!walk(h)) {
+        out.outcome = stopped_ ? PrecisionOutcome::Undecided : PrecisionOutcome::Rejected;
+        out.undecided = why_;
+        out.witness = std::move(witness_);
+        break;
+      }
+    // The states followed: at the bound, the one past it was only counted.
+    out.states = stopped_ && why_ == PrecisionUndecided::Bound ? seen_.size() - 1 : seen_.size();
+    return out;
   }
 
  private:
   const PrecisionView& v_;
   Method method_;
-  bool by_ids_;  // equal lengths decided by vertex ids, as lepp's edge order (ALGORITHM.md section 3)
-  std::set<int> seen_;  // half-edges taken as a triangle's longest edge
-  bool too_big_ = false;
-  bool undecided_ = false;  // a bad triangle or edge met: no choice can be judged there
+  const PrecisionLimits& limits_;
+  std::set<int> seen_;     // half-edges taken as a triangle's longest edge
+  std::vector<int> path_;  // the half-edges of the current Lepp, taken as longest
+  bool stopped_ = false;   // stopped undecided, for the reason why_
+  PrecisionUndecided why_ = PrecisionUndecided::Bound;
+  PrecisionWitness witness_;  // the insertable choice found
+
+  bool stop(PrecisionUndecided why) {
+    stopped_ = true;
+    why_ = why;
+    return false;
+  }
+  // The choice that reaches c, from the current path (its last half-edge the terminal
+  // edge; g across it, or -1): recorded, and false (the search ends there).
+  bool found(const Candidate& c, Rule rule, int g, int s1, int s2, int split) {
+    witness_.point = c.p;
+    witness_.rounding = rounding_text(c);
+    witness_.rule = rule;
+    for (int h : path_) {
+      witness_.lepp.push_back(h / 3);
+      witness_.longest.push_back({from(h), to(h)});
+    }
+    witness_.terminal_other = g < 0 ? -1 : g / 3;
+    auto edge = [&](int h) { return h < 0 ? std::array<int, 2>{{-1, -1}} : std::array<int, 2>{{from(h), to(h)}}; };
+    witness_.second1 = edge(s1);
+    witness_.second2 = edge(s2);
+    witness_.split = edge(split);
+    return false;
+  }
 
   const Tri& T(int t) const { return v_.mesh.triangles[static_cast<std::size_t>(t)]; }
   const Point& P(int id) const { return v_.mesh.vertices[static_cast<std::size_t>(id)]; }
@@ -53,7 +106,7 @@ class Search {
       for (int j = 0; j < 3 && max; ++j) max = j == i || len_cmp(h, 3 * t + j) >= 0;
       if (max) out.push_back(h);
     }
-    if (by_ids_ && out.size() > 1) out = {id_longest(out)};
+    if (limits_.ties_by_ids && out.size() > 1) out = {id_longest(out)};
     return out;
   }
   // Every second-longest half-edge of t when l is its longest: the longer of the other two, ties kept.
@@ -62,7 +115,7 @@ class Search {
     const int c = len_cmp(a, b);
     if (c > 0) return {a};
     if (c < 0) return {b};
-    if (by_ids_) return {id_longest({a, b})};
+    if (limits_.ties_by_ids) return {id_longest({a, b})};
     return {a, b};
   }
   // Among half-edges of equal length, the longest in lepp's edge order: the smaller
@@ -76,14 +129,22 @@ class Search {
   }
 
   // The Lepp from the triangle of h with h taken as its longest edge: false as
-  // soon as one choice can be inserted.
+  // soon as one choice can be inserted (witness_), or the search stops undecided.
   bool walk(int h) {
     if (!seen_.insert(h).second) return true;
-    if (seen_.size() > kTieSearchStates) return !(too_big_ = true);  // beyond the bound: no exemption
-    if (!v_.tri_ok[static_cast<std::size_t>(h / 3)]) return !(undecided_ = true);
+    if (limits_.states > 0 && seen_.size() > limits_.states) return stop(PrecisionUndecided::Bound);  // no exemption
+    if (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline) return stop(PrecisionUndecided::TimeLimit);
+    if (!v_.tri_ok[static_cast<std::size_t>(h / 3)]) return stop(PrecisionUndecided::BadMesh);
     const int g = v_.twin[static_cast<std::size_t>(h)];
-    if (g == -2) return !(undecided_ = true);
-    if (constrained(h)) return !split_insertable_any(h, midpoints(h));  // one terminal triangle
+    if (g == -2) return stop(PrecisionUndecided::BadMesh);
+    path_.push_back(h);
+    if (constrained(h)) {  // one terminal triangle
+      const std::vector<Candidate> ps = midpoints(h);
+      if (const int i = split_insertable_any(h, ps); i >= 0)
+        return found(ps[static_cast<std::size_t>(i)], Rule::TerminalConstrainedMidpoint, -1, -1, -1, h);
+      path_.pop_back();
+      return true;
+    }
     const std::vector<int> next = longest(g / 3);
     for (int e : next) {
       if (e == g) {
@@ -92,22 +153,24 @@ class Search {
         return false;
       }
     }
+    path_.pop_back();
     return true;
   }
 
   // The formula's double, then the doubles a mesher may round the exact point to
   // (each coordinate truncated or rounded the other way, lepp/rounding.h).
-  static std::vector<Point> points(const DoublesAround& xs, const DoublesAround& ys, const Point& formula) {
-    std::vector<Point> out{formula};
-    for (double px : xs)
-      for (double py : ys) out.push_back({px, py});
+  static std::vector<Candidate> points(const DoublesAround& xs, const DoublesAround& ys, const Point& formula) {
+    auto way = [](const DoublesAround& d, int i) { return d.count == 1 ? 0 : i == 0 ? -1 : 1; };
+    std::vector<Candidate> out{{formula, kFormula, kFormula}};
+    for (int i = 0; i < xs.count; ++i)
+      for (int j = 0; j < ys.count; ++j) out.push_back({{xs.value[i], ys.value[j]}, way(xs, i), way(ys, j)});
     return out;
   }
-  std::vector<Point> midpoints(int h) const {
+  std::vector<Candidate> midpoints(int h) const {
     const Point &a = P(from(h)), &b = P(to(h));
     return points(doubles_around_midpoint(a.x, b.x), doubles_around_midpoint(a.y, b.y), {(a.x + b.x) * 0.5, (a.y + b.y) * 0.5});
   }
-  std::vector<Point> centroids(int h, int g) const {
+  std::vector<Candidate> centroids(int h, int g) const {
     const Point &a = P(from(h)), &b = P(to(h)), &c = P(apex(h)), &d = P(apex(g));
     return points(doubles_around_centroid(a.x, b.x, c.x, d.x), doubles_around_centroid(a.y, b.y, c.y, d.y),
                   {((a.x + b.x) + (c.x + d.x)) * 0.25, ((a.y + b.y) + (c.y + d.y)) * 0.25});
@@ -118,19 +181,29 @@ class Search {
     for (int s1 : second(h))
       for (int s2 : second(g)) {
         const bool c1 = constrained(s1), c2 = constrained(s2);
+        // The midpoint of constrained edge s, split, when one of its roundings can be inserted.
+        auto split = [&](int s, Rule rule) {
+          const std::vector<Candidate> ps = midpoints(s);
+          const int i = split_insertable_any(s, ps);
+          return i >= 0 && !found(ps[static_cast<std::size_t>(i)], rule, g, s1, s2, s);
+        };
+        auto located = [&](const std::vector<Candidate>& ps, Rule rule) {
+          const int i = located_insertable_any(h, ps);
+          return i >= 0 && !found(ps[static_cast<std::size_t>(i)], rule, g, s1, s2, -1);
+        };
         if (method_ == Method::Midpoint) {
           if (!c1 && !c2) {
-            if (located_insertable_any(h, midpoints(h))) return false;
+            if (located(midpoints(h), Rule::TerminalMidpoint)) return false;
           } else {
-            if (c1 && split_insertable_any(s1, midpoints(s1))) return false;
-            if (c2 && split_insertable_any(s2, midpoints(s2))) return false;
+            if (c1 && split(s1, Rule::SecondLongestMidpoint)) return false;
+            if (c2 && split(s2, Rule::SecondLongestMidpoint)) return false;
           }
           continue;
         }
         if (!c1 && !c2) {
-          if (located_insertable_any(h, centroids(h, g))) return false;
+          if (located(centroids(h, g), Rule::QuadCentroid)) return false;
         } else if (c1 && c2) {
-          if (split_insertable_any(s1, midpoints(s1)) || split_insertable_any(s2, midpoints(s2))) return false;
+          if (split(s1, Rule::BothSecondLongestMidpoint) || split(s2, Rule::BothSecondLongestMidpoint)) return false;
         } else {
           // Remark 10: the centroid if strictly inside the other triangle, else the midpoint of l*.
           // The midpoint is a choice only when some rounding of the centroid is not strictly
@@ -138,11 +211,11 @@ class Search {
           // the convex triangle means the exact one is too, and no mesher may take the midpoint).
           const int other = c1 ? g / 3 : h / 3, star_edge = c1 ? s1 : s2;
           bool outside = false;
-          for (const Point& p : centroids(h, g)) {
-            if (!strictly_inside(other, p)) outside = true;
-            else if (!near_pair_vertex(h, p)) return false;
+          for (const Candidate& c : centroids(h, g)) {
+            if (!strictly_inside(other, c.p)) outside = true;
+            else if (!near_pair_vertex(h, c.p)) return found(c, Rule::CentroidInOther, g, s1, s2, -1);
           }
-          if (outside && split_insertable_any(star_edge, midpoints(star_edge))) return false;
+          if (outside && split(star_edge, Rule::SecondLongestMidpoint)) return false;
         }
       }
     return true;
@@ -178,14 +251,16 @@ class Search {
   }
   // A point of the terminal quad of h (t1 = h's triangle, t2 across): in the closed
   // pair, off its vertices and off constrained edges, beyond the precision floor.
-  bool located_insertable_any(int h, const std::vector<Point>& ps) const {
+  // The index of the first that can be inserted, or -1.
+  int located_insertable_any(int h, const std::vector<Candidate>& ps) const {
     const int g = v_.twin[static_cast<std::size_t>(h)];
-    for (const Point& p : ps) {
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const Point& p = ps[i].p;
       if (near_pair_vertex(h, p)) continue;
       const int first = place_in(h / 3, p);
-      if (first > 0 || (first == 0 && place_in(g / 3, p) > 0)) return true;
+      if (first > 0 || (first == 0 && place_in(g / 3, p) > 0)) return static_cast<int>(i);
     }
-    return false;
+    return -1;
   }
   // The split of edge h at p: every triangle it makes, on each side, counter-clockwise;
   // on the mesh boundary with p strictly outside, the closed sliver a, p, b free of
@@ -193,11 +268,13 @@ class Search {
   // the reference decides it on its whole triangulation: where a nearly parallel
   // segment leaves a or b, its chain may pass through the sliver). A mesh vertex in
   // the sliver implies a chain edge meeting it in a mesh the coverage checks pass.
-  // A linear scan: only bad triangles on the boundary come here.
-  bool split_insertable_any(int h, const std::vector<Point>& ps) const {
+  // A linear scan: only bad triangles on the boundary come here. The index of the
+  // first point that can be inserted, or -1.
+  int split_insertable_any(int h, const std::vector<Candidate>& ps) const {
     const int g = v_.twin[static_cast<std::size_t>(h)];
     const Point &a = P(from(h)), &b = P(to(h)), &c = P(apex(h));
-    for (const Point& p : ps) {
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const Point& p = ps[i].p;
       if (exact::orient(a, p, c) <= 0 || exact::orient(p, b, c) <= 0) continue;
       if (below_precision_floor(p, a) || below_precision_floor(p, b) || below_precision_floor(p, c)) continue;
       if (g >= 0) {
@@ -207,17 +284,22 @@ class Search {
                  (sliver_blocked(v_.outside, a, b, p, exact::orient) || sliver_blocked(v_.chains, a, b, p, exact::orient))) {
         continue;
       }
-      return true;
+      return static_cast<int>(i);
     }
-    return false;
+    return -1;
   }
 };
 
 }  // namespace
 
-PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids) {
-  if (!view.tri_ok[t]) return PrecisionVerdict::Undecided;
-  return Search(view, method, ties_by_ids).verdict(t);
+PrecisionClaim precision_claim(const PrecisionView& view, std::size_t t, Method method, const PrecisionLimits& limits) {
+  if (!view.tri_ok[t]) {
+    PrecisionClaim bad;
+    bad.triangle = static_cast<int>(t);
+    bad.undecided = PrecisionUndecided::BadMesh;
+    return bad;
+  }
+  return Search(view, method, limits).claim(t);
 }
 
 }  // namespace lepp::certify

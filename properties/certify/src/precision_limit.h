@@ -6,12 +6,16 @@
 // inserted. Reads only the mesh (and which of its edges lie on segment chains).
 // Private to the certifier.
 #pragma once
+#include <chrono>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "lepp/boundary_sliver.h"
+#include "lepp/certify.h"
 #include "lepp/mesh.h"
 #include "lepp/refine.h"
+#include "lepp/rounding.h"
 
 namespace lepp::certify {
 
@@ -30,15 +34,22 @@ struct PrecisionView {
   const OutsideInput& chains;
 };
 
-// Whether triangle t is precision-limited for `method`: Limited when each choice of
-// point is, at every rounding (the engines' formula of ALGORITHM.md section 5 and
-// both directed roundings of each coordinate of the exact point), not insertable in
-// the sense of ALGORITHM.md section 8b; Insertable when one is; Undecided when the
-// search stopped at its bound of lepp::kTieSearchStates Lepp states or met a bad
-// edge before deciding. Only Limited exempts.
+// How far a search may go: Lepp states per triangle (0: no bound), and a deadline.
 // ties_by_ids: equal lengths decided by vertex ids as lepp's edge order does
 // (Options::precision_ties_by_ids, for meshes of older lepp versions), else every tie.
-enum class PrecisionVerdict { Limited, Insertable, Undecided };
-PrecisionVerdict precision_verdict(const PrecisionView& view, std::size_t t, Method method, bool ties_by_ids = false);
+struct PrecisionLimits {
+  std::size_t states = kTieSearchStates;
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  bool ties_by_ids = false;
+};
+
+// Whether triangle t is precision-limited for `method`: Exempt when each choice of
+// point is, at every rounding (the engines' formula of ALGORITHM.md section 5 and
+// both directed roundings of each coordinate of the exact point), not insertable in
+// the sense of ALGORITHM.md section 8b; Rejected when one is (the first found, in the
+// search's order, is the witness); Undecided when the search stopped at its bound of
+// Lepp states, at the deadline, or met a bad triangle or edge before deciding. Only
+// Exempt exempts. The claim's triangle is t.
+PrecisionClaim precision_claim(const PrecisionView& view, std::size_t t, Method method, const PrecisionLimits& limits);
 
 }  // namespace lepp::certify

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Names of checks and reasons, the verdict, and the human-readable report.
 #include <algorithm>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -94,6 +95,24 @@ const char* to_string(RegionPlace place) {
   return "?";
 }
 
+const char* to_string(PrecisionOutcome outcome) {
+  switch (outcome) {
+    case PrecisionOutcome::Exempt: return "exempt";
+    case PrecisionOutcome::Rejected: return "rejected";
+    case PrecisionOutcome::Undecided: return "undecided";
+  }
+  return "?";
+}
+
+const char* to_string(PrecisionUndecided why) {
+  switch (why) {
+    case PrecisionUndecided::Bound: return "bound";
+    case PrecisionUndecided::TimeLimit: return "time-limit";
+    case PrecisionUndecided::BadMesh: return "bad-mesh";
+  }
+  return "?";
+}
+
 bool Report::certified() const {
   for (std::size_t c : count_by_reason)
     if (c) return false;
@@ -131,6 +150,15 @@ std::string format_report(const Report& report) {
     for (const UnimprovableTriangle& u : report.unimprovable_accepted) precision += u.reason == LeftReason::DoublePrecision;
     out += fmt::format("{} triangles below theta accepted as unimprovable ({} small input angle, {} double precision; rule holds)\n",
                        report.unimprovable_accepted.size(), report.unimprovable_accepted.size() - precision, precision);
+  }
+  if (!report.precision_claims.empty()) {
+    std::size_t by[3] = {0, 0, 0};
+    for (const PrecisionClaim& c : report.precision_claims) ++by[static_cast<int>(c.outcome)];
+    out += fmt::format("{} triangles listed at double precision: {} exempt, {} rejected (witness below), {} undecided {}{}\n",
+                       report.precision_claims.size(), by[0], by[1], by[2],
+                       report.tie_search_states == 0 ? std::string("(no bound)")
+                                                     : fmt::format("at bound {} Lepp states", report.tie_search_states),
+                       report.time_limit_seconds > 0 ? fmt::format(" (time limit {} s)", report.time_limit_seconds) : std::string());
   }
   if (report.precision_exempt_count > 0) {
     out += fmt::format("{} triangles below theta exempt (precision limit: no point Select Point allows can be inserted as rounded)\n",

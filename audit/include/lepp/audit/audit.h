@@ -151,6 +151,7 @@ struct AuditReport {
   std::array<RowSummary, kRows> rows;
   bool area_centroid = false;                  // conformance checked against the declared area-centroid reading
   bool arithmetic_double = false;              // conformance checked against the declared arithmetic of doubles
+  std::size_t tie_search_states = kTieSearchStates;  // the precision-limit searches' bound (CheckOptions)
   std::vector<PointsRatio> ratios;
   std::vector<OrderTermination> order_terminations;  // runs ending where lepp's fifo does not, or the reverse
   std::vector<std::string> skipped_inputs;

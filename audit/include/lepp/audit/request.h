@@ -28,6 +28,7 @@ struct AuditRequest {
   double timeout = 10;
   std::size_t memory = 0;
   double angle_tolerance = 1e-3, point_tolerance = 8;
+  std::size_t tie_search_states = kTieSearchStates;  // of the certificate and lepp's built-in engines
   std::string centroid = "vertex";   // or "area"
   std::string arithmetic = "exact";  // or "double"
   std::string out = "audit-out";

@@ -3,6 +3,7 @@
 // and turned into the engine's RefineOptions. With refine_files.h and refine_summary.h,
 // `lepp refine` as a library: a caller fills a RefineRequest and gets the same files and report.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct RefineRequest {
   bool region_areas = false;
   double time_limit = 0;
   double edge_floor = -1;
+  std::size_t tie_search_states = kTieSearchStates;  // RefineOptions::tie_search_states
   bool json = false;
   bool quiet = false;
   bool trace = false;

@@ -101,6 +101,14 @@ struct Options {
   // numbering); it tells a triangle lepp leaves because of its tie rule from one no tie
   // rule could refine (docs/CERTIFIER.md section 5c, "Finding").
   bool precision_ties_by_ids = false;
+  // The bound of that search (section 5c): Lepp states per triangle, by default the
+  // engines' (lepp::kTieSearchStates); 0: no bound, the search decides (it visits each
+  // state once) or runs until time_limit_seconds. Beyond it, no exemption: a listed
+  // claim is undecided at this bound.
+  std::size_t tie_search_states = kTieSearchStates;
+  // Wall-clock seconds for the precision searches of one certificate in all (0: no
+  // limit): a search still running then, and every later one, stops undecided.
+  double time_limit_seconds = 0;
   // Size bounds (docs/CERTIFIER.md section 7), as lepp refine's --max-area and
   // --region-areas (Triangle's -a X and -a): every triangle's area must be at most
   // max_area (> 0), and with region_area_bounds at most the bound (> 0) of the
@@ -113,6 +121,41 @@ struct Options {
   // splits its work into fixed ranges and adds their violations in range order, so the
   // report is the same for any count (docs/CERTIFIER.md, "Threads").
   int threads = 1;
+};
+
+// What the certificate says of a triangle listed as left at double precision
+// (ALGORITHM.md section 8b; docs/CERTIFIER.md section 5c): exempt (proved: no choice
+// under any resolution of exact length ties can be inserted, at any rounding),
+// rejected (a witness: one that can), or undecided (the search stopped first).
+enum class PrecisionOutcome { Exempt, Rejected, Undecided };
+// Why a search stopped undecided: its bound of Lepp states, the time limit, or a bad
+// triangle or edge met on the way (no choice can be judged there).
+enum class PrecisionUndecided { Bound, TimeLimit, BadMesh };
+const char* to_string(PrecisionOutcome outcome);
+const char* to_string(PrecisionUndecided why);
+
+// A point that can be inserted, and the choice that reaches it: the Lepp under one
+// resolution of exact length ties (each triangle with the edge taken as its longest,
+// the listed triangle first, the terminal edge last; a second terminal triangle across
+// it), the second-longest edges taken, the branch of Select Point, the edge the point
+// splits (a midpoint of a constrained edge) and the rounding. Mesh vertex ids.
+struct PrecisionWitness {
+  Point point;                              // the double that can be inserted
+  std::string rounding;                     // "formula" (the engines' double), or each coordinate "down", "up" or "exact"
+  Rule rule = Rule::QuadCentroid;           // the branch
+  std::vector<int> lepp;                    // triangles (indices into Mesh::triangles)
+  std::vector<std::array<int, 2>> longest;  // the edge taken as longest in each of the path's triangles
+  int terminal_other = -1;                  // the triangle across the terminal edge (-1: a constrained one)
+  std::array<int, 2> second1{{-1, -1}}, second2{{-1, -1}};  // of the path's last triangle and terminal_other (-1: none)
+  std::array<int, 2> split{{-1, -1}};       // the edge whose midpoint it is (-1: a centroid, or a located midpoint)
+};
+
+struct PrecisionClaim {
+  int triangle = -1;  // index into Mesh::triangles
+  PrecisionOutcome outcome = PrecisionOutcome::Undecided;
+  PrecisionUndecided undecided = PrecisionUndecided::Bound;  // Undecided: why
+  std::size_t states = 0;                                     // Lepp states the search visited
+  PrecisionWitness witness;                                   // Rejected
 };
 
 // The statistics the paper plots (doubles, for display) and what was checked.
@@ -147,6 +190,12 @@ struct Report {
   // search of every tie resolution stopped undecided (CERTIFIER.md section 5c): not
   // verified, so not accepted, but no insertable point was found either.
   std::size_t precision_undecided = 0;
+  // Every triangle the mesher listed as left at double precision, with the outcome
+  // (in mesh order; a rejected claim's violation text has its witness), and the
+  // bound and time limit the searches ran under (Options).
+  std::vector<PrecisionClaim> precision_claims;
+  std::size_t tie_search_states = 0;
+  double time_limit_seconds = 0;
   Statistics stats;
   // Not violations: each unused exact duplicate of an input vertex merged into the
   // copy the triangles use (as Triangle's .node keeps an input's repeated vertex).

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The minimum-angle check on the built index, with the unimprovable rule and the two exemptions.
 #include <algorithm>
+#include <array>
+#include <chrono>
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 
 #include "../exact.h"
 #include "../passes.h"
@@ -33,6 +36,41 @@ std::vector<int> segments_of(const MeshIndex& ix, int v) {
     out.push_back(ix.vertex_segment[static_cast<std::size_t>(v)]);
   }
   return out;
+}
+
+// Triangles of a witness's Lepp named in its text, at each end (the JSON has them all):
+// a Lepp along a strip at the limit runs through thousands.
+constexpr std::size_t kWitnessLeppEnds = 3;
+
+// The witness of a rejected claim, one clause: the point with its exact value (the
+// shortest decimal that reads back to it, and hexadecimal), the branch and the choice
+// that reach it (the Lepp under one resolution of exact length ties).
+std::string witness_text(const PrecisionWitness& w) {
+  auto edge = [](const std::array<int, 2>& e) { return fmt::format("{}-{}", e[0], e[1]); };
+  std::string lepp;
+  const std::size_t n = w.lepp.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == kWitnessLeppEnds && n > 2 * kWitnessLeppEnds + 1) {
+      lepp += fmt::format(" -> ... {} more triangles ...", n - 2 * kWitnessLeppEnds);
+      i = n - kWitnessLeppEnds - 1;
+      continue;
+    }
+    lepp += fmt::format("{}triangle {} (longest {})", i ? " -> " : "", w.lepp[i], edge(w.longest[i]));
+  }
+  std::string choice = w.terminal_other >= 0 ? fmt::format(", terminal pair with triangle {}", w.terminal_other) : std::string();
+  if (w.second1[0] >= 0) choice += fmt::format(", second-longest edges {} and {}", edge(w.second1), edge(w.second2));
+  if (w.split[0] >= 0) choice += fmt::format(", splitting edge {}", edge(w.split));
+  return fmt::format("witness point ({}, {}) = ({:a}, {:a}), rounding {}, branch {}: Lepp {}{}", w.point.x, w.point.y, w.point.x,
+                     w.point.y, w.rounding, to_string(w.rule), lepp, choice);
+}
+
+std::string undecided_text(const PrecisionClaim& c, const Options& o) {
+  switch (c.undecided) {
+    case PrecisionUndecided::Bound: return fmt::format("at bound {} Lepp states", o.tie_search_states);
+    case PrecisionUndecided::TimeLimit: return fmt::format("at the time limit of {} s, after {} Lepp states", o.time_limit_seconds, c.states);
+    case PrecisionUndecided::BadMesh: return "at a bad triangle or edge";
+  }
+  return "";
 }
 
 // ALGORITHM.md section 8, checked on the mesh itself.
@@ -80,6 +118,14 @@ void check_angles(Certification& cert) {
   std::map<Tri, std::size_t> listed;  // sorted triple -> index in options.unimprovable
   for (std::size_t i = 0; i < cert.options.unimprovable.size(); ++i) listed.emplace(sorted(cert.options.unimprovable[i].triangle), i);
   std::vector<char> found(cert.options.unimprovable.size(), 0);
+  PrecisionLimits limits;
+  limits.states = cert.options.tie_search_states;
+  limits.ties_by_ids = cert.options.precision_ties_by_ids;
+  if (cert.options.time_limit_seconds > 0)
+    limits.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                             std::chrono::duration<double>(cert.options.time_limit_seconds));
+  cert.report.tie_search_states = cert.options.tie_search_states;
+  cert.report.time_limit_seconds = cert.options.time_limit_seconds;
   for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t) {
     if (!ix.tri_ok[t]) continue;
     const Tri& x = ix.T(t);
@@ -104,33 +150,33 @@ void check_angles(Certification& cert) {
       cert.report.exempt_angle.push_back(exempt);
     }
     // The precision limit (section 5c), likewise from input and mesh alone.
-    std::optional<PrecisionVerdict> searched;  // kept for a listed claim below: the search is not run twice
+    std::optional<PrecisionClaim> searched;  // kept for a listed claim below: the search is not run twice
     if (exempt < 0 && cert.options.exempt_precision_limited)
-      searched = precision_verdict(precision_view(ix), t, cert.options.precision_method, cert.options.precision_ties_by_ids);
-    const bool limited = searched == PrecisionVerdict::Limited;
+      searched = precision_claim(precision_view(ix), t, cert.options.precision_method, limits);
+    const bool limited = searched && searched->outcome == PrecisionOutcome::Exempt;
     if (limited) cert.report.precision_exempt_triangles.push_back(static_cast<int>(t));
     auto it = listed.find(sorted(x));
     if (it != listed.end()) {
       const std::size_t listed_index = it->second;
       found[listed_index] = 1;
       if (cert.options.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
-        const PrecisionVerdict verdict =
-            searched ? *searched : precision_verdict(precision_view(ix), t, cert.options.precision_method, cert.options.precision_ties_by_ids);
-        if (verdict == PrecisionVerdict::Limited) {
+        const PrecisionClaim claim =
+            searched ? *searched : precision_claim(precision_view(ix), t, cert.options.precision_method, limits);
+        cert.report.precision_claims.push_back(claim);
+        if (claim.outcome == PrecisionOutcome::Exempt) {
           cert.report.unimprovable_accepted.push_back(cert.options.unimprovable[listed_index]);
           continue;
         }
         // Undecided: the claim cannot be verified, so it is not accepted; the text says which.
-        if (verdict == PrecisionVerdict::Undecided) ++cert.report.precision_undecided;
+        if (claim.outcome == PrecisionOutcome::Undecided) ++cert.report.precision_undecided;
         cert.add({Reason::UnimprovableRuleFails,
-                  verdict == PrecisionVerdict::Insertable
+                  claim.outcome == PrecisionOutcome::Rejected
                       ? fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as "
-                                    "rounded, can be inserted",
-                                    ix.tri_text(t), to_string(cert.options.precision_method))
+                                    "rounded, can be inserted: {}",
+                                    ix.tri_text(t), to_string(cert.options.precision_method), witness_text(claim.witness))
                       : fmt::format("{} is listed as limited by double precision but the search of its Lepps under every "
-                                    "resolution of exact length ties stopped undecided (more than {} Lepp states, or a bad "
-                                    "triangle), so the claim is not verified",
-                                    ix.tri_text(t), kTieSearchStates),
+                                    "resolution of exact length ties stopped undecided {}, so the claim is not verified",
+                                    ix.tri_text(t), undecided_text(claim, cert.options)),
                   {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
         continue;
       }

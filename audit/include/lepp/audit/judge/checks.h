@@ -68,6 +68,10 @@ struct CheckOptions {
   double point_tolerance_ulps = 8;    // how far a point may be from the exact choice, DBL_EPSILON x |coordinate| units
   bool area_centroid = false;         // the declared reading: the quad centroid is its area centroid (--centroid area)
   bool arithmetic_double = false;     // the declared reading of the arithmetic (--arithmetic double): inexact-* steps are notes
+  // The certificate's precision-limit search: at most this many Lepp states per triangle
+  // (certify::Options::tie_search_states; 0: no bound). lepp's built-in engines run
+  // with the same bound (lepp/engines/builtin_engines.h).
+  std::size_t tie_search_states = kTieSearchStates;
 };
 
 struct CaseResult {

@@ -5,6 +5,7 @@
 // section 7): the orders that converge there tell the user whether lepp, with the
 // other program's order, would have ended too.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -28,9 +29,11 @@ struct OrderTermination {
 
 // lepp under every order on `pslg` (a validated input) when fifo's termination
 // differs from the engine's; nullopt when they agree. Each lepp run is bounded by
-// lepp's default Steiner budget and `time_limit` seconds (a stop counts as not converging).
+// lepp's default Steiner budget and `time_limit` seconds (a stop counts as not converging)
+// and searches tie resolutions in at most tie_search_states Lepp states (RefineOptions).
 std::optional<OrderTermination> compare_termination(const Pslg& pslg, const std::string& input, Method method, double theta,
-                                                    bool engine_converged, double time_limit, int random_orders = 10);
+                                                    bool engine_converged, double time_limit, int random_orders = 10,
+                                                    std::size_t tie_search_states = kTieSearchStates);
 
 // The report's paragraph (at most max_listed lines, then a count) and JSON.
 std::string format_order_terminations(const std::vector<OrderTermination>& v, std::size_t max_listed);
