@@ -74,6 +74,7 @@ std::vector<Setting> verdict_settings() {
       {"--max-findings 5", "max_findings", [](AuditRequest& a) { a.max_findings = 5; }},
       {"--shrink-seconds 30", "shrink_max_seconds", [](AuditRequest& a) { a.shrink_seconds = 30; }},
       {"--compare reference", "compare", [](AuditRequest& a) { a.compare = "reference"; }},
+      {"--tie-search-states 64", "tie_search_states", [](AuditRequest& a) { a.tie_search_states = 64; }},
   };
   // Every processing order of the built-in engines other than the default.
   for (lepp::QueueOrder order : lepp::engines::audit_orders())
