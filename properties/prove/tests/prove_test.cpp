@@ -68,8 +68,8 @@ TEST_P(ProvedRow, ProvedAndRefutedWithoutItsEssentialHypothesis) {
   // whose obligations have no check function taking a grid configuration, and the lemma of
   // the narrowed Remark 13 rows (no row of the table); Remark 13 (2)'s check reads alpha0 > 30
   // as "not applicable" and compares no distance (Row::negative_check), so there Z3's exact
-  // model alone refutes (no other hypothesis, dropped, is refuted: without Delaunay or the
-  // frame the claim still holds).
+  // model alone refutes (no other dropped hypothesis gives a point it rejects: without Delaunay or the
+  // frame the claim still holds; without the others Z3's points leave the check's case).
   bool has_check = statement != "Theorem2.EqualityCaseCocircularWithEquilateral" &&
                    statement != "Lemma8.ObtuseAbove14BetaAbove28" && statement != "Remark13.WorseTriangleByTangents" &&
                    statement != "Remark13.NonObtuseCaseDistanceAbove061";
