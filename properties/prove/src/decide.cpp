@@ -130,7 +130,7 @@ Decision decide_without(const std::string& statement, const std::string& dropped
   }
   d.outcome = Outcome::Refuted;
   d.counterexample = s.config->show();
-  if (row->check) {
+  if (row->check && (dropped.empty() || row->negative_check)) {
     theorems::Verdict v = row->check(*s.config, !dropped.empty());
     // The row's own check must reject the point: as written (hypothesis met, conclusion
     // fails) or, with a hypothesis dropped, as a negative test does (both fail).
@@ -141,7 +141,9 @@ Decision decide_without(const std::string& statement, const std::string& dropped
                "); " + (row->note.empty() ? "" : row->note);
     }
   } else {
-    d.note = "no check function takes this configuration; the point was re-checked exactly by Z3";
+    d.note = row->check ? "the row's check function reads a configuration without this hypothesis as not "
+                          "applicable; the point was re-checked exactly by Z3"
+                        : "no check function takes this configuration; the point was re-checked exactly by Z3";
     d.confirmed = false;
   }
   d.seconds = since(t0);

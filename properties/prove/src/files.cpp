@@ -26,7 +26,27 @@ std::string stem(const std::string& statement) {
 
 std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisions) {
   std::vector<ObligationFile> out;
+  // A proved row's lemma that is no row of the table (Row::via) is proved first, by Z3:
+  // its file goes before the row's, once.
+  std::vector<Decision> all;
+  auto listed = [&all](const std::string& st) {
+    for (const Decision& d : all)
+      if (d.statement == st) return true;
+    return false;
+  };
   for (const Decision& d : decisions) {
+    const Row* row = find_row(d.statement);
+    if (row && !row->via.empty() && d.outcome == Outcome::Proved && !theorems::find_statement(row->via) &&
+        !listed(row->via)) {
+      Decision lemma;
+      lemma.statement = row->via;
+      lemma.outcome = Outcome::Proved;
+      lemma.method = "Z3";
+      all.push_back(lemma);
+    }
+    if (!listed(d.statement)) all.push_back(d);
+  }
+  for (const Decision& d : all) {
     const std::string& statement = d.statement;
     const Row* row = find_row(statement);
     // Only the rows a solver decided: a file records the answer lepp found. A row only
@@ -48,8 +68,10 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
     if (auto at = body.rfind("(check-sat)"); at != std::string::npos) body.erase(at);
     std::vector<z3::expr> parts = expected == "unsat" ? conjuncts(o.claim) : std::vector<z3::expr>{o.claim};
     std::string answers;
-    for (const z3::expr& part : parts) {
-      body += "(push 1)\n(assert " + (!part).to_string() + ")\n(check-sat-using " + kTactic + ")\n(pop 1)\n";
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      // A refuted row's one check of the whole claim runs nlsat in its own order.
+      std::string tactic = expected == "unsat" ? nlsat_tactic_smt2(o, i) : std::string(kTactic);
+      body += "(push 1)\n(assert " + (!parts[i]).to_string() + ")\n(check-sat-using " + tactic + ")\n(pop 1)\n";
       answers += (answers.empty() ? "" : ",") + expected;
     }
     expected = answers;

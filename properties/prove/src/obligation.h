@@ -25,6 +25,8 @@ struct Obligation {
   std::vector<std::pair<std::string, z3::expr>> hyps;
   z3::expr claim;
   std::map<std::string, z3::expr> cache;  // square roots and cosines made once
+  // nlsat's variable order per conjunct of the claim (Row::nlsat_seeds; 0: its own order).
+  std::vector<unsigned> seeds;
 
   z3::expr num(const std::string& rational) { return ctx.real_val(rational.c_str()); }
   // A defined variable r with r >= 0 and r^2 = e.
@@ -59,6 +61,10 @@ struct Row {
   // dropped, read the triangle as given (Labelling::AsGiven) where that matters.
   std::function<theorems::Verdict(const Config&, bool negative)> check;
   std::string essential;  // the hypothesis a negative test drops
+  // false: the check function cannot judge a configuration outside the row's hypotheses
+  // (it reports "not applicable" without a conclusion), so a negative test's refutation
+  // is Z3's exact model alone, not confirmed by it.
+  bool negative_check = true;
   std::string note;       // how the proof reads the statement (a strengthening, the frame)
   std::string not_decided;  // non-empty: not first-order over the reals, why
   std::string sampled;      // corpus file of the sampled counterexample that refutes the row
@@ -71,6 +77,13 @@ struct Row {
   // (the rows nlsat does not decide in minutes).
   bool qepcad_file = false;
   bool qepcad_first = false;
+  // nlsat's variable order for each conjunct of the claim, in order: 0 keeps its own
+  // order, s > 0 shuffles the variables with seed s (`shuffle_vars`, `seed`). Any order
+  // is a complete procedure, so an unsat answer is a proof whichever order found it; the
+  // order only decides how long it takes (seconds or beyond the time limit). Found by
+  // trying seeds 1, 2, ... with the z3 binary on the written file, and fixed here so the
+  // library and the file CI re-checks run the same procedure.
+  std::vector<unsigned> nlsat_seeds;
 };
 
 const std::vector<Row>& prover_rows();

@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -175,8 +176,11 @@ Solved solve_qepcad(const Obligation& o, double time_limit_s) {
   bool written = write(fd, input.data(), input.size()) == static_cast<ssize_t>(input.size());
   close(fd);
   if (written) {
-    std::string cmd = "timeout " + std::to_string(static_cast<int>(std::ceil(time_limit_s))) +
-                      " qepcad +N200000000 < " + path + " 2>&1";
+    // GNU timeout takes fractions of a second: a limit below one second is kept, not
+    // rounded up to one (in which QEPCAD B answers Theorem 2 on an idle machine).
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%.3f", std::max(time_limit_s, 0.001));
+    std::string cmd = std::string("timeout ") + limit + " qepcad +N200000000 < " + path + " 2>&1";
     std::string text;
     if (FILE* p = popen(cmd.c_str(), "r")) {
       char buf[4096];

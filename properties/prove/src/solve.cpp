@@ -30,7 +30,28 @@ std::optional<Rational> small_rational(const z3::expr& v) {
 
 }  // namespace
 
+namespace {
+unsigned seed_of(const Obligation& o, std::size_t i) { return i < o.seeds.size() ? o.seeds[i] : 0; }
+}  // namespace
+
+z3::tactic nlsat_tactic(const Obligation& o, std::size_t i) {
+  z3::tactic t(o.ctx, kTactic);
+  unsigned seed = seed_of(o, i);
+  if (seed == 0) return t;
+  z3::params p(o.ctx);
+  p.set("shuffle_vars", true);
+  p.set("seed", seed);
+  return z3::with(t, p);
+}
+
+std::string nlsat_tactic_smt2(const Obligation& o, std::size_t i) {
+  unsigned seed = seed_of(o, i);
+  if (seed == 0) return kTactic;
+  return std::string("(using-params ") + kTactic + " :shuffle_vars true :seed " + std::to_string(seed) + ")";
+}
+
 void build(const Row& row, Obligation& o, const std::string& k, const std::string& dropped) {
+  o.seeds = row.nlsat_seeds;
   row.build(o, o.num(k.empty() ? (row.constant.empty() ? "0" : row.constant) : k));
   if (!dropped.empty()) {
     for (auto it = o.hyps.begin(); it != o.hyps.end(); ++it)
@@ -66,8 +87,10 @@ Solved solve(Obligation& o, double time_limit_s) {
   // each than on their disjunction of negations): proved when every one is.
   std::optional<z3::solver> found;
   out.answer = Answer::Unsat;
-  for (const z3::expr& part : conjuncts(o.claim)) {
-    z3::solver s = z3::try_for(z3::tactic(o.ctx, kTactic), limit_ms(time_limit_s)).mk_solver();
+  std::vector<z3::expr> parts = conjuncts(o.claim);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const z3::expr& part = parts[i];
+    z3::solver s = z3::try_for(nlsat_tactic(o, i), limit_ms(time_limit_s)).mk_solver();
     s.add(premises(o));
     s.add(!part);
     z3::check_result r = z3::unknown;

@@ -12,6 +12,11 @@ namespace lepp::prove {
 // The solver every decision uses: Z3's nlsat procedure for nonlinear real arithmetic.
 constexpr const char* kTactic = "qfnra-nlsat";
 
+// The tactic for conjunct `i` of `o`'s claim: nlsat in its own variable order, or with
+// the order shuffled by the seed the row fixed (Row::nlsat_seeds); and its SMT-LIB text.
+z3::tactic nlsat_tactic(const Obligation& o, std::size_t i);
+std::string nlsat_tactic_smt2(const Obligation& o, std::size_t i);
+
 enum class Answer { Unsat, Sat, Unknown };
 struct Solved {
   Answer answer = Answer::Unknown;
