@@ -8,4 +8,10 @@ namespace lepp::audit {
 
 std::string theta_text(double theta) { return fmt::format("{}", theta); }
 
+std::string thetas_text(const std::vector<double>& thetas) {
+  std::string s;
+  for (double t : thetas) s += (s.empty() ? "" : ", ") + theta_text(t);
+  return s;
+}
+
 }  // namespace lepp::audit

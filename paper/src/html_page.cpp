@@ -4,9 +4,7 @@
 #include "lepp/paper/html_page.h"
 
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -22,14 +20,6 @@ namespace lepp::paper {
 namespace {
 
 using html::escape;
-
-std::optional<std::string> read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string cell(const std::string& text) { return "<td class=\"n\">" + escape(text) + "</td>"; }
 std::string paper_cell(std::optional<int> n) { return cell(n ? std::to_string(*n) : "–"); }
@@ -80,13 +70,13 @@ std::string problem_table(const Study& study, const PaperProblem& p) {
 std::string figures(html::Page& page, const fs::path& figdir) {
   std::string out;
   for (const auto& [file, caption] : plot_figures()) {
-    if (const auto png = read_file(figdir / file))
+    if (const auto png = html::file_bytes((figdir / file).string()))
       out += page.png_figure(*png, caption);
     else
       out += "<p class=\"missing\">" + escape(caption) + ": not made (" + escape(file) + " is missing)</p>\n";
   }
   for (const std::string& file : fig13_files()) {
-    const auto svg = read_file(figdir / file);
+    const auto svg = html::file_bytes((figdir / file).string());
     if (svg && svg->find("<svg") != std::string::npos)
       out += page.figure(*svg, "Fig. 13: " + file, "step");
     else

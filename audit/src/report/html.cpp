@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "html_findings.h"
+#include "row_verdict.h"
 #include "lepp/audit/report/report.h"
 #include "lepp/audit/theta_text.h"
 #include "lepp/html/page.h"
@@ -17,17 +18,8 @@ namespace {
 
 using html::escape;
 
-std::string verdict_of(const RowSummary& r) {
-  if (r.failed > 0) return "FAILED";
-  if (r.internal_errors > 0) return fmt::format("undecided on {} runs (internal error of the audit)", r.internal_errors);
-  if (r.run == 0) return r.not_checked > 0 ? "not checked" : "not applicable";
-  if (r.findings > 0) return "holds (findings outside the claim)";
-  return "holds";
-}
-
 std::string summary(const AuditReport& rep) {
-  std::string thetas;
-  for (double t : rep.thetas) thetas += (thetas.empty() ? "" : ", ") + theta_text(t);
+  const std::string thetas = thetas_text(rep.thetas);
   std::string out = fmt::format("<p>Method {}, theta {}; {} runs on {} inputs (seed {}{}); {:.1f} s with -j {}, of which the engine {:.1f} s.</p>\n",
                                 to_string(rep.method), thetas, rep.cases, rep.inputs, rep.seed,
                                 rep.repeat > 1 ? fmt::format(", each case run {} times", rep.repeat) : "", rep.seconds, rep.jobs,
@@ -64,7 +56,7 @@ std::string rows_table(const AuditReport& rep) {
         "<tr data-row=\"{0}\" data-runs=\"{2}\" data-held=\"{3}\" data-failed=\"{4}\" data-findings=\"{5}\"><td>{1}</td><td>{0}</td>"
         "<td>{6} <i>({7})</i></td><td class=\"n\">{2}</td><td class=\"n\">{3}</td><td class=\"n\">{4}{8}</td><td class=\"{9}\">{10}</td><td>{11}</td></tr>\n",
         row_key(r.row), i + 1, r.run, r.held, r.failed, r.findings, escape(row_statement(r.row)), escape(row_passage(r.row)),
-        r.findings ? fmt::format(" (+{} findings)", r.findings) : "", r.failed ? "bad" : "ok", escape(verdict_of(r)), smallest);
+        r.findings ? fmt::format(" (+{} findings)", r.findings) : "", r.failed ? "bad" : "ok", escape(detail::row_verdict(r)), smallest);
   }
   out += "</tbody></table>\n";
   out += "<p>Runs a row did not apply to:";

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A finding on the audit's HTML page: its words, its pictures from its directory, its reproduce command.
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -19,17 +17,9 @@ namespace {
 
 using html::escape;
 
-std::optional<std::string> read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The picture of one SVG file of the finding's directory, or nothing when it is not there.
 std::string picture(html::Page& page, const fs::path& file, const std::string& caption, const char* css_class) {
-  const auto svg = read_file(file);
+  const auto svg = html::file_bytes(file.string());
   if (!svg || svg->find("<svg") == std::string::npos) return {};
   return page.figure(*svg, caption, css_class);
 }

@@ -6,26 +6,13 @@
 
 #include "lepp/audit/report/shard.h"
 #include "lepp/audit/theta_text.h"
+#include "row_verdict.h"
 #include "xml_escape.h"
 
 namespace lepp::audit {
 namespace {
 
 using detail::xml_escape;
-
-std::string thetas_text(const std::vector<double>& thetas) {
-  std::string s;
-  for (double t : thetas) s += (s.empty() ? "" : ", ") + theta_text(t);
-  return s;
-}
-
-std::string verdict_of(const RowSummary& r) {
-  if (r.failed > 0) return "FAILED";
-  if (r.internal_errors > 0) return fmt::format("undecided on {} runs (internal error of the audit)", r.internal_errors);
-  if (r.run == 0) return r.not_checked > 0 ? "not checked" : "not applicable";
-  if (r.findings > 0) return "holds (findings outside the claim)";
-  return "holds";
-}
 
 std::string smallest_cell(const RowSummary& r) {
   if (r.counterexamples.empty()) return r.first_detail.empty() ? "" : md_cell(r.first_detail);
@@ -141,7 +128,7 @@ std::string markdown_report(const AuditReport& rep) {
     std::string failed = std::to_string(r.failed);
     if (r.findings) failed += fmt::format(" (+{} findings)", r.findings);
     md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", i + 1, row_key(r.row), md_cell(row_passage(r.row)),
-                      r.run, r.held, failed, verdict_of(r), smallest_cell(r));
+                      r.run, r.held, failed, detail::row_verdict(r), smallest_cell(r));
   }
   md += deviations_text(rep);
   if (rep.internal_error_runs > 0) {

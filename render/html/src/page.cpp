@@ -2,7 +2,9 @@
 // The page skeleton and its pictures (lepp/html/page.h).
 #include "lepp/html/page.h"
 
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "lepp/html/base64.h"
 #include "page_assets.h"
@@ -86,6 +88,14 @@ std::string details(std::string_view summary, std::string_view body, bool open) 
   out += body;
   out += "</details>\n";
   return out;
+}
+
+std::optional<std::string> file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 }  // namespace lepp::html

@@ -8,6 +8,7 @@
 // picture's place and size into its data-x/-y/-w/-h attributes.
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -39,6 +40,9 @@ class Page {
   std::string title_, body_;
   std::size_t pictures_ = 0;
 };
+
+// The bytes of a file a page inlines (an SVG, a PNG), or nothing when it cannot be read.
+std::optional<std::string> file_bytes(const std::string& path);
 
 // <details> with a <summary> (text, escaped) around raw HTML: opens without any script.
 std::string details(std::string_view summary, std::string_view body, bool open = false);
