@@ -4,11 +4,19 @@
 # scripts/ci.d/ (sanitizer build, the example outside project, ...), in name order.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
-bash scripts/build.sh
-ctest --test-dir build --output-on-failure -j "$(nproc)"
+# Each part prints its seconds: CI has 90 minutes on 2 cores, and this is
+# where a reader sees which part grew.
+timed() {
+  local start=$SECONDS
+  "$@"
+  echo "== $* took $(( SECONDS - start )) s"
+}
+timed bash scripts/install-deps.sh
+timed bash scripts/build.sh
+timed ctest --test-dir build --output-on-failure -j "$(nproc)"
 for extra in scripts/ci.d/*.sh; do
   [ -e "$extra" ] || continue
   echo "== $extra"
-  bash "$extra"
+  timed bash "$extra"
 done
+echo "== all parts: $SECONDS s"
