@@ -60,6 +60,7 @@ struct MeshIndex {
   OutsideInput chain_segments;                   // the same edges as segments (the exemption's sliver clause)
 
   std::vector<char> tri_ok;            // ids valid (orientation may still be wrong)
+  std::vector<char> ccw;               // valid and strictly counter-clockwise (index_triangles)
   std::vector<int> twin;               // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
   std::vector<std::array<int, 2>> edges;  // unique edges (a < b) of valid triangles
   std::vector<char> used;
