@@ -57,7 +57,9 @@ bool vertices_on_edges_by_grid(const std::vector<Point>& points, const std::vect
   for (const Box& b : edge_boxes) each_cell(b, [&](std::size_t c) { ++begin[c + 1]; });
   for (std::size_t c = 0; c < side * side; ++c) begin[c + 1] += begin[c];
   std::vector<int> next(begin.begin(), begin.end() - 1);
-  for (const Box& b : edge_boxes) each_cell(b, [&](std::size_t c) { in_cell[static_cast<std::size_t>(next[c]++)] = b.info(); });
+  // Positions in edge_boxes (box intersection may have reordered them; info() is the edge).
+  for (std::size_t i = 0; i < edge_boxes.size(); ++i)
+    each_cell(edge_boxes[i], [&](std::size_t c) { in_cell[static_cast<std::size_t>(next[c]++)] = static_cast<int>(i); });
   for (std::size_t v = 0; v < points.size(); ++v) {
     const Point& p = points[v];
     if (!used[v] || !(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) continue;  // in no box (NaN: none either)
