@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -63,23 +64,31 @@ LineReader::LineReader(std::string path) : path_(std::move(path)) {
 
 bool LineReader::next(std::vector<std::string_view>& tokens) {
   tokens.clear();
-  while (pos_ < text_.size()) {
-    std::size_t end = text_.find('\n', pos_);
-    if (end == std::string::npos) end = text_.size();
-    std::string_view line(text_.data() + pos_, end - pos_);
-    pos_ = end + 1;
+  // One pass over each line: tokens end at a space (a newline is one), a '#' ends the
+  // line's content. (A search for the newline, then for '#', then the split, each went
+  // over the line: reading a mesh is mostly this loop.)
+  const char* const text = text_.data();
+  const std::size_t size = text_.size();
+  std::size_t i = pos_;
+  while (i < size) {
     ++line_;
-    if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && is_space(line[i])) ++i;
-      std::size_t start = i;
-      while (i < line.size() && !is_space(line[i])) ++i;
-      if (i > start) tokens.push_back(line.substr(start, i - start));
+    for (;;) {
+      while (i < size && text[i] != '\n' && is_space(text[i])) ++i;
+      if (i >= size || text[i] == '\n') break;
+      if (text[i] == '#') {
+        const void* newline = std::memchr(text + i, '\n', size - i);
+        i = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text) : size;
+        break;
+      }
+      const std::size_t start = i;
+      while (i < size && !is_space(text[i]) && text[i] != '#') ++i;
+      tokens.emplace_back(text + start, i - start);
     }
-    if (!tokens.empty()) return true;
+    ++i;  // past the newline (or the end)
+    if (!tokens.empty()) break;
   }
-  return false;
+  pos_ = i;
+  return !tokens.empty();
 }
 
 void LineReader::expect(std::vector<std::string_view>& tokens, const std::string& what) {
