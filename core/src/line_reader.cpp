@@ -38,7 +38,7 @@ std::string printable(std::string_view token) {
 
 // isspace() in the C locale, inline: the reader's innermost test (the library call was a
 // tenth of reading a mesh). Bytes of 0x80 and above are not space, as in C and UTF-8 locales.
-bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+constexpr bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 
 }  // namespace
 
@@ -62,26 +62,52 @@ LineReader::LineReader(std::string path) : path_(std::move(path)) {
   text_ += buffer.str();
 }
 
+namespace {
+
+// What a byte does to the split, by table (a load and a compare per byte): the loops below
+// stop only at the end of a token, of a line or of the text. NUL ends the string's
+// text (std::string keeps one past its end) and is token text inside it.
+enum ByteClass : unsigned char { kToken, kSpace, kNewline, kHash, kNul };
+struct ByteClasses {
+  unsigned char of[256];
+  constexpr ByteClasses() : of() {
+    for (int c = 0; c < 256; ++c) of[c] = is_space(static_cast<char>(c)) ? kSpace : kToken;
+    of[static_cast<unsigned char>('\n')] = kNewline;
+    of[static_cast<unsigned char>('#')] = kHash;
+    of[0] = kNul;
+  }
+};
+constexpr ByteClasses kByteClasses;
+
+}  // namespace
+
 bool LineReader::next(std::vector<std::string_view>& tokens) {
   tokens.clear();
   // One pass over each line: tokens end at a space (a newline is one), a '#' ends the
   // line's content. (A search for the newline, then for '#', then the split, each went
   // over the line: reading a mesh is mostly this loop.)
-  const char* const text = text_.data();
+  const char* const text = text_.c_str();
   const std::size_t size = text_.size();
+  auto cls = [text](std::size_t i) { return kByteClasses.of[static_cast<unsigned char>(text[i])]; };
   std::size_t i = pos_;
   while (i < size) {
     ++line_;
     for (;;) {
-      while (i < size && text[i] != '\n' && is_space(text[i])) ++i;
-      if (i >= size || text[i] == '\n') break;
-      if (text[i] == '#') {
-        const void* newline = std::memchr(text + i, '\n', size - i);
-        i = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text) : size;
-        break;
+      while (cls(i) == kSpace) ++i;
+      if (cls(i) == kNul && i < size) {  // NUL inside the text: token text
+      } else if (cls(i) != kToken) {
+        if (cls(i) == kHash) {
+          const void* newline = std::memchr(text + i, '\n', size - i);
+          i = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text) : size;
+        }
+        break;  // at the newline or the end
       }
       const std::size_t start = i;
-      while (i < size && !is_space(text[i]) && text[i] != '#') ++i;
+      for (;;) {
+        while (cls(i) == kToken) ++i;
+        if (cls(i) != kNul || i >= size) break;
+        ++i;  // NUL inside the text
+      }
       tokens.emplace_back(text + start, i - start);
     }
     ++i;  // past the newline (or the end)
@@ -101,7 +127,14 @@ void LineReader::expect_item(std::vector<std::string_view>& tokens, const char* 
 
 std::size_t LineReader::lines_left() const {
   if (pos_ >= text_.size()) return 0;
-  return static_cast<std::size_t>(std::count(text_.begin() + static_cast<std::ptrdiff_t>(pos_), text_.end(), '\n')) + 1;
+  // The newlines counted by memchr's word-wide search (std::count went byte by byte).
+  std::size_t lines = 1;
+  const char *at = text_.data() + pos_, *const end = text_.data() + text_.size();
+  while (const void* newline = std::memchr(at, '\n', static_cast<std::size_t>(end - at))) {
+    ++lines;
+    at = static_cast<const char*>(newline) + 1;
+  }
+  return lines;
 }
 
 void LineReader::fail(const std::string& what) const { throw InputError(path_, line_, what); }

@@ -134,6 +134,10 @@ void check_angles(Certification& cert) {
     int worst;  // corner with an angle below theta (the smallest such angle is not needed)
     bool certainly;
   };
+  // The corner facing the longest edge has the largest angle, at least 60 degrees: when
+  // sin^2 theta's upper bracket is below sin^2 60 = 3/4, that corner is never below
+  // theta (an obtuse one is not acute) and is not tested.
+  const bool skip_largest = bracket.hi < 0.75;
   std::vector<std::vector<Skinny>> skinny(range_count(cert, ix.mesh.triangles.size()));
   over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& range) {
     for (std::size_t t = begin; t < end; ++t) {
@@ -141,7 +145,9 @@ void check_angles(Certification& cert) {
       const Tri& x = ix.T(t);
       int worst = -1;
       bool certainly = false;
+      const int largest = skip_largest ? (ix.longest[t] + 2) % 3 : -1;  // half-edge i runs x[i] -> x[i + 1]
       for (int i = 0; i < 3; ++i) {
+        if (i == largest) continue;
         const Point &o = ix.P(x[static_cast<std::size_t>(i)]), &p = ix.P(x[static_cast<std::size_t>((i + 1) % 3)]),
                     &q = ix.P(x[static_cast<std::size_t>((i + 2) % 3)]);
         if (exact::acute_angle_sin2_below(o, p, q, bracket.hi)) {
