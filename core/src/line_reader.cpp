@@ -160,6 +160,20 @@ double LineReader::real(std::string_view token, const char* what) const {
 }
 
 std::int64_t LineReader::integer(std::string_view token, const char* what) const {
+  {  // a plain decimal of at most 18 digits (an optional '-'): no overflow, the value from_chars gives
+    const bool minus = !token.empty() && token[0] == '-';
+    const std::size_t digits = token.size() - (minus ? 1 : 0);
+    if (digits >= 1 && digits <= 18) {
+      std::int64_t v = 0;
+      bool plain = true;
+      for (std::size_t i = minus ? 1 : 0; i < token.size() && plain; ++i) {
+        const unsigned d = static_cast<unsigned char>(token[i]) - static_cast<unsigned>('0');
+        plain = d <= 9;
+        v = v * 10 + static_cast<std::int64_t>(d);
+      }
+      if (plain) return minus ? -v : v;
+    }
+  }
   {  // fast path, as in real(): only what strtoll reads the same way
     long long v = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), v);
