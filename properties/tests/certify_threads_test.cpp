@@ -118,10 +118,11 @@ TEST(CertifyThreads, SameReportForOverlapsGapsDuplicatesAndVerticesOnChains) {
     certify::Options one;
     one.min_angle_deg = 25;
     one.max_listed_per_reason = 4;
+    one.max_area = 0.003;  // some triangles above it: the size-bound pass's ranges too
     const certify::Report single = certify::certify(pslg, mesh, one);
     if (breaks == 30)  // every kind (5 breaks: a few, in fewer ranges)
       for (certify::Reason r : {certify::Reason::EdgeOverused, certify::Reason::BoundaryNotOnDomainBoundary, certify::Reason::DuplicateMeshVertex,
-                                certify::Reason::ChainEdgesMeet, certify::Reason::AngleBelowTheta})
+                                certify::Reason::ChainEdgesMeet, certify::Reason::AngleBelowTheta, certify::Reason::AreaAboveBound})
         EXPECT_TRUE(single.has(r)) << breaks << " breaks: no " << certify::to_string(r) << "\n" << certify::format_report(single);
     const std::string json = certify::json_report(single, 1000).dump(2);
     for (int threads : {2, 3, 7, 0}) {
