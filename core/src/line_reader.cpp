@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -37,7 +38,7 @@ std::string printable(std::string_view token) {
 
 // isspace() in the C locale, inline: the reader's innermost test (the library call was a
 // tenth of reading a mesh). Bytes of 0x80 and above are not space, as in C and UTF-8 locales.
-bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+constexpr bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 
 }  // namespace
 
@@ -61,25 +62,59 @@ LineReader::LineReader(std::string path) : path_(std::move(path)) {
   text_ += buffer.str();
 }
 
+namespace {
+
+// What a byte does to the split, by table (a load and a compare per byte): the loops below
+// stop only at the end of a token, of a line or of the text. NUL ends the string's
+// text (std::string keeps one past its end) and is token text inside it.
+enum ByteClass : unsigned char { kToken, kSpace, kNewline, kHash, kNul };
+struct ByteClasses {
+  unsigned char of[256];
+  constexpr ByteClasses() : of() {
+    for (int c = 0; c < 256; ++c) of[c] = is_space(static_cast<char>(c)) ? kSpace : kToken;
+    of[static_cast<unsigned char>('\n')] = kNewline;
+    of[static_cast<unsigned char>('#')] = kHash;
+    of[0] = kNul;
+  }
+};
+constexpr ByteClasses kByteClasses;
+
+}  // namespace
+
 bool LineReader::next(std::vector<std::string_view>& tokens) {
   tokens.clear();
-  while (pos_ < text_.size()) {
-    std::size_t end = text_.find('\n', pos_);
-    if (end == std::string::npos) end = text_.size();
-    std::string_view line(text_.data() + pos_, end - pos_);
-    pos_ = end + 1;
+  // One pass over each line: tokens end at a space (a newline is one), a '#' ends the
+  // line's content. (A search for the newline, then for '#', then the split, each went
+  // over the line: reading a mesh is mostly this loop.)
+  const char* const text = text_.c_str();
+  const std::size_t size = text_.size();
+  auto cls = [text](std::size_t i) { return kByteClasses.of[static_cast<unsigned char>(text[i])]; };
+  std::size_t i = pos_;
+  while (i < size) {
     ++line_;
-    if (std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && is_space(line[i])) ++i;
-      std::size_t start = i;
-      while (i < line.size() && !is_space(line[i])) ++i;
-      if (i > start) tokens.push_back(line.substr(start, i - start));
+    for (;;) {
+      while (cls(i) == kSpace) ++i;
+      if (cls(i) == kNul && i < size) {  // NUL inside the text: token text
+      } else if (cls(i) != kToken) {
+        if (cls(i) == kHash) {
+          const void* newline = std::memchr(text + i, '\n', size - i);
+          i = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - text) : size;
+        }
+        break;  // at the newline or the end
+      }
+      const std::size_t start = i;
+      for (;;) {
+        while (cls(i) == kToken) ++i;
+        if (cls(i) != kNul || i >= size) break;
+        ++i;  // NUL inside the text
+      }
+      tokens.emplace_back(text + start, i - start);
     }
-    if (!tokens.empty()) return true;
+    ++i;  // past the newline (or the end)
+    if (!tokens.empty()) break;
   }
-  return false;
+  pos_ = i;
+  return !tokens.empty();
 }
 
 void LineReader::expect(std::vector<std::string_view>& tokens, const std::string& what) {
@@ -92,7 +127,14 @@ void LineReader::expect_item(std::vector<std::string_view>& tokens, const char* 
 
 std::size_t LineReader::lines_left() const {
   if (pos_ >= text_.size()) return 0;
-  return static_cast<std::size_t>(std::count(text_.begin() + static_cast<std::ptrdiff_t>(pos_), text_.end(), '\n')) + 1;
+  // The newlines counted by memchr's word-wide search (std::count went byte by byte).
+  std::size_t lines = 1;
+  const char *at = text_.data() + pos_, *const end = text_.data() + text_.size();
+  while (const void* newline = std::memchr(at, '\n', static_cast<std::size_t>(end - at))) {
+    ++lines;
+    at = static_cast<const char*>(newline) + 1;
+  }
+  return lines;
 }
 
 void LineReader::fail(const std::string& what) const { throw InputError(path_, line_, what); }
@@ -118,6 +160,20 @@ double LineReader::real(std::string_view token, const char* what) const {
 }
 
 std::int64_t LineReader::integer(std::string_view token, const char* what) const {
+  {  // a plain decimal of at most 18 digits (an optional '-'): no overflow, the value from_chars gives
+    const bool minus = !token.empty() && token[0] == '-';
+    const std::size_t digits = token.size() - (minus ? 1 : 0);
+    if (digits >= 1 && digits <= 18) {
+      std::int64_t v = 0;
+      bool plain = true;
+      for (std::size_t i = minus ? 1 : 0; i < token.size() && plain; ++i) {
+        const unsigned d = static_cast<unsigned char>(token[i]) - static_cast<unsigned>('0');
+        plain = d <= 9;
+        v = v * 10 + static_cast<std::int64_t>(d);
+      }
+      if (plain) return minus ? -v : v;
+    }
+  }
   {  // fast path, as in real(): only what strtoll reads the same way
     long long v = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), v);

@@ -673,3 +673,28 @@ TEST(CertifyEdgeCases, SegmentToleranceAtZeroAndAmongSubnormals) {
 
 }  // namespace
 }  // namespace lepp
+
+namespace lepp {
+namespace {
+
+// Two isosceles triangles on edge 0-1, each with a second edge exactly as long (integer
+// coordinates: 3-4-5): the tie goes to the edge with the smaller ids (ALGORITHM.md
+// section 3), 0-1 in both, so they are a terminal pair. Kills a longest-edge pass that
+// kept the first of two equal edges (0-3 in the second triangle, and no pair).
+TEST(CertifyEdgeCases, LongestEdgeTieGoesToTheSmallerIdsMakingATerminalPair) {
+  Pslg p;
+  p.vertices = {{0, 0}, {5, 0}, {4, 3}, {4, -3}};
+  p.segments = {{0, 3}, {3, 1}, {1, 2}, {2, 0}};
+  Mesh m;
+  m.vertices = p.vertices;
+  m.input_vertices = 4;
+  m.triangles = {{0, 1, 2}, {0, 3, 1}};  // in the second, half-edge 0->3 comes before 1->0
+  certify::Options o;
+  o.min_angle_deg = 0;
+  const certify::Report r = certify::certify(test::validated(p), m, o);
+  EXPECT_TRUE(r.certified()) << certify::format_report(r);
+  EXPECT_EQ(r.stats.terminal_pairs_checked, 1u) << certify::format_report(r);
+}
+
+}  // namespace
+}  // namespace lepp

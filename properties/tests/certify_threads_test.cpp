@@ -3,7 +3,7 @@
 // "Threads"): every pass that splits its work into ranges merges them in range order,
 // so the violations, their order, the per-kind listing cap and every count agree with
 // one thread's. Checked on a refined mesh broken in many places at once (violations of
-// several kinds spread over every range), and on the mesh unbroken.
+// several kinds spread over every range), and on the mesh unbroken; the JSON too.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -11,6 +11,7 @@
 
 #include "cgal_mesh.h"
 #include "lepp/certify.h"
+#include "lepp/certify_json.h"
 #include "lepp/validate.h"
 #include "test_pslgs.h"
 
@@ -80,6 +81,56 @@ TEST(CertifyThreads, SameReportForAnyThreadCount) {
       certify::Options many = one;
       many.threads = threads;
       EXPECT_EQ(everything(certify::certify(pslg, mesh, many)), everything(single)) << breaks << " breaks, " << threads << " threads";
+    }
+  }
+}
+
+// Damages the passes made parallel for issue 40 see: triangles repeated (edges in three
+// triangles, and the copies' edges traversed the same way), triangles removed (gaps on no
+// segment), an exact copy of a used vertex given to a triangle (duplicate vertices, and
+// the vertex it left unused), a vertex moved onto the square's bottom side (a chain edge
+// with a vertex on it), and vertices moved to make skinny triangles.
+Mesh overlapped_mesh(const Mesh& good, int breaks, std::uint64_t seed) {
+  Mesh m = good;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> tri(0, m.triangles.size() - 1);
+  for (int i = 0; i < breaks; ++i) {
+    const std::size_t t = tri(rng);
+    switch (i % 5) {
+      case 0: m.triangles.push_back(m.triangles[t]); break;
+      case 1: m.triangles.erase(m.triangles.begin() + static_cast<std::ptrdiff_t>(t)); break;
+      case 2:
+        m.vertices.push_back(m.vertices[static_cast<std::size_t>(m.triangles[t][0])]);
+        m.triangles[t][0] = static_cast<int>(m.vertices.size()) - 1;
+        break;
+      case 3: m.vertices[static_cast<std::size_t>(m.triangles[t][1])].y = 0; break;
+      default: m.vertices[static_cast<std::size_t>(m.triangles[t][2])].x += 0.01; break;
+    }
+  }
+  return m;
+}
+
+TEST(CertifyThreads, SameReportForOverlapsGapsDuplicatesAndVerticesOnChains) {
+  const Pslg pslg = test::validated(finely_sampled_square());
+  const Mesh good = test::as_read(test::cgal_refined(pslg, 0.1));
+  for (int breaks : {5, 30}) {
+    const Mesh mesh = overlapped_mesh(good, breaks, 20261207 + static_cast<std::uint64_t>(breaks));
+    certify::Options one;
+    one.min_angle_deg = 25;
+    one.max_listed_per_reason = 4;
+    one.max_area = 0.003;  // some triangles above it: the size-bound pass's ranges too
+    const certify::Report single = certify::certify(pslg, mesh, one);
+    if (breaks == 30)  // every kind (5 breaks: a few, in fewer ranges)
+      for (certify::Reason r : {certify::Reason::EdgeOverused, certify::Reason::BoundaryNotOnDomainBoundary, certify::Reason::DuplicateMeshVertex,
+                                certify::Reason::ChainEdgesMeet, certify::Reason::AngleBelowTheta, certify::Reason::AreaAboveBound})
+        EXPECT_TRUE(single.has(r)) << breaks << " breaks: no " << certify::to_string(r) << "\n" << certify::format_report(single);
+    const std::string json = certify::json_report(single, 1000).dump(2);
+    for (int threads : {2, 3, 7, 0}) {
+      certify::Options many = one;
+      many.threads = threads;
+      const certify::Report r = certify::certify(pslg, mesh, many);
+      EXPECT_EQ(everything(r), everything(single)) << breaks << " breaks, " << threads << " threads";
+      EXPECT_EQ(certify::json_report(r, 1000).dump(2), json) << breaks << " breaks, " << threads << " threads";
     }
   }
 }

@@ -32,6 +32,14 @@ std::string MeshIndex::tri_text(std::size_t t) const {
   return fmt::format("triangle {} ({} {} {}: {} {} {})", t, x[0], x[1], x[2], pt(P(x[0])), pt(P(x[1])), pt(P(x[2])));
 }
 
+std::pair<const MeshIndex::Half*, const MeshIndex::Half*> MeshIndex::halves_on(int v, int w) const {
+  if (v > w) std::swap(v, w);
+  const Half* first = halves.data() + half_begin[static_cast<std::size_t>(v)];
+  const Half* last = halves.data() + half_begin[static_cast<std::size_t>(v) + 1];
+  auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
+  return std::equal_range(first, last, Half{w, 0}, by_other);
+}
+
 bool MeshIndex::adjacent(int v, int w) const {
   for (int i = adj_begin[static_cast<std::size_t>(v)]; i < adj_begin[static_cast<std::size_t>(v) + 1]; ++i)
     if (adj[static_cast<std::size_t>(i)] == w) return true;

@@ -60,9 +60,18 @@ struct MeshIndex {
   OutsideInput chain_segments;                   // the same edges as segments (the exemption's sliver clause)
 
   std::vector<char> tri_ok;            // ids valid (orientation may still be wrong)
+  std::vector<char> ccw;               // valid and strictly counter-clockwise (index_triangles)
   std::vector<int> twin;               // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
   std::vector<std::array<int, 2>> edges;  // unique edges (a < b) of valid triangles
   std::vector<char> used;
+  // The half-edges of valid triangles by edge (index_half_edges): the ones whose smaller
+  // end is v at [half_begin[v], half_begin[v + 1]) of halves, by larger end, then by id.
+  struct Half {
+    int other;  // the larger end
+    int h;
+  };
+  std::vector<int> half_begin;
+  std::vector<Half> halves;
   std::vector<char> merged;            // an unused exact duplicate of an input vertex (merge_duplicate_vertices)
   std::vector<int> input_to_mesh;      // input vertex id -> mesh vertex id, -1 missing
   std::vector<int> mesh_to_input;      // mesh vertex id -> input vertex id, -1 Steiner
@@ -81,6 +90,8 @@ struct MeshIndex {
   int apex(int h) const { return T(static_cast<std::size_t>(h / 3))[static_cast<std::size_t>((h % 3 + 2) % 3)]; }
   int longest_half(std::size_t t) const { return static_cast<int>(3 * t) + longest[t]; }
   bool adjacent(int v, int w) const;
+  // The half-edges of valid triangles on edge v-w (either way), by id: a range of halves.
+  std::pair<const Half*, const Half*> halves_on(int v, int w) const;
   // Edge order (ALGORITHM.md section 3): (squared length, -min id, -max id); true iff e > f.
   bool longer(int a, int b, int c, int d) const;
   std::string tri_text(std::size_t t) const;

@@ -24,8 +24,9 @@ struct ChainMeet {
 
 // Every such meeting, exactly (closed segments; two edges sharing an endpoint
 // meet elsewhere only when they overlap along a line). `used`: the mesh
-// vertices in some triangle. Pairs are found by CGAL's box intersection, so the
-// cost is near-linear in the edges and vertices near the chains.
+// vertices in some triangle. Edge pairs are found by CGAL's box intersection,
+// vertices on edges by a grid over the edges' boxes (box intersection when the
+// boxes are too large for one), so the cost is near-linear in the edges and vertices.
 std::vector<ChainMeet> chain_meetings(const std::vector<Point>& points, const std::vector<std::array<int, 2>>& edges,
                                       const std::vector<char>& used);
 

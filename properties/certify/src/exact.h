@@ -109,9 +109,31 @@ inline int sign_dot(const Point& o, const Point& p, const Point& q) {
   });
 }
 
+// The two sides of the angle at o, toward p and q, with their error bounds: the first
+// filter of the angle predicates below, shared by their two signs.
+struct Sides {
+  ErrorBounded ux, uy, vx, vy;
+  Sides(const Point& o, const Point& p, const Point& q)
+      : ux(ErrorBounded(p.x) - ErrorBounded(o.x)),
+        uy(ErrorBounded(p.y) - ErrorBounded(o.y)),
+        vx(ErrorBounded(q.x) - ErrorBounded(o.x)),
+        vy(ErrorBounded(q.y) - ErrorBounded(o.y)) {}
+  int dot_sign() const { return (ux * vx + uy * vy).sign_or_undecided(); }  // sign_dot(o, p, q), or 2
+};
+
 // The angle at c of triangle (c, a, b) is > 120 degrees:
 // dot(ca, cb) < 0 and 4 dot^2 > |ca|^2 |cb|^2.
 inline bool angle_over_120(const Point& c, const Point& a, const Point& b) {
+  {  // both signs through the first filter at once; any sign it leaves open: the full path below
+    const Sides z(c, a, b);
+    const int d = z.dot_sign();
+    if (d == 0 || d == 1) return false;
+    if (d == -1) {
+      const ErrorBounded dot = z.ux * z.vx + z.uy * z.vy;
+      const int s = (ErrorBounded(4) * dot * dot - (z.ux * z.ux + z.uy * z.uy) * (z.vx * z.vx + z.vy * z.vy)).sign_or_undecided();
+      if (s != 2) return s > 0;
+    }
+  }
   if (sign_dot(c, a, b) >= 0) return false;
   return sign([&](auto z) -> decltype(z) {
            using NT = decltype(z);
@@ -124,6 +146,16 @@ inline bool angle_over_120(const Point& c, const Point& a, const Point& b) {
 // The angle at o between p and q is acute and its sin^2 is below s:
 // dot > 0 and cross^2 < s |op|^2 |oq|^2, exactly (s is a double, taken as the rational it is).
 inline bool acute_angle_sin2_below(const Point& o, const Point& p, const Point& q, double s) {
+  {  // as angle_over_120
+    const Sides z(o, p, q);
+    const int d = z.dot_sign();
+    if (d == 0 || d == -1) return false;
+    if (d == 1) {
+      const ErrorBounded cross = z.ux * z.vy - z.uy * z.vx;
+      const int c = (cross * cross - ErrorBounded(s) * (z.ux * z.ux + z.uy * z.uy) * (z.vx * z.vx + z.vy * z.vy)).sign_or_undecided();
+      if (c != 2) return c < 0;
+    }
+  }
   if (sign_dot(o, p, q) <= 0) return false;
   return sign([&](auto z) -> decltype(z) {
            using NT = decltype(z);

@@ -3,6 +3,7 @@
 // violations and counters, merged in range order. The report is the one a single
 // thread makes, for any count: the same violations in the same order, the same counts.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <exception>
@@ -18,6 +19,7 @@ namespace lepp::certify {
 struct RangeFindings {
   std::vector<Violation> violations;
   std::array<std::size_t, 2> counters{};
+  std::size_t range = 0;  // this range's number, 0 first: for a pass's own per-range results
   void add(Violation v) { violations.push_back(std::move(v)); }
 };
 
@@ -25,13 +27,19 @@ struct RangeFindings {
 // thread (a single call on one thread, or when n is small), then adds each range's
 // violations through cert.add in range order. Returns the counters summed.
 // body may read the index and the options only: the report is written here, after.
-template <class Body>
-std::array<std::size_t, 2> over_ranges(Certification& cert, std::size_t n, const Body& body) {
+// How many ranges over_ranges splits [0, n) into.
+inline std::size_t range_count(const Certification& cert, std::size_t n) {
   // One range per thread, however small n is: a thread costs microseconds, and small
   // meshes (the tests') then run the same merging as large ones.
   const std::size_t threads = static_cast<std::size_t>(threads_or_cores(cert.options.threads));
-  const std::size_t ranges = std::max<std::size_t>(1, std::min(threads, n));
+  return std::max<std::size_t>(1, std::min(threads, n));
+}
+
+template <class Body>
+std::array<std::size_t, 2> over_ranges(Certification& cert, std::size_t n, const Body& body) {
+  const std::size_t ranges = range_count(cert, n);
   std::vector<RangeFindings> found(ranges);
+  for (std::size_t r = 0; r < ranges; ++r) found[r].range = r;
   std::vector<std::exception_ptr> failed(ranges);
   auto range = [&](std::size_t r) {
     try {

@@ -20,7 +20,7 @@ void delaunay(Certification& cert) {
       if (ix.constrained_half[h] && !conforming) continue;
       const int a = ix.from(static_cast<int>(h)), b = ix.to(static_cast<int>(h)), c = ix.apex(static_cast<int>(h)), d = ix.apex(g);
       ++found.counters[0];
-      if (exact::orient(ix.P(a), ix.P(b), ix.P(c)) <= 0) continue;  // reported; in-circle meaningless
+      if (!ix.ccw[h / 3]) continue;  // reported; in-circle meaningless
       const int side = exact::incircle(ix.P(a), ix.P(b), ix.P(c), ix.P(d));
       if (side == 0) ++found.counters[1];
       if (side > 0)

@@ -11,6 +11,7 @@
 #include "../exact.h"
 #include "../passes.h"
 #include "../precision_limit.h"
+#include "../ranges.h"
 #include "../small_input_angles_internal.h"
 #include "lepp/angle.h"
 #include "lepp/certify/checks.h"
@@ -126,77 +127,97 @@ void check_angles(Certification& cert) {
                                                              std::chrono::duration<double>(cert.options.time_limit_seconds));
   cert.report.tie_search_states = cert.options.tie_search_states;
   cert.report.time_limit_seconds = cert.options.time_limit_seconds;
-  for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t) {
-    if (!ix.tri_ok[t]) continue;
-    const Tri& x = ix.T(t);
-    int worst = -1;  // corner with an angle below theta (the smallest such angle is not needed)
-    bool certainly = false;
-    for (int i = 0; i < 3; ++i) {
-      const Point &o = ix.P(x[static_cast<std::size_t>(i)]), &p = ix.P(x[static_cast<std::size_t>((i + 1) % 3)]),
-                  &q = ix.P(x[static_cast<std::size_t>((i + 2) % 3)]);
-      if (exact::acute_angle_sin2_below(o, p, q, bracket.hi)) {
-        const bool below = exact::acute_angle_sin2_below(o, p, q, bracket.lo);
-        if (worst < 0 || (below && !certainly)) {
-          worst = i;
-          certainly = below;
+  // The triangles with an angle below theta, found over ranges (the exact signs are the
+  // pass's cost); what follows, in triangle order on this thread, sees only those.
+  struct Skinny {
+    std::size_t t;
+    int worst;  // corner with an angle below theta (the smallest such angle is not needed)
+    bool certainly;
+  };
+  // The corner facing the longest edge has the largest angle, at least 60 degrees: when
+  // sin^2 theta's upper bracket is below sin^2 60 = 3/4, that corner is never below
+  // theta (an obtuse one is not acute) and is not tested.
+  const bool skip_largest = bracket.hi < 0.75;
+  std::vector<std::vector<Skinny>> skinny(range_count(cert, ix.mesh.triangles.size()));
+  over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& range) {
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!ix.tri_ok[t]) continue;
+      const Tri& x = ix.T(t);
+      int worst = -1;
+      bool certainly = false;
+      const int largest = skip_largest ? (ix.longest[t] + 2) % 3 : -1;  // half-edge i runs x[i] -> x[i + 1]
+      for (int i = 0; i < 3; ++i) {
+        if (i == largest) continue;
+        const Point &o = ix.P(x[static_cast<std::size_t>(i)]), &p = ix.P(x[static_cast<std::size_t>((i + 1) % 3)]),
+                    &q = ix.P(x[static_cast<std::size_t>((i + 2) % 3)]);
+        if (exact::acute_angle_sin2_below(o, p, q, bracket.hi)) {
+          const bool below = exact::acute_angle_sin2_below(o, p, q, bracket.lo);
+          if (worst < 0 || (below && !certainly)) {
+            worst = i;
+            certainly = below;
+          }
         }
       }
+      if (worst >= 0) skinny[range.range].push_back({t, worst, certainly});
     }
-    if (worst < 0) continue;
-    // Decided before the engine's list is looked at: the rule sees only input and mesh.
-    const int exempt = cert.options.exempt_small_input_angles ? exempting_angle(ix, cert.report.small_angles, t) : -1;
-    if (exempt >= 0) {
-      cert.report.exempt_triangles.push_back(static_cast<int>(t));
-      cert.report.exempt_angle.push_back(exempt);
-    }
-    // The precision limit (section 5c), likewise from input and mesh alone.
-    std::optional<PrecisionClaim> searched;  // kept for a listed claim below: the search is not run twice
-    if (exempt < 0 && cert.options.exempt_precision_limited)
-      searched = precision_claim(precision_view(ix), t, cert.options.precision_method, limits);
-    const bool limited = searched && searched->outcome == PrecisionOutcome::Exempt;
-    if (limited) cert.report.precision_exempt_triangles.push_back(static_cast<int>(t));
-    auto it = listed.find(sorted(x));
-    if (it != listed.end()) {
-      const std::size_t listed_index = it->second;
-      found[listed_index] = 1;
-      if (cert.options.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
-        const PrecisionClaim claim =
-            searched ? *searched : precision_claim(precision_view(ix), t, cert.options.precision_method, limits);
-        cert.report.precision_claims.push_back(claim);
-        if (claim.outcome == PrecisionOutcome::Exempt) {
+  });
+  for (const std::vector<Skinny>& in_range : skinny)
+    for (const auto& [t, worst, certainly] : in_range) {
+      const Tri& x = ix.T(t);
+      // Decided before the engine's list is looked at: the rule sees only input and mesh.
+      const int exempt = cert.options.exempt_small_input_angles ? exempting_angle(ix, cert.report.small_angles, t) : -1;
+      if (exempt >= 0) {
+        cert.report.exempt_triangles.push_back(static_cast<int>(t));
+        cert.report.exempt_angle.push_back(exempt);
+      }
+      // The precision limit (section 5c), likewise from input and mesh alone.
+      std::optional<PrecisionClaim> searched;  // kept for a listed claim below: the search is not run twice
+      if (exempt < 0 && cert.options.exempt_precision_limited)
+        searched = precision_claim(precision_view(ix), t, cert.options.precision_method, limits);
+      const bool limited = searched && searched->outcome == PrecisionOutcome::Exempt;
+      if (limited) cert.report.precision_exempt_triangles.push_back(static_cast<int>(t));
+      auto it = listed.find(sorted(x));
+      if (it != listed.end()) {
+        const std::size_t listed_index = it->second;
+        found[listed_index] = 1;
+        if (cert.options.unimprovable[listed_index].reason == LeftReason::DoublePrecision) {
+          const PrecisionClaim claim =
+              searched ? *searched : precision_claim(precision_view(ix), t, cert.options.precision_method, limits);
+          cert.report.precision_claims.push_back(claim);
+          if (claim.outcome == PrecisionOutcome::Exempt) {
+            cert.report.unimprovable_accepted.push_back(cert.options.unimprovable[listed_index]);
+            continue;
+          }
+          // Undecided: the claim cannot be verified, so it is not accepted; the text says which.
+          if (claim.outcome == PrecisionOutcome::Undecided) ++cert.report.precision_undecided;
+          cert.add({Reason::UnimprovableRuleFails,
+                    claim.outcome == PrecisionOutcome::Rejected
+                        ? fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as "
+                                      "rounded, can be inserted: {}",
+                                      ix.tri_text(t), to_string(cert.options.precision_method), witness_text(claim.witness))
+                        : fmt::format("{} is listed as limited by double precision but the search of its Lepps under every "
+                                      "resolution of exact length ties stopped undecided {}, so the claim is not verified",
+                                      ix.tri_text(t), undecided_text(claim, cert.options)),
+                    {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
+          continue;
+        }
+        if (unimprovable_rule_holds(ix, t, bracket.hi)) {
           cert.report.unimprovable_accepted.push_back(cert.options.unimprovable[listed_index]);
           continue;
         }
-        // Undecided: the claim cannot be verified, so it is not accepted; the text says which.
-        if (claim.outcome == PrecisionOutcome::Undecided) ++cert.report.precision_undecided;
         cert.add({Reason::UnimprovableRuleFails,
-                  claim.outcome == PrecisionOutcome::Rejected
-                      ? fmt::format("{} is listed as limited by double precision but a point Select Point ({}) allows for it, as "
-                                    "rounded, can be inserted: {}",
-                                    ix.tri_text(t), to_string(cert.options.precision_method), witness_text(claim.witness))
-                      : fmt::format("{} is listed as limited by double precision but the search of its Lepps under every "
-                                    "resolution of exact length ties stopped undecided {}, so the claim is not verified",
-                                    ix.tri_text(t), undecided_text(claim, cert.options)),
+                  fmt::format("{} is listed unimprovable but its shortest edge does not join two segments meeting at an input angle below {}",
+                              ix.tri_text(t), cert.options.min_angle_deg),
                   {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
         continue;
       }
-      if (unimprovable_rule_holds(ix, t, bracket.hi)) {
-        cert.report.unimprovable_accepted.push_back(cert.options.unimprovable[listed_index]);
-        continue;
-      }
-      cert.add({Reason::UnimprovableRuleFails,
-                fmt::format("{} is listed unimprovable but its shortest edge does not join two segments meeting at an input angle below {}",
-                            ix.tri_text(t), cert.options.min_angle_deg),
+      if (exempt >= 0 || limited) continue;
+      const double deg = min_angle_deg(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]));
+      cert.add({certainly ? Reason::AngleBelowTheta : Reason::AngleNotCertified,
+                fmt::format("{} has an angle at vertex {} {} theta = {} (about {} degrees)", ix.tri_text(t), x[static_cast<std::size_t>(worst)],
+                            certainly ? "below" : "within one ulp of", cert.options.min_angle_deg, deg),
                 {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
-      continue;
     }
-    if (exempt >= 0 || limited) continue;
-    const double deg = min_angle_deg(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]));
-    cert.add({certainly ? Reason::AngleBelowTheta : Reason::AngleNotCertified,
-              fmt::format("{} has an angle at vertex {} {} theta = {} (about {} degrees)", ix.tri_text(t), x[static_cast<std::size_t>(worst)],
-                          certainly ? "below" : "within one ulp of", cert.options.min_angle_deg, deg),
-              {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
-  }
   cert.report.exempt_count = cert.report.exempt_triangles.size();
   cert.report.precision_exempt_count = cert.report.precision_exempt_triangles.size();
   // Listed but not skinny is harmless for the angle check; listed but absent is not.

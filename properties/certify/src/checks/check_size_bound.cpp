@@ -5,6 +5,7 @@
 
 #include "../exact.h"
 #include "../passes.h"
+#include "../ranges.h"
 #include "lepp/certify/checks.h"
 
 namespace lepp::certify {
@@ -157,29 +158,35 @@ void check_area_bounds(Certification& cert) {
   const MeshIndex& ix = cert.index;
   cert.report.max_area = is_bound(cert.options.max_area) ? cert.options.max_area : 0;
   cert.report.region_area_bounds = cert.options.region_area_bounds;
-  for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t) {
-    if (!ix.tri_ok[t]) continue;
-    const int r = cert.options.region_area_bounds ? cert.report.triangle_region[t] : -1;
-    const double regional = r >= 0 ? ix.pslg.regions[static_cast<std::size_t>(r)].max_area : 0;
-    // The smaller bound applies; on a tie, the region's is named.
-    const bool use_region = is_bound(regional) && (cert.report.max_area <= 0 || regional <= cert.report.max_area);
-    const double bound = use_region ? regional : cert.report.max_area;
-    if (bound <= 0) continue;
-    ++cert.report.area_checked;
-    const Tri& x = ix.T(t);
-    if (!area_above(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]), bound)) continue;
-    const Point &a = ix.P(x[0]), &b = ix.P(x[1]), &c = ix.P(x[2]);
-    const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
-    const std::string whose = use_region ? fmt::format("the bound {} of {}", bound, region_text(ix.pslg, r))
-                                         : fmt::format("the global bound {} (--max-area){}", bound,
-                                                       r >= 0 ? ", in " + region_text(ix.pslg, r)
-                                                       : cert.options.region_area_bounds ? std::string(", in no region") : std::string());
-    Violation v{Reason::AreaAboveBound,
-                fmt::format("{} has area about {}, above {} (exactly: doubled area > 2 x bound)", ix.tri_text(t), area, whose),
-                {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1};
-    v.region = r;
-    cert.add(std::move(v));
-  }
+  const double max_area = cert.report.max_area;
+  const std::vector<int>& triangle_region = cert.report.triangle_region;
+  // Over ranges of triangles (ranges.h); counters: [0] triangles checked.
+  const auto counts = over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!ix.tri_ok[t]) continue;
+      const int r = cert.options.region_area_bounds ? triangle_region[t] : -1;
+      const double regional = r >= 0 ? ix.pslg.regions[static_cast<std::size_t>(r)].max_area : 0;
+      // The smaller bound applies; on a tie, the region's is named.
+      const bool use_region = is_bound(regional) && (max_area <= 0 || regional <= max_area);
+      const double bound = use_region ? regional : max_area;
+      if (bound <= 0) continue;
+      ++found.counters[0];
+      const Tri& x = ix.T(t);
+      if (!area_above(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]), bound)) continue;
+      const Point &a = ix.P(x[0]), &b = ix.P(x[1]), &c = ix.P(x[2]);
+      const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
+      const std::string whose = use_region ? fmt::format("the bound {} of {}", bound, region_text(ix.pslg, r))
+                                           : fmt::format("the global bound {} (--max-area){}", bound,
+                                                         r >= 0 ? ", in " + region_text(ix.pslg, r)
+                                                         : cert.options.region_area_bounds ? std::string(", in no region") : std::string());
+      Violation v{Reason::AreaAboveBound,
+                  fmt::format("{} has area about {}, above {} (exactly: doubled area > 2 x bound)", ix.tri_text(t), area, whose),
+                  {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1};
+      v.region = r;
+      found.add(std::move(v));
+    }
+  });
+  cert.report.area_checked += counts[0];
 }
 
 }  // namespace

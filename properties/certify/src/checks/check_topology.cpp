@@ -6,6 +6,7 @@
 
 #include "../chain_embedding.h"
 #include "../passes.h"
+#include "../ranges.h"
 #include "lepp/certify/checks.h"
 
 namespace lepp::certify {
@@ -29,29 +30,30 @@ void check_unused_vertices(Certification& cert) {
 // boundary edges; these checks make that boundary the domain's (docs/CERTIFIER.md).
 void check_coverage(Certification& cert) {
   const MeshIndex& ix = cert.index;
-  std::unordered_map<std::uint64_t, std::array<int, 2>> halves_of_chain;  // chain edge -> (half a->b, half b->a)
-  for (std::size_t h = 0; h < ix.twin.size(); ++h) {
-    if (!ix.tri_ok[h / 3]) continue;
-    const int x = ix.from(static_cast<int>(h)), y = ix.to(static_cast<int>(h));
-    auto it = ix.chain_edge.find(edge_key(x, y));
-    if (it == ix.chain_edge.end()) {
-      if (ix.twin[h] == -1)
-        cert.add({Reason::BoundaryNotOnDomainBoundary,
-                  fmt::format("edge {}-{} {} {} of {} has no triangle on its other side but lies on no segment (a gap)", x, y, pt(ix.P(x)),
-                              pt(ix.P(y)), ix.tri_text(h / 3)),
-                  {static_cast<int>(h / 3)}, {{x, y}}, {x, y}, {}, -1});
-      continue;
+  // A boundary half-edge on no chain, in half-edge order over ranges.
+  over_ranges(cert, ix.twin.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    for (std::size_t h = begin; h < end; ++h) {
+      if (ix.twin[h] != -1 || !ix.tri_ok[h / 3] || ix.constrained_half[h]) continue;
+      const int x = ix.from(static_cast<int>(h)), y = ix.to(static_cast<int>(h));
+      found.add({Reason::BoundaryNotOnDomainBoundary,
+                 fmt::format("edge {}-{} {} {} of {} has no triangle on its other side but lies on no segment (a gap)", x, y, pt(ix.P(x)),
+                             pt(ix.P(y)), ix.tri_text(h / 3)),
+                 {static_cast<int>(h / 3)}, {{x, y}}, {x, y}, {}, -1});
     }
-    auto& pair = halves_of_chain.try_emplace(it->first, std::array<int, 2>{-1, -1}).first->second;
-    pair[x < y ? 0 : 1] = static_cast<int>(h);
-  }
+  });
+  // A chain edge's half-edges (x < y: half x->y, half y->x), the last by id if several.
+  auto halves_of_chain = [&ix](int x, int y) {
+    std::array<int, 2> pair{-1, -1};
+    for (auto [first, last] = ix.halves_on(x, y); first != last; ++first)
+      pair[ix.from(first->h) < ix.to(first->h) ? 0 : 1] = first->h;
+    return pair;
+  };
   for (std::size_t s = 0; s < ix.chains.size(); ++s) {
     const std::vector<int>& chain = ix.chains[s];
     const unsigned char sides = ix.domain.segment_sides[s];
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
       const int u = chain[k], w = chain[k + 1];
-      auto it = halves_of_chain.find(edge_key(u, w));
-      const std::array<int, 2> pair = it == halves_of_chain.end() ? std::array<int, 2>{-1, -1} : it->second;
+      const std::array<int, 2> pair = halves_of_chain(u, w);
       const int left = pair[u < w ? 0 : 1], right = pair[u < w ? 1 : 0];  // half u->w has its triangle on the left
       auto side = [&](int half, bool domain, const char* name) {
         if (domain && half < 0)

@@ -69,8 +69,12 @@ void index_chains(Certification& cert) {
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) ix.chain_edge[edge_key(chain[k], chain[k + 1])] = static_cast<int>(s);
     ix.chains[s] = std::move(chain);
   }
-  for (std::size_t h = 0; h < ix.constrained_half.size(); ++h)
-    if (ix.tri_ok[h / 3] && ix.chain_edge.count(edge_key(ix.from(static_cast<int>(h)), ix.to(static_cast<int>(h))))) ix.constrained_half[h] = 1;
+  // The half-edges of valid triangles on chain edges, looked up by edge (not every
+  // half-edge looked up in the hash).
+  for (const auto& [key, seg] : ix.chain_edge) {
+    const std::array<int, 2> e = edge_ends(key);
+    for (auto [first, last] = ix.halves_on(e[0], e[1]); first != last; ++first) ix.constrained_half[static_cast<std::size_t>(first->h)] = 1;
+  }
   cert.report.stats.constrained_edges = ix.chain_edge.size();
   // Sorted: the checks and reports that scan them do not depend on the hash's order.
   std::vector<std::pair<std::uint64_t, int>> keyed(ix.chain_edge.begin(), ix.chain_edge.end());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The mesh index's first layer: valid triangles, paired half-edges, merged duplicate vertices, longest edges.
 #include <algorithm>
+#include <utility>
 #include <unordered_set>
 
 #include "../exact.h"
@@ -13,6 +14,7 @@ void index_triangles(Certification& cert) {
   MeshIndex& ix = cert.index;
   const int n = static_cast<int>(ix.mesh.vertices.size());
   ix.tri_ok.assign(ix.mesh.triangles.size(), 0);
+  ix.ccw.assign(ix.mesh.triangles.size(), 0);
   over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     for (std::size_t t = begin; t < end; ++t) {
       const Tri& x = ix.T(t);
@@ -28,7 +30,9 @@ void index_triangles(Certification& cert) {
         continue;
       }
       ix.tri_ok[t] = 1;  // ranges write apart
-      if (exact::orient(ix.P(x[0]), ix.P(x[1]), ix.P(x[2])) <= 0)
+      if (exact::orient(ix.P(x[0]), ix.P(x[1]), ix.P(x[2])) > 0)
+        ix.ccw[t] = 1;
+      else
         found.add({Reason::NotCounterClockwise, fmt::format("{} is not strictly counter-clockwise", ix.tri_text(t)),
                    {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
     }
@@ -37,82 +41,127 @@ void index_triangles(Certification& cert) {
 
 void index_half_edges(Certification& cert) {
   MeshIndex& ix = cert.index;
+  using Half = MeshIndex::Half;
   // The half-edges grouped by edge, in the order of edge_key (smaller end, then larger),
   // each group's half-edges by id: bucketed by their smaller end (a counting sort, in
   // half-edge order), then each bucket, a vertex's few edges, sorted by the larger end.
-  // The same order as a sort of (key, id), in linear time (the sort was a sixth of certify).
-  struct Half {
-    int other;  // the larger end
-    int h;
+  // The same order as a sort of (key, id), in linear time. With threads, each range of
+  // triangles counts and places its own half-edges (a bucket holds range 0's, then range
+  // 1's, ..., so still by id), then each range of smaller ends sorts and pairs its buckets
+  // alone; the edges and violations merge in range order.
+  const std::size_t nv = ix.mesh.vertices.size(), nt = ix.mesh.triangles.size();
+  const std::size_t tri_ranges = range_count(cert, nt);
+  std::vector<std::vector<int>> next(tri_ranges);  // per range of triangles: counts per smaller end, then where its next half goes
+  auto each_half = [&ix](std::size_t begin, std::size_t end, auto&& f) {
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!ix.tri_ok[t]) continue;
+      const Tri& x = ix.T(t);
+      for (std::size_t i = 0; i < 3; ++i) f(static_cast<int>(3 * t + i), x[i], x[(i + 1) % 3]);
+    }
   };
-  const std::size_t nv = ix.mesh.vertices.size();
-  std::vector<int> bucket(nv + 1, 0);
-  for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t)
+  over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    std::vector<int>& count = next[found.range];
+    count.assign(nv, 0);
+    each_half(begin, end, [&](int, int a, int b) { ++count[static_cast<std::size_t>(std::min(a, b))]; });
+  });
+  ix.half_begin.assign(nv + 1, 0);
+  for (std::size_t v = 0, at = 0; v < nv; ++v) {
+    ix.half_begin[v] = static_cast<int>(at);
+    for (std::vector<int>& count : next) at += static_cast<std::size_t>(std::exchange(count[v], static_cast<int>(at)));
+    ix.half_begin[v + 1] = static_cast<int>(at);
+  }
+  ix.halves.resize(static_cast<std::size_t>(ix.half_begin[nv]));
+  over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    std::vector<int>& at = next[found.range];
+    each_half(begin, end, [&](int h, int a, int b) {
+      ix.halves[static_cast<std::size_t>(at[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), h};
+    });
+  });
+  next.clear();
+  ix.used.assign(nv, 0);
+  for (std::size_t t = 0; t < nt; ++t)
     if (ix.tri_ok[t])
-      for (int i = 0; i < 3; ++i) {
-        const int h = static_cast<int>(3 * t) + i;
-        ++bucket[static_cast<std::size_t>(std::min(ix.from(h), ix.to(h))) + 1];
-      }
-  for (std::size_t v = 0; v < nv; ++v) bucket[v + 1] += bucket[v];
-  std::vector<Half> halves(static_cast<std::size_t>(bucket[nv]));
-  {
-    std::vector<int> next(bucket.begin(), bucket.end() - 1);
-    for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t)
-      if (ix.tri_ok[t])
-        for (int i = 0; i < 3; ++i) {
-          const int h = static_cast<int>(3 * t) + i, a = ix.from(h), b = ix.to(h);
-          halves[static_cast<std::size_t>(next[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), h};
-        }
-  }
-  // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
-  // edges, the library's merge sort for a vertex of high degree (a fan's centre).
-  auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
-  for (std::size_t v = 0; v < nv; ++v) {
-    const auto first = halves.begin() + bucket[v], last = halves.begin() + bucket[v + 1];
-    if (last - first > 32) {
-      std::stable_sort(first, last, by_other);
-      continue;
-    }
-    for (auto it = first; it != last; ++it)
-      for (auto k = it; k != first && by_other(*k, *(k - 1)); --k) std::iter_swap(k, k - 1);
-  }
-  auto same_edge = [&](std::size_t i, std::size_t j) {
-    return halves[i].other == halves[j].other &&
-           std::min(ix.from(halves[i].h), ix.to(halves[i].h)) == std::min(ix.from(halves[j].h), ix.to(halves[j].h));
-  };
-  ix.twin.assign(ix.mesh.triangles.size() * 3, -1);
-  ix.used.assign(ix.mesh.vertices.size(), 0);
-  ix.edges.reserve(halves.size() / 2 + 1);
-  for (std::size_t i = 0; i < halves.size();) {
-    std::size_t j = i;
-    while (j < halves.size() && same_edge(i, j)) ++j;
-    const int a = ix.from(halves[i].h), b = ix.to(halves[i].h);
-    ix.edges.push_back({std::min(a, b), std::max(a, b)});
-    ix.used[static_cast<std::size_t>(a)] = ix.used[static_cast<std::size_t>(b)] = 1;
-    if (j - i > 2) {
-      Violation v{Reason::EdgeOverused, fmt::format("edge {}-{} {} {} lies in {} triangles (overlap)", a, b, pt(ix.P(a)), pt(ix.P(b)), j - i),
-                  {}, {{a, b}}, {a, b}, {}, -1};
-      for (std::size_t k = i; k < j; ++k) {
-        v.triangles.push_back(halves[k].h / 3);
-        ix.twin[static_cast<std::size_t>(halves[k].h)] = -2;
-      }
-      cert.add(std::move(v));
-    } else if (j - i == 2) {
-      const int h0 = halves[i].h, h1 = halves[i + 1].h;
-      if (ix.from(h0) == ix.from(h1)) {
-        cert.add({Reason::EdgeSameDirection,
-                  fmt::format("edge {}-{} {} {} is traversed the same way by triangles {} and {} (overlap or fold)", ix.from(h0), ix.to(h0),
-                              pt(ix.P(ix.from(h0))), pt(ix.P(ix.to(h0))), h0 / 3, h1 / 3),
-                  {h0 / 3, h1 / 3}, {{ix.from(h0), ix.to(h0)}}, {ix.from(h0), ix.to(h0)}, {}, -1});
-        ix.twin[static_cast<std::size_t>(h0)] = ix.twin[static_cast<std::size_t>(h1)] = -2;
+      for (int v : ix.T(t)) ix.used[static_cast<std::size_t>(v)] = 1;
+  ix.twin.assign(nt * 3, -1);
+  std::vector<std::vector<std::array<int, 2>>> range_edges(range_count(cert, nv));
+  over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
+    // edges, the library's merge sort for a vertex of high degree (a fan's centre).
+    auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
+    std::vector<std::array<int, 2>>& edges = range_edges[found.range];
+    edges.reserve(static_cast<std::size_t>(ix.half_begin[end] - ix.half_begin[begin]) / 2 + 1);
+    for (std::size_t v = begin; v < end; ++v) {
+      const auto first = ix.halves.begin() + ix.half_begin[v], last = ix.halves.begin() + ix.half_begin[v + 1];
+      if (last - first > 32) {
+        std::stable_sort(first, last, by_other);
       } else {
-        ix.twin[static_cast<std::size_t>(h0)] = h1;
-        ix.twin[static_cast<std::size_t>(h1)] = h0;
+        for (auto it = first; it != last; ++it)
+          for (auto k = it; k != first && by_other(*k, *(k - 1)); --k) std::iter_swap(k, k - 1);
+      }
+      for (auto i = first; i != last;) {
+        auto j = i;
+        while (j != last && j->other == i->other) ++j;
+        const int a = ix.from(i->h), b = ix.to(i->h);
+        edges.push_back({std::min(a, b), std::max(a, b)});
+        if (j - i > 2) {
+          Violation bad{Reason::EdgeOverused,
+                        fmt::format("edge {}-{} {} {} lies in {} triangles (overlap)", a, b, pt(ix.P(a)), pt(ix.P(b)), j - i), {}, {{a, b}},
+                        {a, b}, {}, -1};
+          for (auto k = i; k != j; ++k) {
+            bad.triangles.push_back(k->h / 3);
+            ix.twin[static_cast<std::size_t>(k->h)] = -2;
+          }
+          found.add(std::move(bad));
+        } else if (j - i == 2) {
+          const int h0 = i->h, h1 = (i + 1)->h;
+          if (ix.from(h0) == ix.from(h1)) {
+            found.add({Reason::EdgeSameDirection,
+                       fmt::format("edge {}-{} {} {} is traversed the same way by triangles {} and {} (overlap or fold)", ix.from(h0),
+                                   ix.to(h0), pt(ix.P(ix.from(h0))), pt(ix.P(ix.to(h0))), h0 / 3, h1 / 3),
+                       {h0 / 3, h1 / 3}, {{ix.from(h0), ix.to(h0)}}, {ix.from(h0), ix.to(h0)}, {}, -1});
+            ix.twin[static_cast<std::size_t>(h0)] = ix.twin[static_cast<std::size_t>(h1)] = -2;
+          } else {
+            ix.twin[static_cast<std::size_t>(h0)] = h1;
+            ix.twin[static_cast<std::size_t>(h1)] = h0;
+          }
+        }
+        i = j;
       }
     }
-    i = j;
-  }
+  });
+  std::size_t total = 0;
+  for (const auto& e : range_edges) total += e.size();
+  ix.edges.clear();
+  ix.edges.reserve(total);
+  for (const auto& e : range_edges) ix.edges.insert(ix.edges.end(), e.begin(), e.end());
 }
+
+namespace {
+
+// Whether two finite points are equal (as Point's == compares: -0 is 0): an open-addressing
+// table of ids, a power of two at least twice their number, probed linearly from the
+// hash's high bits (mixed once more: PointHash's low bits are the coordinates' low bits).
+bool any_duplicate_point(const std::vector<Point>& points) {
+  std::size_t size = 16;
+  int bits = 4;
+  while (size < 2 * points.size()) size *= 2, ++bits;
+  std::vector<int> slot(size, -1);
+  const PointHash hash;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
+    if (!finite(p)) continue;  // NaN is equal to nothing; the sort below skips it too
+    for (std::size_t k = (hash(p) * 0x9E3779B97F4A7C15ull) >> (64 - bits);; k = (k + 1) & (size - 1)) {
+      if (slot[k] < 0) {
+        slot[k] = static_cast<int>(i);
+        break;
+      }
+      if (points[static_cast<std::size_t>(slot[k])] == p) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
 
 // Mesh vertices with the same coordinates are a violation, except an exact
 // duplicate of an input vertex that no triangle uses: Triangle keeps an input's
@@ -120,13 +169,14 @@ void index_half_edges(Certification& cert) {
 // validate merges it). Such a copy is merged into the one in use, with a warning.
 void merge_duplicate_vertices(Certification& cert) {
   MeshIndex& ix = cert.index;
+  ix.merged.assign(ix.mesh.vertices.size(), 0);
+  if (!any_duplicate_point(ix.mesh.vertices)) return;  // the usual case, in linear time: nothing to merge or report
   std::vector<int> order;
   for (std::size_t i = 0; i < ix.mesh.vertices.size(); ++i)
     if (finite(ix.mesh.vertices[i])) order.push_back(static_cast<int>(i));  // NaN breaks the sort's order
   auto less = [&](int a, int b) { return ix.P(a).x < ix.P(b).x || (ix.P(a).x == ix.P(b).x && ix.P(a).y < ix.P(b).y); };
   std::sort(order.begin(), order.end(), less);
   std::unordered_set<Point, PointHash> input(ix.pslg.vertices.begin(), ix.pslg.vertices.end());
-  ix.merged.assign(ix.mesh.vertices.size(), 0);
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i + 1;
     while (j < order.size() && ix.P(order[j]) == ix.P(order[i])) ++j;
@@ -156,13 +206,23 @@ void merge_duplicate_vertices(Certification& cert) {
 void index_longest_edges(Certification& cert) {
   MeshIndex& ix = cert.index;
   ix.longest.assign(ix.mesh.triangles.size(), 0);
+  using exact::ErrorBounded;
   over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings&) {
     for (std::size_t t = begin; t < end; ++t) {
       if (!ix.tri_ok[t]) continue;
+      // Each edge's squared length with its error bound once, not once per comparison:
+      // their difference is the first filter of compare_squared_length, step for step.
+      std::array<ErrorBounded, 3> length;
+      for (int i = 0; i < 3; ++i) {
+        const Point &a = ix.P(ix.from(static_cast<int>(3 * t) + i)), &b = ix.P(ix.to(static_cast<int>(3 * t) + i));
+        const ErrorBounded ux = ErrorBounded(b.x) - ErrorBounded(a.x), uy = ErrorBounded(b.y) - ErrorBounded(a.y);
+        length[static_cast<std::size_t>(i)] = ux * ux + uy * uy;
+      }
       int best = 0;
       for (int i = 1; i < 3; ++i) {
         const int h = static_cast<int>(3 * t) + i, b = static_cast<int>(3 * t) + best;
-        if (ix.longer(ix.from(h), ix.to(h), ix.from(b), ix.to(b))) best = i;
+        const int s = (length[static_cast<std::size_t>(i)] - length[static_cast<std::size_t>(best)]).sign_or_undecided();
+        if (s == 2 || s == 0 ? ix.longer(ix.from(h), ix.to(h), ix.from(b), ix.to(b)) : s > 0) best = i;  // a tie: by ids
       }
       ix.longest[t] = static_cast<signed char>(best);  // ranges write apart
     }

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The certifier's half-edge index (properties/certify/src/index/index_half_edges.cpp)
+// built over ranges: for any thread count the same twins, the same edges in edge-key
+// order, the same half-edges per edge by id and the same used vertices, on a grid mesh
+// with triangles repeated (edges in three triangles) and removed (boundary edges).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "certification.h"
+#include "passes.h"
+
+namespace lepp::certify {
+namespace {
+
+Mesh damaged_grid(int n, std::uint64_t seed) {
+  Mesh m;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) m.vertices.push_back({static_cast<double>(i), static_cast<double>(j)});
+  auto id = [n](int i, int j) { return j * n + i; };
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  // Vertex ids shuffled, so that a triangle's ends fall in every range of vertices.
+  std::mt19937_64 rng(seed);
+  std::vector<int> perm(m.vertices.size());
+  for (std::size_t v = 0; v < perm.size(); ++v) perm[v] = static_cast<int>(v);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  std::vector<Point> moved(m.vertices.size());
+  for (std::size_t v = 0; v < perm.size(); ++v) moved[static_cast<std::size_t>(perm[v])] = m.vertices[v];
+  m.vertices = moved;
+  for (Tri& t : m.triangles)
+    for (int& v : t) v = perm[static_cast<std::size_t>(v)];
+  std::uniform_int_distribution<std::size_t> tri(0, m.triangles.size() - 1);
+  for (int k = 0; k < 6; ++k) m.triangles.push_back(m.triangles[tri(rng)]);
+  for (int k = 0; k < 6; ++k) m.triangles.erase(m.triangles.begin() + static_cast<std::ptrdiff_t>(tri(rng) % (m.triangles.size() - 1)));
+  return m;
+}
+
+struct Built {
+  std::vector<int> twin, half_begin;
+  std::vector<std::array<int, 2>> edges, halves;
+  std::vector<char> used;
+  std::size_t violations = 0;
+};
+
+Built build(const Mesh& mesh, int threads) {
+  Pslg pslg;
+  Options o;
+  o.threads = threads;
+  Report report;
+  Certification cert(pslg, mesh, o, report);
+  pass::index_triangles(cert);
+  pass::index_half_edges(cert);
+  const MeshIndex& ix = cert.index;
+  Built b{ix.twin, ix.half_begin, ix.edges, {}, ix.used, report.violations.size()};
+  for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h});
+  return b;
+}
+
+TEST(HalfEdgeIndex, SameForAnyThreadCountInEdgeKeyOrder) {
+  const Mesh mesh = damaged_grid(23, 20261206);
+  const Built one = build(mesh, 1);
+  EXPECT_GT(one.violations, 0u);  // the repeated triangles' edges
+  for (std::size_t i = 1; i < one.edges.size(); ++i)
+    ASSERT_LT(edge_key(one.edges[i - 1][0], one.edges[i - 1][1]), edge_key(one.edges[i][0], one.edges[i][1])) << i;
+  for (std::size_t h = 0; h < one.twin.size(); ++h)
+    if (one.twin[h] >= 0) ASSERT_EQ(one.twin[static_cast<std::size_t>(one.twin[h])], static_cast<int>(h)) << h;
+  for (int threads : {2, 3, 7}) {
+    const Built many = build(mesh, threads);
+    EXPECT_EQ(many.twin, one.twin) << threads;
+    EXPECT_EQ(many.edges, one.edges) << threads;
+    EXPECT_EQ(many.half_begin, one.half_begin) << threads;
+    EXPECT_EQ(many.halves, one.halves) << threads;
+    EXPECT_EQ(many.used, one.used) << threads;
+    EXPECT_EQ(many.violations, one.violations) << threads;
+  }
+}
+
+}  // namespace
+}  // namespace lepp::certify
