@@ -117,6 +117,45 @@ bool LineReader::next(std::vector<std::string_view>& tokens) {
   return !tokens.empty();
 }
 
+bool LineReader::plain(const char* kinds, std::int64_t* ints, double* reals) {
+  const char* const text = text_.c_str();
+  const std::size_t size = text_.size();
+  if (pos_ >= size) return false;
+  auto cls = [text](std::size_t i) { return kByteClasses.of[static_cast<unsigned char>(text[i])]; };
+  // A field ends at a space, the newline or the end of the text (not at a '#' or a NUL
+  // inside the text: those lines take the general path).
+  auto ends = [&](std::size_t i) { return cls(i) == kSpace || cls(i) == kNewline || i == size; };
+  std::size_t i = pos_;
+  for (const char* kind = kinds; *kind; ++kind) {
+    while (cls(i) == kSpace) ++i;
+    const std::size_t start = i;
+    if (*kind == 'i') {
+      const bool minus = text[i] == '-';
+      if (minus) ++i;
+      std::int64_t v = 0;
+      const std::size_t digits_from = i;
+      for (unsigned d; (d = static_cast<unsigned char>(text[i]) - static_cast<unsigned>('0')) <= 9; ++i)
+        v = v * 10 + static_cast<std::int64_t>(d);
+      if (i == digits_from || i - digits_from > 18 || !ends(i)) return false;
+      *ints++ = minus ? -v : v;
+    } else if (*kind == 'r') {
+      double v = 0;
+      const auto [end, error] = std::from_chars(text + i, text + size, v);
+      i = static_cast<std::size_t>(end - text);
+      if (error != std::errc() || i == start || !ends(i) || !std::isfinite(v)) return false;
+      *reals++ = v;
+    } else {
+      while (cls(i) == kToken) ++i;
+      if (i == start || !ends(i)) return false;
+    }
+  }
+  while (cls(i) == kSpace) ++i;
+  if (cls(i) != kNewline && i != size) return false;
+  ++line_;
+  pos_ = i + 1;  // past the newline (or the end), as next() leaves it
+  return true;
+}
+
 void LineReader::expect(std::vector<std::string_view>& tokens, const std::string& what) {
   if (!next(tokens)) fail(fmt::format("unexpected end of file: expected {}", what));
 }

@@ -22,6 +22,14 @@ class LineReader {
   // expect() for the i-th of n items ("triangle 5 of 9"): the message is formatted only
   // when the line is missing (a format per line was a tenth of reading a mesh).
   void expect_item(std::vector<std::string_view>& tokens, const char* item, std::size_t i, std::size_t n);
+  // The next line if it is a plain item line, read without splitting it into tokens:
+  // fields of the kinds in `kinds` ('i': an optional '-' and 1 to 18 digits, into ints;
+  // 'r': a finite decimal std::from_chars reads whole, into reals; '-': any token, not
+  // read), one each, separated by spaces, then the line's end. Anything else (a blank or
+  // comment line, a '#', a NUL, another field count, a number in another form) returns
+  // false with the reader unmoved: the caller then takes next() and the token readers,
+  // whose values (strtod's) and messages are the same as for any line.
+  bool plain(const char* kinds, std::int64_t* ints, double* reals);
   int line() const { return line_; }  // 1-based number of the last line returned
   const std::string& path() const { return path_; }
   // Lines left to read, an upper bound on how many items a header may promise.

@@ -33,8 +33,7 @@ std::size_t header_count(LineReader& in, std::string_view token, const char* wha
   return static_cast<std::size_t>(n);
 }
 
-int vertex_id(LineReader& in, std::string_view token, int first, std::size_t n) {
-  std::int64_t v = in.integer(token, "vertex id");
+int vertex_id(LineReader& in, std::int64_t v, int first, std::size_t n) {
   if (v < first || v >= first + static_cast<std::int64_t>(n))
     in.fail(fmt::format("vertex id {} out of range ({} to {})", v, first, first + static_cast<std::int64_t>(n) - 1));
   return static_cast<int>(v - first);
@@ -49,8 +48,7 @@ namespace {
 // An id that does not fit an int is recorded as failed; the sequential read then names it.
 struct DeferredIds {
   bool failed = false;
-  int operator()(LineReader& in, std::string_view token) {
-    const std::int64_t v = in.integer(token, "vertex id");
+  int operator()(LineReader&, std::int64_t v) {
     if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) failed = true;
     return static_cast<int>(v);
   }
@@ -83,16 +81,22 @@ std::vector<Tri> read_ele(const std::string& path, VertexId&& vertex) {
   std::int64_t attributes = t.size() >= 3 ? in.integer(t[2], "attribute count") : 0;
   if (attributes < 0 || attributes > 1000) in.fail("attribute count out of range");
   const std::size_t fields = 1 + static_cast<std::size_t>(corners + attributes);
+  // The plain line's kinds: the number and what follows the corners are not read.
+  const std::string kinds = "-iii" + std::string(fields - 4, '-');
+  std::int64_t corner[3];
+  Tri tri;
   std::vector<Tri> triangles;
   triangles.reserve(nt);
   for (std::size_t i = 0; i < nt; ++i) {
-    in.expect_item(t, "triangle", i + 1, nt);
-    in.fields(t, fields, fields, "triangle line (number, corners, attributes)");
-    // One statement each: the corners are read (and checked) in order.
-    const int a = vertex(in, t[1]);
-    const int b = vertex(in, t[2]);
-    const int c = vertex(in, t[3]);
-    triangles.push_back({a, b, c});
+    if (in.plain(kinds.c_str(), corner, nullptr)) {
+      for (std::size_t k = 0; k < 3; ++k) tri[k] = vertex(in, corner[k]);
+    } else {
+      in.expect_item(t, "triangle", i + 1, nt);
+      in.fields(t, fields, fields, "triangle line (number, corners, attributes)");
+      // Each corner read, then checked, in order: the first wrong one is named.
+      for (std::size_t k = 0; k < 3; ++k) tri[k] = vertex(in, in.integer(t[1 + k], "vertex id"));
+    }
+    triangles.push_back(tri);
   }
   return triangles;
 }
@@ -118,8 +122,8 @@ std::vector<ConstrainedEdge> read_poly_edges(const std::string& path, VertexId&&
     in.fields(t, 3, 4, "segment line (number, endpoint, endpoint, marker)");
     // Markers are not trusted to be segment ids: the certifier finds the
     // input segment of each constrained edge by geometry.
-    const int a = vertex(in, t[1]);
-    const int b = vertex(in, t[2]);
+    const int a = vertex(in, in.integer(t[1], "vertex id"));
+    const int b = vertex(in, in.integer(t[2], "vertex id"));
     edges.push_back({a, b, -1});
   }
   return edges;
@@ -176,7 +180,7 @@ Mesh read_mesh(const std::string& prefix, int threads) {
   std::vector<std::string> ignored;
   mesh.vertices = detail::read_node_numbered(prefix + ".node", ignored, first).vertices;
   const std::size_t n = mesh.vertices.size();
-  auto vertex = [&](LineReader& in, std::string_view token) { return vertex_id(in, token, first, n); };
+  auto vertex = [&](LineReader& in, std::int64_t v) { return vertex_id(in, v, first, n); };
   mesh.triangles = read_ele(prefix + ".ele", vertex);
   mesh.constrained_edges = read_poly_edges(prefix + ".poly", vertex);
   return mesh;

@@ -53,6 +53,8 @@ class Section {
   // Lines with more than `max` (default `want`) fields have extra fields.
   Section(LineReader& in, Leniency& lenient, std::size_t need, std::size_t want, const char* what, std::size_t max = 0)
       : in_(in), lenient_(lenient), need_(need), want_(want), max_(std::max(max, want)), what_(what) {}
+  // A line LineReader::plain read: exactly the announced fields, nothing to note.
+  void plain_line() { ++lines_; }
   // Checks the field count of the line just read.
   void line(const Tokens& t) {
     ++lines_;
@@ -116,8 +118,26 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
   pslg.vertex_lines.reserve(n);
   if (markers) pslg.vertex_markers.reserve(n);
   Section section(in, lenient, 3, fields, "vertex line (number, x, y, attributes, marker)");
+  // The plain line's kinds: the number, x, y, the attributes, the marker.
+  const std::string kinds = "irr" + std::string(static_cast<std::size_t>(attributes), 'r') + (markers ? "i" : "");
+  std::vector<double> reals(2 + static_cast<std::size_t>(attributes));
+  std::int64_t ints[2];
   Tokens t;
   for (std::size_t i = 0; i < n; ++i) {
+    if (in.plain(kinds.c_str(), ints, reals.data())) {  // the common line, read in one pass
+      section.plain_line();
+      const std::int64_t number = ints[0];
+      if (i == 0) {
+        if (number != 0 && number != 1) in.fail(fmt::format("first vertex is numbered {}; must be 0 or 1", number));
+        first = static_cast<int>(number);
+      } else if (number != first + static_cast<std::int64_t>(i)) {
+        in.fail(fmt::format("vertex number {} out of order (expected {})", number, first + static_cast<std::int64_t>(i)));
+      }
+      pslg.vertices.push_back({reals[0], reals[1]});
+      if (markers) pslg.vertex_markers.push_back(static_cast<int>(ints[1]));
+      pslg.vertex_lines.push_back(in.line());
+      continue;
+    }
     in.expect_item(t, "vertex", i + 1, n);
     section.line(t);
     std::int64_t number = in.integer(t[0], "vertex number");
