@@ -144,6 +144,9 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
     EXPECT_EQ(mesh_error(node, "2 3 0\n1 1 2 3\n2 1 3\n", threads),
               ".ele:3: triangle line (number, corners, attributes): expected 4 fields, found 3")
         << threads;
+    EXPECT_EQ(mesh_error(node, "2 3 1\n1 1 2 3 0.5\n2 1 3 4\n", threads),
+              ".ele:3: triangle line (number, corners, attributes): expected 5 fields, found 4")
+        << threads;
     EXPECT_EQ(mesh_error(node, "3 3 0\n1 1 2 3\n2 1 3 4\n", threads),
               ".ele:3: unexpected end of file: expected triangle 3 of 3")
         << threads;
