@@ -108,6 +108,8 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
   EXPECT_EQ(node_error(head + "4 1 1e400 0\n5 0 1 1\n"),
             ":6: y coordinate '1e400' is too large for a double (overflows)");
   EXPECT_EQ(node_error(head + "4x 1 1 0\n5 0 1 1\n"), ":6: vertex number '4x' is not an integer");
+  EXPECT_EQ(node_error(head + "4-1 1 0\n5 0 1 1\n"), ":6: vertex number '4-1' is not an integer");
+  EXPECT_EQ(node_error(head + "4 1.5-2 0\n5 0 1 1\n"), ":6: x coordinate '1.5-2' is not a number");
   EXPECT_EQ(node_error(head + "5 1 1 0\n5 0 1 1\n"), ":6: vertex number 5 out of order (expected 4)");
   EXPECT_EQ(node_error(head + "4 1 1 0\n5 0 1 99999999999999999999\n"),
             ":7: boundary marker '99999999999999999999' is out of range");
@@ -140,6 +142,9 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
         << threads;
     EXPECT_EQ(mesh_error(node, "2 3 0\n1 1 2 3\n2 1 3 4 5\n", threads),
               ".ele:3: triangle line (number, corners, attributes): expected at most 4 fields, found 5 (extra fields)")
+        << threads;
+    EXPECT_EQ(mesh_error(node, "2 3 0\n1 1 2 3\n2 1 3-4\n", threads),
+              ".ele:3: triangle line (number, corners, attributes): expected 4 fields, found 3")
         << threads;
     EXPECT_EQ(mesh_error(node, "2 3 0\n1 1 2 3\n2 1 3\n", threads),
               ".ele:3: triangle line (number, corners, attributes): expected 4 fields, found 3")
