@@ -166,13 +166,17 @@ void LineReader::expect_item(std::vector<std::string_view>& tokens, const char* 
 
 std::size_t LineReader::lines_left() const {
   if (pos_ >= text_.size()) return 0;
-  // The newlines counted by memchr's word-wide search (std::count went byte by byte).
+  // The newlines counted 64 bytes at a time in a byte counter, a loop the compiler turns
+  // into vector compares (memchr stopped at every line: a header's check read the file
+  // at a few instructions a byte).
   std::size_t lines = 1;
   const char *at = text_.data() + pos_, *const end = text_.data() + text_.size();
-  while (const void* newline = std::memchr(at, '\n', static_cast<std::size_t>(end - at))) {
-    ++lines;
-    at = static_cast<const char*>(newline) + 1;
+  for (; end - at >= 64; at += 64) {
+    unsigned char block = 0;
+    for (int k = 0; k < 64; ++k) block = static_cast<unsigned char>(block + (at[k] == '\n'));
+    lines += block;
   }
+  for (; at != end; ++at) lines += *at == '\n';
   return lines;
 }
 

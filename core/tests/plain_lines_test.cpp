@@ -5,6 +5,7 @@
 // message, whichever path a line takes. Each file mixes lines of both kinds.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -158,6 +159,22 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
     EXPECT_EQ(mesh_error(node, std::string("2 3 0\n1 1 2 3\n2 1 3 4\0\n", 23), threads),
               ".ele:3: vertex id '4\\x00' is not an integer")
         << threads;
+  }
+}
+
+// A header's count against the lines left, counted 64 bytes at a time and then byte by
+// byte: files of every length from 0 to 160 bytes after the header, newlines at varying
+// places; the count in the message is the file's newlines after the header, plus one
+// (none when nothing follows the header).
+TEST_F(PlainLines, LinesLeftCountsEveryNewline) {
+  const std::string node = "1 2 0 0\n1 0 0\n";
+  for (std::size_t length = 0; length <= 160; ++length) {
+    std::string rest;
+    for (std::size_t k = 0; k < length; ++k) rest += (k * 7 + length) % 5 == 0 ? '\n' : '#';
+    const std::size_t left = rest.empty() ? 0 : 1 + static_cast<std::size_t>(std::count(rest.begin(), rest.end(), '\n'));
+    EXPECT_EQ(mesh_error(node, "999 3 0\n" + rest, 1),
+              ".ele:1: triangle count is 999 but the file has only " + std::to_string(left) + " more lines")
+        << length;
   }
 }
 
