@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -160,6 +162,38 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
               ".ele:3: vertex id '4\\x00' is not an integer")
         << threads;
   }
+}
+
+// A large mesh broken far from the start (the last .node line, the last .ele line, a
+// line in the middle, both files): one thread and two give the same first error.
+TEST_F(PlainLines, LateErrorsInLargeFilesAreTheSameOnAnyThreadCount) {
+  const int n = 3000;  // vertices in a row of quads, 2 (n/2 - 1) triangles
+  std::string node = std::to_string(n) + " 2 0 1\n", ele = std::to_string(n - 2) + " 3 0\n";
+  for (int i = 0; i < n; ++i) node += std::to_string(i + 1) + " " + std::to_string(i / 2) + ".125 " + std::to_string(i % 2) + " 0\n";
+  for (int q = 0; q < n / 2 - 1; ++q) {
+    const int a = 2 * q + 1, b = a + 2, c = a + 3, d = a + 1;
+    ele += std::to_string(2 * q + 1) + " " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+    ele += std::to_string(2 * q + 2) + " " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+  }
+  auto replace_line = [](std::string text, int line, const std::string& with) {
+    std::size_t at = 0;
+    for (int k = 1; k < line; ++k) at = text.find('\n', at) + 1;
+    return text.replace(at, text.find('\n', at) - at, with);
+  };
+  EXPECT_EQ(mesh_error(node, ele, 1), "");
+  const std::string node_last = replace_line(node, n + 1, "3000 1 1 q");
+  const std::string node_mid = replace_line(node, 1500, "1499 1e400 0 0");
+  const std::string ele_last = replace_line(ele, n - 1, "2998 1 2 3001");
+  const std::string ele_mid = replace_line(ele, 1700, "1699 1 2");
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {node_last, ele, ".node:3001: boundary marker 'q' is not an integer"},
+      {node_mid, ele, ".node:1500: x coordinate '1e400' is too large for a double (overflows)"},
+      {node, ele_last, ".ele:2999: vertex id 3001 out of range (1 to 3000)"},
+      {node, ele_mid, ".ele:1700: triangle line (number, corners, attributes): expected 4 fields, found 3"},
+      {node_last, ele_mid, ".node:3001: boundary marker 'q' is not an integer"},
+  };
+  for (const auto& [n_text, e_text, error] : cases)
+    for (int threads : {1, 2, 0}) EXPECT_EQ(mesh_error(n_text, e_text, threads), error) << threads;
 }
 
 // A header's count against the lines left, counted 64 bytes at a time and then byte by
