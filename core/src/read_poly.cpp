@@ -124,34 +124,30 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
   std::int64_t ints[2];
   Tokens t;
   for (std::size_t i = 0; i < n; ++i) {
-    if (in.plain(kinds.c_str(), ints, reals.data())) {  // the common line, read in one pass
-      section.plain_line();
-      const std::int64_t number = ints[0];
+    // The vertex's number: the first 0 or 1, each next one more.
+    auto numbered = [&](std::int64_t number) {
       if (i == 0) {
         if (number != 0 && number != 1) in.fail(fmt::format("first vertex is numbered {}; must be 0 or 1", number));
         first = static_cast<int>(number);
       } else if (number != first + static_cast<std::int64_t>(i)) {
         in.fail(fmt::format("vertex number {} out of order (expected {})", number, first + static_cast<std::int64_t>(i)));
       }
+    };
+    if (in.plain(kinds.c_str(), ints, reals.data())) {  // the common line, read in one pass
+      section.plain_line();
+      numbered(ints[0]);
       pslg.vertices.push_back({reals[0], reals[1]});
       if (markers) pslg.vertex_markers.push_back(static_cast<int>(ints[1]));
-      pslg.vertex_lines.push_back(in.line());
-      continue;
+    } else {
+      in.expect_item(t, "vertex", i + 1, n);
+      section.line(t);
+      numbered(in.integer(t[0], "vertex number"));  // checked before the coordinates are read
+      pslg.vertices.push_back({in.real(t[1], "x coordinate"), in.real(t[2], "y coordinate")});
+      const std::size_t present = std::min(t.size(), fields);
+      for (std::size_t a = 3; a < std::min(present, 3 + static_cast<std::size_t>(attributes)); ++a) in.real(t[a], "attribute");
+      if (markers)
+        pslg.vertex_markers.push_back(present == fields ? static_cast<int>(in.integer(t[fields - 1], "boundary marker")) : 0);
     }
-    in.expect_item(t, "vertex", i + 1, n);
-    section.line(t);
-    std::int64_t number = in.integer(t[0], "vertex number");
-    if (i == 0) {
-      if (number != 0 && number != 1) in.fail(fmt::format("first vertex is numbered {}; must be 0 or 1", number));
-      first = static_cast<int>(number);
-    } else if (number != first + static_cast<std::int64_t>(i)) {
-      in.fail(fmt::format("vertex number {} out of order (expected {})", number, first + static_cast<std::int64_t>(i)));
-    }
-    pslg.vertices.push_back({in.real(t[1], "x coordinate"), in.real(t[2], "y coordinate")});
-    const std::size_t present = std::min(t.size(), fields);
-    for (std::size_t a = 3; a < std::min(present, 3 + static_cast<std::size_t>(attributes)); ++a) in.real(t[a], "attribute");
-    if (markers)
-      pslg.vertex_markers.push_back(present == fields ? static_cast<int>(in.integer(t[fields - 1], "boundary marker")) : 0);
     pslg.vertex_lines.push_back(in.line());
   }
   section.done();

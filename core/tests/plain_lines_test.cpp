@@ -114,6 +114,7 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
   EXPECT_EQ(node_error(head + "4-1 1 0\n5 0 1 1\n"), ":6: vertex number '4-1' is not an integer");
   EXPECT_EQ(node_error(head + "4 1.5-2 0\n5 0 1 1\n"), ":6: x coordinate '1.5-2' is not a number");
   EXPECT_EQ(node_error(head + "5 1 1 0\n5 0 1 1\n"), ":6: vertex number 5 out of order (expected 4)");
+  EXPECT_EQ(node_error(head + "5 1.5x 1 0\n5 0 1 1\n"), ":6: vertex number 5 out of order (expected 4)");
   EXPECT_EQ(node_error(head + "4 1 1 0\n5 0 1 99999999999999999999\n"),
             ":7: boundary marker '99999999999999999999' is out of range");
   EXPECT_EQ(node_error(head + "4 1 1\n5 0 1 1\n6 0 0 0\n"), ":8: unexpected content after the last vertex");
