@@ -86,10 +86,10 @@ Decision decide_without(const std::string& statement, const std::string& dropped
     return d;
   }
   if (!row->sampled.empty() && dropped.empty()) return sampled(*row, d, opt);
-  if (!row->via.empty()) {
-    Decision lemma = decide(row->via, opt);
+  for (const std::string& via : row->via) {
+    Decision lemma = decide(via, opt);
     if (lemma.outcome != Outcome::Proved) {
-      d.note = "its lemma " + row->via + " is not proved: " + decided_cell(lemma);
+      d.note = "its lemma " + via + " is not proved: " + decided_cell(lemma);
       return d;
     }
   }

@@ -36,14 +36,15 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
   };
   for (const Decision& d : decisions) {
     const Row* row = find_row(d.statement);
-    if (row && !row->via.empty() && d.outcome == Outcome::Proved && !theorems::find_statement(row->via) &&
-        !listed(row->via)) {
-      Decision lemma;
-      lemma.statement = row->via;
-      lemma.outcome = Outcome::Proved;
-      lemma.method = "Z3";
-      all.push_back(lemma);
-    }
+    if (row && d.outcome == Outcome::Proved)
+      for (const std::string& via : row->via) {
+        if (theorems::find_statement(via) || listed(via)) continue;
+        Decision lemma;
+        lemma.statement = via;
+        lemma.outcome = Outcome::Proved;
+        lemma.method = "Z3";
+        all.push_back(lemma);
+      }
     if (!listed(d.statement)) all.push_back(d);
   }
   for (const Decision& d : all) {

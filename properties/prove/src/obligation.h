@@ -69,9 +69,9 @@ struct Row {
   std::string not_decided;  // non-empty: not first-order over the reals, why
   std::string sampled;      // corpus file of the sampled counterexample that refutes the row
   std::string known_extreme;  // the configuration the tight constant approaches, if known
-  // A proved row whose claim stands in for some hypotheses here (the proof is the
+  // Proved rows (lemmas) whose claims stand in for some hypotheses here (the proof is the
   // composition: the lemma's hypotheses give its claim, which with the rest gives ours).
-  std::string via;
+  std::vector<std::string> via;
   // QEPCAD B: write its input file for CI (the rows it answers within seconds, measured:
   // a four-variable CAD of the other rows runs for minutes), and try it before Z3
   // (the rows nlsat does not decide in minutes).

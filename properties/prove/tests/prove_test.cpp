@@ -39,6 +39,9 @@ const char* kProvedRows[] = {
     "Lemma8.AcuteBelowAlphaLimitOwnDistanceAbove129",
     "Lemma8.AcuteBelow30OwnDistanceAbove096",
     "Lemma8.ObtuseBelow14DistanceAboveBC",
+    "Lemma8.MeshVertexOutsideObtuseCircumcircle",
+    "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066",
+    "Lemma8.ObtuseBelow30DistanceAtLeastHalf",
     "Lemma8.ObtuseAbove14BetaAbove28",
     "Corollary12.CentroidInsideBetterTriangleWhenItIsTaller",
     "Theorem14.CentroidOnTerminalEdgeIffEqualHeights",
@@ -66,13 +69,19 @@ TEST_P(ProvedRow, ProvedAndRefutedWithoutItsEssentialHypothesis) {
   // The counterexample is rejected by the row's check function (hypothesis and
   // conclusion both fail), except for Theorem 2's equality case and Lemma 8 (c),
   // whose obligations have no check function taking a grid configuration, and the lemma of
-  // the narrowed Remark 13 rows (no row of the table); Remark 13 (2)'s check reads alpha0 > 30
+  // the narrowed Remark 13 rows and of Lemma 8 (b)(ii), (b)(iii) (no rows of the table); Lemma 8 (b)(ii)
+  // and (b)(iii), proved on the triangle alone (Theorem 2 stands in for D, the lemma for the free vertex),
+  // whose counterexample without Theorem 2's bound has no Delaunay partner D to make a mesh for the
+  // check (Theorem 2 says so); Remark 13 (2)'s check reads alpha0 > 30
   // as "not applicable" and compares no distance (Row::negative_check), so there Z3's exact
   // model alone refutes (no other dropped hypothesis gives a point it rejects: without Delaunay or the
   // frame the claim still holds; without the others Z3's points leave the check's case).
   bool has_check = statement != "Theorem2.EqualityCaseCocircularWithEquilateral" &&
                    statement != "Lemma8.ObtuseAbove14BetaAbove28" && statement != "Remark13.WorseTriangleByTangents" &&
-                   statement != "Remark13.NonObtuseCaseDistanceAbove061";
+                   statement != "Remark13.NonObtuseCaseDistanceAbove061" &&
+                   statement != "Lemma8.MeshVertexOutsideObtuseCircumcircle" &&
+                   statement != "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066" &&
+                   statement != "Lemma8.ObtuseBelow30DistanceAtLeastHalf";
   if (has_check) EXPECT_TRUE(n.confirmed) << n.counterexample << ": " << n.note;
 }
 
