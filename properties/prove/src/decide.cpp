@@ -14,6 +14,8 @@
 namespace lepp::prove {
 namespace {
 
+bool same(const theorems::GridPoint& a, const theorems::GridPoint& b) { return a.x == b.x && a.y == b.y; }
+
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -46,6 +48,10 @@ Decision sampled(const Row& row, Decision d, const Options& opt) {
       d.confirmed = true;
       d.counterexample = "`" + path.substr(path.rfind('/') + 1) + "`: " + theorems::show(pair.quad) + " in a mesh of " +
                          std::to_string(pts.size()) + " points";
+      const theorems::TerminalQuad& q = pair.quad;
+      d.points = {{"A", q.A.x, q.A.y}, {"B", q.B.x, q.B.y}, {"C", q.C.x, q.C.y}, {"D", q.D.x, q.D.y}};
+      for (const theorems::GridPoint& p : pts)
+        if (!(same(p, q.A) || same(p, q.B) || same(p, q.C) || same(p, q.D))) d.points.push_back({"mesh vertex", p.x, p.y});
       return d;
     }
   }
@@ -130,6 +136,10 @@ Decision decide_without(const std::string& statement, const std::string& dropped
   }
   d.outcome = Outcome::Refuted;
   d.counterexample = s.config->show();
+  d.points = {{"B", 0, 0}, {"A", s.config->L, 0}};
+  const char* names[] = {"C", "D", "V"};
+  for (std::size_t i = 0; 2 * i + 1 < s.config->v.size() && i < 3; ++i)
+    d.points.push_back({names[i], s.config->v[2 * i], s.config->v[2 * i + 1]});
   if (row->check && (dropped.empty() || row->negative_check)) {
     theorems::Verdict v = row->check(*s.config, !dropped.empty());
     // The row's own check must reject the point: as written (hypothesis met, conclusion

@@ -200,3 +200,43 @@ TEST(ProveFiles, CommittedObligationsAreCurrent) {
 }
 
 }  // namespace
+
+// A refuted row's picture is written, linked from its cell, and names the counterexample's
+// exact points (Lemma 4's isosceles counterexample and a sampled mesh's pair).
+TEST(ProvePictures, WrittenLinkedAndNameTheCounterexamplesPoints) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "lepp_prove_pictures_test";
+  fs::remove_all(dir);
+  std::vector<Decision> decisions = {decide("Lemma4.BisectionImprovesTBLeavesObtuseTA", options()),
+                                     decide("Lemma8.AcuteBelow30DistanceAbove096", options()),
+                                     decide("Lemma7.ObtuseAlpha1AboveAlpha0", options())};
+  ASSERT_EQ(decisions[0].outcome, Outcome::Refuted);
+  ASSERT_EQ(decisions[1].outcome, Outcome::Refuted);
+  ASSERT_EQ(decisions[2].outcome, Outcome::Proved);
+  std::string error;
+  ASSERT_TRUE(write_counterexample_pictures(dir.string(), "theorems", decisions, &error)) << error;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Decision& d = decisions[i];
+    EXPECT_EQ(d.picture, "theorems/" + picture_name(d.statement));
+    EXPECT_NE(decided_cell(d).find("[picture](theorems/" + picture_name(d.statement) + ")"), std::string::npos);
+    std::ifstream in(dir / picture_name(d.statement));
+    ASSERT_TRUE(in) << picture_name(d.statement);
+    std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(svg.find("<svg"), std::string::npos);
+    ASSERT_GE(d.points.size(), 3u);
+    for (const NamedPoint& p : d.points)
+      EXPECT_NE(svg.find(p.name + " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"), std::string::npos)
+          << d.statement << ": " << p.name;
+    // The points are those of the counterexample the table prints.
+    for (const NamedPoint& p : d.points)
+      if (p.name != "mesh vertex")
+        EXPECT_NE(d.counterexample.find(std::to_string(p.x) + ", " + std::to_string(p.y)), std::string::npos)
+            << d.counterexample << " vs " << p.name;
+  }
+  // A proved row has no picture.
+  EXPECT_TRUE(decisions[2].picture.empty());
+  EXPECT_FALSE(fs::exists(dir / picture_name(decisions[2].statement)));
+  Decision none;
+  EXPECT_THROW(counterexample_svg(none), std::invalid_argument);
+  fs::remove_all(dir);
+}
