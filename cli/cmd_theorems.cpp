@@ -103,11 +103,12 @@ when it has one, turned into an exact integer-grid configuration that the
 row's own check function (the one its sampling property calls) rejects;
 **not decided** with the reason otherwise (not first-order over the reals, or
 the time limit). Rows refuted by a sampled mesh counterexample stay refuted by
-it, re-checked. Each decided obligation is written to
+it, re-checked; each refuted row's counterexample is also drawn (`--pictures`,
+`docs/theorems/`, linked from its cell). Each decided obligation is written to
 `corpus/theorems/proofs/` (SMT-LIB 2, and QEPCAD B input where it has at most
 four variables) and re-checked in CI by Debian's `z3` and `qepcad`
 (`scripts/ci.d/50-proofs.sh`). Every proof is re-run by one command:
-`lepp theorems --long --prove --tight --out docs/THEOREMS.md --write-proofs corpus/theorems/proofs`.
+`lepp theorems --long --prove --tight --out docs/THEOREMS.md --write-proofs corpus/theorems/proofs --pictures docs/theorems`.
 
 )";
 

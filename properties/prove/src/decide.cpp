@@ -188,6 +188,32 @@ std::vector<std::string> hypotheses(const std::string& statement) {
   return out;
 }
 
+std::vector<std::vector<std::string>> x1_cuts(const std::string& statement) {
+  const Row* row = find_row(statement);
+  return row ? row->x1_cuts : std::vector<std::vector<std::string>>{};
+}
+
+std::string slice_gap(const std::vector<std::string>& cuts) {
+  z3::context ctx;
+  Obligation o(ctx);
+  o.x1_cuts = {cuts};
+  try {
+    for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+      z3::solver s(ctx);
+      s.add(ctx.real_val(cuts[j].c_str()) >= ctx.real_val(cuts[j + 1].c_str()));
+      if (s.check() != z3::unsat) return "cuts not increasing: " + cuts[j] + ", " + cuts[j + 1];
+    }
+    z3::expr any = ctx.bool_val(false);
+    for (const z3::expr& slice : slices(o, 0)) any = any || slice;
+    z3::solver s(ctx);
+    s.add(!any);
+    if (s.check() != z3::unsat) return "some x1 is in no slice: " + s.get_model().to_string();
+  } catch (const z3::exception& e) {
+    return std::string("not a rational cut: ") + e.msg();
+  }
+  return "";
+}
+
 std::string essential_hypothesis(const std::string& statement) {
   const Row* row = find_row(statement);
   return row ? row->essential : "";

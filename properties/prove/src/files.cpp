@@ -72,8 +72,13 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
     for (std::size_t i = 0; i < parts.size(); ++i) {
       // A refuted row's one check of the whole claim runs nlsat in its own order.
       std::string tactic = expected == "unsat" ? nlsat_tactic_smt2(o, i) : std::string(kTactic);
-      body += "(push 1)\n(assert " + (!parts[i]).to_string() + ")\n(check-sat-using " + tactic + ")\n(pop 1)\n";
-      answers += (answers.empty() ? "" : ",") + expected;
+      // A proved conjunct split into slices of x1 (Row::x1_cuts): one check per slice.
+      for (const z3::expr& slice : expected == "unsat" ? slices(o, i) : std::vector<z3::expr>{ctx.bool_val(true)}) {
+        body += "(push 1)\n";
+        if (!slice.is_true()) body += "(assert " + slice.to_string() + ")\n";
+        body += "(assert " + (!parts[i]).to_string() + ")\n(check-sat-using " + tactic + ")\n(pop 1)\n";
+        answers += (answers.empty() ? "" : ",") + expected;
+      }
     }
     expected = answers;
     std::ostringstream smt;

@@ -551,6 +551,11 @@ std::vector<Row> make_rows() {
       o.hyp("alpha0 <= 30", c.le30());
       if (which == 0) o.hyp("obtuse", c.obtuse());
       if (which == 1) o.hyp("not obtuse", !c.obtuse());
+      // (1) with Theorem 2 (proved) as a lemma: the angle at C is at most 120. Implied by the
+      // pair's hypotheses, so redundant for the truth of the row, but it cuts off the flat
+      // obtuse triangles nlsat otherwise explores (d(Q) to C: beyond minutes without it).
+      if (which == 0)
+        o.hyp("angle at C <= 120 (Theorem 2)", c.dot() >= 0 || 4 * c.dot() * c.dot() <= c.ca2() * c.bc2());
       expr qx = p.qx(), qy = p.qy(), r2 = k * k * c.bc2();
       auto d2 = [&](const expr& x, const expr& y) { return (qx - x) * (qx - x) + (qy - y) * (qy - y); };
       expr zero = o.num("0"), one = o.num("1");
@@ -564,15 +569,22 @@ std::vector<Row> make_rows() {
     r.essential = "alpha0 <= 30";
     // The check reads alpha0 > 30 as "not applicable" and compares no distance: a negative
     // test's counterexample is Z3's exact model alone.
-    if (which == 1) r.negative_check = false;
+    if (which >= 0) r.negative_check = false;
     if (which >= 0) {
       r.via = {"Remark13.WorseTriangleByTangents"};
+      if (which == 0) r.via.push_back("Theorem2.TerminalTrianglesLargestAngleAtMost120");
       r.note = "with the lemma Remark13.WorseTriangleByTangents (proved first): ABC the worse triangle gives "
-               "tan(DAB) and tan(DBA) >= tan(alpha0), which stands in for it";
+               "tan(DAB) and tan(DBA) >= tan(alpha0), which stands in for it" +
+               std::string(which == 0 ? "; and Theorem 2 (proved): the angle at C is at most 120" : "");
     }
     // Conjuncts d(Q) to B, A, C, D: the one to B is decided in seconds in the order of seed 4
     // and not within minutes in nlsat's own order.
     if (which == 1) r.nlsat_seeds = {4, 0, 0, 0};
+    // (1): d(Q) to B and to A in seed 4's order (about 10 s and 0.1 s; beyond minutes in nlsat's
+    // own), d(Q) to C and to D in four slices of x1 each (one about 10 s, the others under a
+    // second; whole, beyond minutes).
+    if (which == 0) r.nlsat_seeds = {4, 4, 0, 0};
+    if (which == 0) r.x1_cuts = {{}, {}, {"3/10", "35/100", "4/10"}, {"3/10", "35/100", "4/10"}};
     r.known_extreme = which == 1 ? "the mirror kite of two isosceles 30-75-75 triangles (sqrt(6)/4 = 0.6124)"
                       : which == 0 ? "a right ABC with |AD| = |AB| (0.4 sqrt(3) = 0.6928)"
                                    : "";

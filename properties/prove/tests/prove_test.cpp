@@ -47,6 +47,7 @@ const char* kProvedRows[] = {
     "Theorem14.CentroidOnTerminalEdgeIffEqualHeights",
     "Remark13.WorseTriangleByTangents",
     "Remark13.NonObtuseCaseDistanceAbove061",
+    "Remark13.ObtuseCaseDistanceAbove069",
 };
 
 std::string test_name(const std::string& statement) {
@@ -72,13 +73,14 @@ TEST_P(ProvedRow, ProvedAndRefutedWithoutItsEssentialHypothesis) {
   // the narrowed Remark 13 rows and of Lemma 8 (b)(ii), (b)(iii) (no rows of the table); Lemma 8 (b)(ii)
   // and (b)(iii), proved on the triangle alone (Theorem 2 stands in for D, the lemma for the free vertex),
   // whose counterexample without Theorem 2's bound has no Delaunay partner D to make a mesh for the
-  // check (Theorem 2 says so); Remark 13 (2)'s check reads alpha0 > 30
+  // check (Theorem 2 says so); Remark 13 (1)'s and (2)'s checks read alpha0 > 30
   // as "not applicable" and compares no distance (Row::negative_check), so there Z3's exact
-  // model alone refutes (no other dropped hypothesis gives a point it rejects: without Delaunay or the
+  // model alone refutes (for (2) no other dropped hypothesis gives a point it rejects: without Delaunay or the
   // frame the claim still holds; without the others Z3's points leave the check's case).
   bool has_check = statement != "Theorem2.EqualityCaseCocircularWithEquilateral" &&
                    statement != "Lemma8.ObtuseAbove14BetaAbove28" && statement != "Remark13.WorseTriangleByTangents" &&
                    statement != "Remark13.NonObtuseCaseDistanceAbove061" &&
+                   statement != "Remark13.ObtuseCaseDistanceAbove069" &&
                    statement != "Lemma8.MeshVertexOutsideObtuseCircumcircle" &&
                    statement != "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066" &&
                    statement != "Lemma8.ObtuseBelow30DistanceAtLeastHalf";
@@ -239,4 +241,22 @@ TEST(ProvePictures, WrittenLinkedAndNameTheCounterexamplesPoints) {
   Decision none;
   EXPECT_THROW(counterexample_svg(none), std::invalid_argument);
   fs::remove_all(dir);
+}
+
+// A conjunct decided in slices of x1 is proved only if the slices cover every x1: each
+// row's cuts are checked (increasing rationals, their slices' disjunction valid), and a
+// list that leaves a gap or is out of order is rejected.
+TEST(ProveRows, SlicesCoverEveryX1) {
+  int split = 0;
+  for (const std::string& s : row_statements())
+    for (const auto& cuts : x1_cuts(s)) {
+      if (cuts.empty()) continue;
+      ++split;
+      EXPECT_EQ(slice_gap(cuts), "") << s;
+    }
+  EXPECT_GE(split, 2);  // Remark 13 (1): d(Q) to C and to D
+  EXPECT_EQ(slice_gap({"3/10"}), "");
+  EXPECT_NE(slice_gap({"4/10", "3/10"}), "");
+  EXPECT_NE(slice_gap({"3/10", "3/10"}), "");
+  EXPECT_NE(slice_gap({"x"}), "");
 }

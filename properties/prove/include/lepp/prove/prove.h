@@ -66,6 +66,13 @@ Decision decide_without(const std::string& statement, const std::string& dropped
 // The hypothesis a negative test drops (the row's essential one).
 std::string essential_hypothesis(const std::string& statement);
 
+// --- Slices: a conjunct may be decided in slices of x1 (x1 <= c1, c1 <= x1 <= c2, ...,
+// x1 >= cn). The row's cut points per conjunct of its claim (empty: not split), and why a
+// list of cuts would not cover every x1 ("" when it does: the cuts are rationals in
+// increasing order and Z3 proves the slices' disjunction valid).
+std::vector<std::vector<std::string>> x1_cuts(const std::string& statement);
+std::string slice_gap(const std::vector<std::string>& cuts);
+
 // --- Obligation files (corpus/theorems/proofs/): SMT-LIB 2 for every algebraic
 // row, QEPCAD B input for the rows with few enough variables. Each file names the
 // answer lepp recorded (unsat = proved, sat = refuted).
