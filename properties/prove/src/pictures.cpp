@@ -81,8 +81,15 @@ bool write_counterexample_pictures(const std::string& dir, const std::string& li
   for (Decision& d : decisions) {
     if (d.outcome != Outcome::Refuted || d.points.empty()) continue;
     std::string name = picture_name(d.statement);
+    std::string svg;
+    try {
+      svg = counterexample_svg(d);
+    } catch (const std::exception& e) {  // a drawing the renderer refuses: name the row
+      if (error) *error = name + ": " + e.what();
+      return false;
+    }
     std::ofstream out(dir + "/" + name);
-    if (!out || !(out << counterexample_svg(d))) {
+    if (!out || !(out << svg)) {
       if (error) *error = "cannot write " + dir + "/" + name;
       return false;
     }
