@@ -197,5 +197,24 @@ TEST(ProgramMesh, SinglePrecisionFollowedAtFloatRounding) {
   EXPECT_GE(runs, 4);
 }
 
+
+// A double program's final mesh can be Delaunay again (later insertions flipped a
+// near tie back) and name nothing: on corpus/hostile/near-touching at 20 degrees
+// the exact chain of the double-flips mesher ends at a step no rule fits; the mesh
+// with flips decided in double takes it to the trace's end with the seeded names.
+TEST(ProgramMesh, ChainLostOnTheExactMeshFollowedWithFlipsDecidedInDouble) {
+  const MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/corpus/hostile/near-touching.poly", 20,
+                           "--bug double-flips --bug area-centroid --bug remark10-reversed");
+  ConformanceReport exact = check_conformance(r.input, r.trace, options(r.theta));
+  ASSERT_TRUE(exact.failure);
+  ConformanceFailure f = *exact.failure;
+  EXPECT_EQ(f.chain_end_reason, "no-rule") << chain_text(f.chain) << "; " << f.chain_end;
+  EXPECT_EQ(names(f).count("unknown"), 1u) << chain_text(f.chain);
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
+  EXPECT_EQ(f.mesh_reading, "double-incircle");
+  EXPECT_EQ(names(f), (std::set<std::string>{"remark10-reversed", "area-centroid"})) << chain_text(f.chain);
+}
+
 }  // namespace
 }  // namespace lepp::audit
