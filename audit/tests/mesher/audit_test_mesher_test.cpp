@@ -281,6 +281,7 @@ TEST(AuditDeclaredReading, MissingFlipsFollowedOnTheProgramsMesh) {
   for (const json& cx : conf.at("counterexamples")) {
     EXPECT_NE(cx.at("detail").get<std::string>().find("on the program's mesh as the replay rebuilds it: no-flips"), std::string::npos)
         << cx.dump(2);
+    EXPECT_EQ(cx.value("mesh_reading", "").rfind("no-flips", 0), 0u) << cx.dump(2);
     const std::string md = slurp(fs::path(cx.at("dir").get<std::string>()) / "finding.md");
     EXPECT_NE(md.find("The replay followed the program's mesh"), std::string::npos) << md;
   }
@@ -306,6 +307,7 @@ TEST(AuditEveryDeviation, ChainStoppedAtNoRuleIsPictured) {
     const fs::path dir = cx.at("dir").get<std::string>();
     EXPECT_EQ(fs::exists(dir / "chain-end.svg"), stopped_unknown) << cx.dump(2);
     if (!stopped_unknown) continue;
+    EXPECT_EQ(cx.value("chain_end_reason", ""), "no-rule") << cx.dump(2);
     ++pictured;
     const std::string md = slurp(dir / "finding.md");
     EXPECT_NE(md.find("## Where the chain stopped (chain-end.svg)"), std::string::npos) << md;
