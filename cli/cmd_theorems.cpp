@@ -33,6 +33,7 @@ struct TheoremsArgs {
   double time_limit = 30;
   double tight_time_limit = 10;
   std::string write_proofs;
+  std::string pictures;
   std::string corpus = "corpus/theorems";
 };
 
@@ -102,11 +103,12 @@ when it has one, turned into an exact integer-grid configuration that the
 row's own check function (the one its sampling property calls) rejects;
 **not decided** with the reason otherwise (not first-order over the reals, or
 the time limit). Rows refuted by a sampled mesh counterexample stay refuted by
-it, re-checked. Each decided obligation is written to
+it, re-checked; each refuted row's counterexample is also drawn (`--pictures`,
+`docs/theorems/`, linked from its cell). Each decided obligation is written to
 `corpus/theorems/proofs/` (SMT-LIB 2, and QEPCAD B input where it has at most
 four variables) and re-checked in CI by Debian's `z3` and `qepcad`
 (`scripts/ci.d/50-proofs.sh`). Every proof is re-run by one command:
-`lepp theorems --long --prove --tight --out docs/THEOREMS.md --write-proofs corpus/theorems/proofs`.
+`lepp theorems --long --prove --tight --out docs/THEOREMS.md --write-proofs corpus/theorems/proofs --pictures docs/theorems`.
 
 )";
 
@@ -162,6 +164,17 @@ int run_theorems(const TheoremsArgs& args) {
       if (d.outcome == prove::Outcome::Refuted && !d.confirmed && d.method.rfind("Z3", 0) == 0 &&
           d.note.find("no check function") == std::string::npos)
         ok = false;
+    }
+    if (!args.pictures.empty()) {
+      // The table links each picture relative to itself (the --out file's directory).
+      namespace fs = std::filesystem;
+      fs::path base = args.out.empty() ? fs::current_path() : fs::absolute(fs::path(args.out)).parent_path();
+      std::string link = fs::absolute(args.pictures).lexically_normal().lexically_relative(base).generic_string();
+      std::string error;
+      if (!prove::write_counterexample_pictures(args.pictures, link, decisions, &error)) {
+        message("lepp theorems: %s\n", error.c_str());
+        return 2;
+      }
     }
     table = prove::add_decided_column(table, decisions);
     if (!args.write_proofs.empty()) {
@@ -234,6 +247,9 @@ void add_theorems_command(CLI::App& app, int& status) {
   cmd->add_option("--write-proofs", args->write_proofs,
                   "With --prove: write the obligation files (SMT-LIB 2, QEPCAD B) into this directory, e.g. "
                   "corpus/theorems/proofs");
+  cmd->add_option("--pictures", args->pictures,
+                  "With --prove: draw every refuted row's counterexample (SVG, exact coordinates) into this directory, "
+                  "linked from the table, e.g. docs/theorems");
   cmd->add_option("--corpus", args->corpus,
                   "With --prove: the sampled counterexamples' directory (default corpus/theorems)");
   cmd->callback([args, &status] { status = run_theorems(*args); });

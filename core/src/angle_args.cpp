@@ -65,6 +65,15 @@ std::array<AngleArgs, 3> triangle_angle_args(const Point& a, const Point& b, con
   return {args_of(ab, negated(ca)), args_of(bc, negated(ab)), args_of(ca, negated(bc))};
 }
 
+AngleArgs corner_angle_args(const Point& a, const Point& b, const Point& c, int k) {
+  // The two sides at corner k, as triangle_angle_args scales them.
+  switch (k) {
+    case 0: return args_of(scaled_direction(a, b), negated(scaled_direction(c, a)));
+    case 1: return args_of(scaled_direction(b, c), negated(scaled_direction(a, b)));
+    default: return args_of(scaled_direction(c, a), negated(scaled_direction(b, c)));
+  }
+}
+
 double signed_degrees(const AngleArgs& a) { return std::atan2(a.cross, a.dot) * 180.0 / M_PI; }
 
 bool clearly_smaller(const AngleArgs& a, const AngleArgs& b) {

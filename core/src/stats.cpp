@@ -52,6 +52,20 @@ double signed_angle_deg(const Point& o, const Point& p, const Point& q) { return
 double angle_deg(const Point& o, const Point& p, const Point& q) { return std::abs(signed_angle_deg(o, p, q)); }
 
 double min_angle_deg(const Point& a, const Point& b, const Point& c) {
+  // The side clearly shortest (its square below the others' by 2^-10) and the angle
+  // opposite it not thin (sine at least about 2^-20): that angle is then smaller than
+  // the other two by more than about 2^-31 radians (law of sines), far beyond the ulps
+  // of the computed degrees, so it is the minimum of the three bit for bit, from two
+  // scaled sides, no comparisons (issue 40: most triangles of a mesh).
+  constexpr double kShorter = 1 - 0x1p-10, kNotThin = 0x1p-20;
+  const double ab = squared_length(a, b), bc = squared_length(b, c), ca = squared_length(c, a);
+  if (safe_square(ab) && safe_square(bc) && safe_square(ca)) {
+    const int k = bc < kShorter * std::min(ab, ca) ? 0 : ca < kShorter * std::min(ab, bc) ? 1 : ab < kShorter * std::min(bc, ca) ? 2 : -1;
+    if (k >= 0) {
+      const AngleArgs at = corner_angle_args(a, b, c, k);
+      if (std::abs(at.cross) >= kNotThin * (std::abs(at.dot) + std::abs(at.cross))) return std::abs(signed_degrees(at));
+    }
+  }
   const std::array<AngleArgs, 3> at = triangle_angle_args(a, b, c);
   // The angle no other is clearly below, then one atan2 if it is clearly below both
   // others; otherwise (a tie within 2^-40 radians, a degenerate triangle) all three,

@@ -169,6 +169,37 @@ TEST(SmallestAngle, IsTheMinimumOfTheThreeAnglesBitForBit) {
     }
     ASSERT_TRUE(same_bits(min_angle_deg(a, b, c), min_angle_by_definition(a, b, c))) << i;
   }
+  // Around min_angle_deg's shortcut (the shortest side's square 2^-10 below the
+  // others', the angle opposite it of sine 2^-20): two sides in a ratio near that
+  // margin, apex angles from needles to wide, every corner first.
+  for (int i = 0; i < 200000; ++i) {
+    const double apex = std::ldexp(0.5 + u(rng), -static_cast<int>(u(rng) * 40));  // 2^-40 to 1.5 radians
+    const double ratio = 1 - std::ldexp(u(rng), -static_cast<int>(4 + u(rng) * 12));  // 1 - 2^-4 to 1 - 2^-16
+    const double turn = u(rng) * 6.283;
+    const Point o{u(rng), u(rng)};
+    const Point p{o.x + std::cos(turn), o.y + std::sin(turn)};
+    const Point q{o.x + ratio * std::cos(turn + apex), o.y + ratio * std::sin(turn + apex)};
+    const std::array<Point, 3> t{o, p, q};
+    const int r = i % 3;
+    const Point &a = t[r], &b = t[(r + 1) % 3], &c = t[(r + 2) % 3];
+    ASSERT_TRUE(same_bits(min_angle_deg(a, b, c), min_angle_by_definition(a, b, c)))
+        << i << std::hexfloat << " " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y;
+  }
+  // Needles with two tiny angles, their sides in a ratio just past the margin: the
+  // two angles' rounding (of a cross product of nearly parallel sides) is then as
+  // large as their difference.
+  for (int i = 0; i < 200000; ++i) {
+    const double off = std::ldexp(0.5 + u(rng), -static_cast<int>(10 + u(rng) * 6));
+    const double height = std::ldexp(0.5 + u(rng), -static_cast<int>(10 + u(rng) * 40));
+    const double cs = std::cos(u(rng) * 6.283), sn = std::sqrt(1 - cs * cs);  // turned off the axes
+    const Point o{u(rng), u(rng)};
+    auto turned = [&](double x, double y) { return Point{o.x + cs * x - sn * y, o.y + sn * x + cs * y}; };
+    const std::array<Point, 3> t{o, turned(1, 0), turned(0.5 - off, height)};
+    const int r = i % 3;
+    const Point &a = t[r], &b = t[(r + 1) % 3], &c = t[(r + 2) % 3];
+    ASSERT_TRUE(same_bits(min_angle_deg(a, b, c), min_angle_by_definition(a, b, c)))
+        << i << std::hexfloat << " " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y;
+  }
 }
 
 TEST(SmallestAngle, EveryAngleIsItsDefinition) {

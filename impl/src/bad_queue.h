@@ -37,7 +37,7 @@ struct Keyed {
 
 inline Keyed keyed(const TriMesh& m, int ti) {
   const FTri& f = m.t(ti);
-  int a = f.v[0], b = f.v[1], c = f.v[2];
+  int a = f.v(0), b = f.v(1), c = f.v(2);
   if (a > b) std::swap(a, b);
   if (b > c) std::swap(b, c);
   if (a > b) std::swap(a, b);
@@ -168,7 +168,7 @@ class BadQueue {
     if (ring_.size() > 2 && still_there(mesh_, ring_[2])) __builtin_prefetch(&mesh_.t(ring_[2].tri));
     if (ring_.size() > 1 && still_there(mesh_, ring_[1])) {
       const FTri& f = mesh_.t(ring_[1].tri);
-      for (int i = 0; i < 3; ++i) __builtin_prefetch(&mesh_.p(f.v[i]));
+      for (int i = 0; i < 3; ++i) __builtin_prefetch(&mesh_.p(f.v(i)));
     }
   }
 

@@ -45,7 +45,7 @@ class RoundMarks {
 inline bool plain_choice(TriMesh& m, const Lepp& lepp, const Choice& c, SliverObstacles& obstacles) {
   if (c.edge >= 0) {
     const FTri& f = m.t(c.tri);
-    if (f.nbr[c.edge] < 0 && orient(m.p(f.v[next3(c.edge)]), m.p(f.v[prev3(c.edge)]), c.point) < 0) return false;
+    if (f.nbr[c.edge] < 0 && orient(m.p(f.v(next3(c.edge))), m.p(f.v(prev3(c.edge))), c.point) < 0) return false;
   }
   return choice_insertable(m, lepp, c, obstacles);
 }
@@ -73,7 +73,7 @@ inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks&
       if (ti < 0) continue;
       const FTri& f = m.t(ti);
       int o[3];
-      for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]), c.point);
+      for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v(next3(i))), m.p(f.v(prev3(i))), c.point);
       if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;  // not in this one: in the other
       add(ti);
       for (int i = 0; i < 3; ++i)
@@ -108,7 +108,7 @@ inline bool cavity_and_ring(const TriMesh& m, const Choice& c, const RoundMarks&
       const FTri& g = m.t(n);
       // Whether a triangle is in the cavity depends on it alone, so the ring and the
       // cavity are the same sets whichever way the flood reaches them.
-      if (f.seg[i] < 0 && incircle(m.p(g.v[0]), m.p(g.v[1]), m.p(g.v[2]), c.point) >= 0) {
+      if (f.seg(i) < 0 && incircle(m.p(g.v(0)), m.p(g.v(1)), m.p(g.v(2)), c.point) >= 0) {
         cavity.push_back(n);
         if (hashed) {
           large.insert(n);

@@ -68,17 +68,18 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
   TriMesh all;
   all.tris.resize(static_cast<std::size_t>(count));
   for (auto f : cdt.finite_face_handles()) {
-    FTri& t = all.t(f->info());
-    t.longest = -1;
+    int v[3], nbr[3];
+    std::int8_t seg[3];
     for (int i = 0; i < 3; ++i) {
-      t.v[i] = f->vertex(i)->info();
+      v[i] = f->vertex(i)->info();
       auto g = f->neighbor(i);
-      t.nbr[i] = g->info() < 0 ? -1 : nbr_code(g->info(), g->index(f));
-      t.seg[i] = f->is_constrained(i) ? 0 : -1;
+      nbr[i] = g->info() < 0 ? -1 : nbr_code(g->info(), g->index(f));
+      seg[i] = f->is_constrained(i) ? 0 : -1;
       if (f->is_constrained(i) &&
           membership.segment_of(f->vertex(Cdt::cw(i))->info(), f->vertex(Cdt::ccw(i))->info()) < 0)
         throw std::logic_error("fast engine: a constrained CDT edge is no input segment");
     }
+    all.t(f->info()) = FTri(v, nbr, seg);
   }
 
   // Flood (Triangle's -p): from hull triangles across unconstrained hull edges
@@ -90,13 +91,13 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
   };
   for (int ti = 0; ti < count; ++ti)
     for (int i = 0; i < 3; ++i)
-      if (all.t(ti).nbr[i] < 0 && all.t(ti).seg[i] < 0) seed(ti);
+      if (all.t(ti).nbr[i] < 0 && all.t(ti).seg(i) < 0) seed(ti);
   for (const Point& h : pslg.holes) start_faces(cdt, h, seed);
   while (!stack.empty()) {
     int ti = stack.back();
     stack.pop_back();
     for (int i = 0; i < 3; ++i)
-      if (all.t(ti).seg[i] < 0 && all.t(ti).nbr[i] >= 0) seed(nbr_tri(all.t(ti).nbr[i]));
+      if (all.t(ti).seg(i) < 0 && all.t(ti).nbr[i] >= 0) seed(nbr_tri(all.t(ti).nbr[i]));
   }
 
   // Regions (Triangle's order): each region point, in file order, floods the
@@ -120,7 +121,7 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
         int ti = stack.back();
         stack.pop_back();
         for (int i = 0; i < 3; ++i)
-          if (all.t(ti).seg[i] < 0 && all.t(ti).nbr[i] >= 0) reach(nbr_tri(all.t(ti).nbr[i]));
+          if (all.t(ti).seg(i) < 0 && all.t(ti).nbr[i] >= 0) reach(nbr_tri(all.t(ti).nbr[i]));
       }
     }
   }
@@ -141,7 +142,7 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
       if (t.nbr[i] < 0) continue;
       int n = new_id[static_cast<std::size_t>(nbr_tri(t.nbr[i]))];
       if (n < 0) {
-        if (t.seg[i] < 0) throw std::logic_error("fast engine: flooding crossed an unconstrained edge");
+        if (t.seg(i) < 0) throw std::logic_error("fast engine: flooding crossed an unconstrained edge");
         t.nbr[i] = -1;
       } else {
         t.nbr[i] = nbr_code(n, nbr_edge(t.nbr[i]));
@@ -160,9 +161,9 @@ TriMesh build_initial_cdt(const Pslg& pslg, const SegmentMembership& membership,
     for (int ti = 0; ti < mesh.size(); ++ti) {
       const FTri& f = mesh.t(ti);
       for (int i = 0; i < 3; ++i) {
-        if (f.seg[i] >= 0 || f.nbr[i] < 0 || nbr_tri(f.nbr[i]) < ti) continue;
+        if (f.seg(i) >= 0 || f.nbr[i] < 0 || nbr_tri(f.nbr[i]) < ti) continue;
         const FTri& g = mesh.t(nbr_tri(f.nbr[i]));
-        if (incircle(mesh.p(f.v[0]), mesh.p(f.v[1]), mesh.p(f.v[2]), mesh.p(g.v[nbr_edge(f.nbr[i])])) == 0)
+        if (incircle(mesh.p(f.v(0)), mesh.p(f.v(1)), mesh.p(f.v(2)), mesh.p(g.v(nbr_edge(f.nbr[i])))) == 0)
           ++*cocircular_ties;
       }
     }

@@ -23,9 +23,9 @@ class EdgeOrder {
   bool longer(int i, int j) const {
     int s = compare_sqlen(a(i), b(i), len_[i], a(j), b(j), len_[j]);
     if (s != 0) return s > 0;
-    int mi = std::min(f_.v[next3(i)], f_.v[prev3(i)]), mj = std::min(f_.v[next3(j)], f_.v[prev3(j)]);
+    int mi = std::min(f_.v(next3(i)), f_.v(prev3(i))), mj = std::min(f_.v(next3(j)), f_.v(prev3(j)));
     if (mi != mj) return mi < mj;  // older vertices win ties
-    return std::max(f_.v[next3(i)], f_.v[prev3(i)]) < std::max(f_.v[next3(j)], f_.v[prev3(j)]);
+    return std::max(f_.v(next3(i)), f_.v(prev3(i))) < std::max(f_.v(next3(j)), f_.v(prev3(j)));
   }
   // True iff edges i and j have exactly the same length (a tie the ids decide).
   bool same_length(int i, int j) const { return compare_sqlen(a(i), b(i), len_[i], a(j), b(j), len_[j]) == 0; }
@@ -45,23 +45,23 @@ class EdgeOrder {
   double sqlen_of(int i) const { return len_[i]; }
 
  private:
-  const Point& a(int i) const { return m_.p(f_.v[next3(i)]); }
-  const Point& b(int i) const { return m_.p(f_.v[prev3(i)]); }
+  const Point& a(int i) const { return m_.p(f_.v(next3(i))); }
+  const Point& b(int i) const { return m_.p(f_.v(prev3(i))); }
   const TriMesh& m_;
   const FTri& f_;
   double len_[3];
 };
 
-// The longest edge of ti, computed once per triangle and cached in it.
-// The cache is read and written atomically (relaxed): the batch order's selection
-// runs Lepp searches from several threads at once, and two may fill the same
-// triangle's cache (with the same value).
+// The longest edge of ti, computed once per triangle and cached in it, but for
+// while the batch order's selection runs Lepp searches on several threads
+// (TriMesh::cache_longest false): the cache shares a word with a vertex id the
+// other threads read, so only the one thread that writes the mesh fills it.
 inline int longest_edge(TriMesh& m, int ti) {
   FTri& f = m.t(ti);
-  std::int8_t l = __atomic_load_n(&f.longest, __ATOMIC_RELAXED);
+  int l = f.longest();
   if (l < 0) {
-    l = static_cast<std::int8_t>(EdgeOrder(m, ti).longest());
-    __atomic_store_n(&f.longest, l, __ATOMIC_RELAXED);
+    l = EdgeOrder(m, ti).longest();
+    if (m.cache_longest) f.set_longest(l);
   }
   return l;
 }

@@ -34,7 +34,7 @@ using Clock = std::chrono::steady_clock;
 
 // A triangle as the trace names it: counter-clockwise, smallest id first.
 Tri canonical(const FTri& f) {
-  Tri t{f.v[0], f.v[1], f.v[2]};
+  Tri t{f.v(0), f.v(1), f.v(2)};
   while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
   return t;
 }
@@ -93,7 +93,7 @@ class Refiner {
       for (int ti = 0; ti < mesh_.size(); ++ti) {
         const double bound = quality_.twice_bound(mesh_, ti);
         const FTri& f = mesh_.t(ti);
-        const Point &a = mesh_.p(f.v[0]), &b = mesh_.p(f.v[1]), &c = mesh_.p(f.v[2]);
+        const Point &a = mesh_.p(f.v(0)), &b = mesh_.p(f.v(1)), &c = mesh_.p(f.v(2));
         if (bound > 0) more += 2.5 * std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / bound;
       }
       const double wanted = std::min(4.0 * static_cast<double>(n) + 4096 + more, static_cast<double>(n) + static_cast<double>(budget) + 1);
@@ -104,7 +104,7 @@ class Refiner {
       expected = std::max(expected, wanted);
     }
     const auto vertices_reserved = static_cast<std::size_t>(std::min(expected, 4e8));
-    mem_.steiner.reserve(vertices_reserved);
+    mem_.steiner_on.reserve(vertices_reserved / 64 + 1);
     const bool sized = quality_.sized();
 
     RefineResult result;
@@ -138,8 +138,12 @@ class Refiner {
       return it == stopped_at.end() ? nullptr : it->second;
     };
     for (int ti = 0; ti < mesh_.size(); ++ti) {
-      const bool angle_rule =
-          quality_.judge(mesh_, ti).skinny && quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr);
+      // The rule needs both ends of the shortest edge on segments: a triangle with
+      // fewer than two such vertices (almost all) is not judged (issue 40).
+      const FTri& f = mesh_.t(ti);
+      const bool may_be_left = mem_.on_any(f.v(0)) + mem_.on_any(f.v(1)) + mem_.on_any(f.v(2)) >= 2;
+      const bool angle_rule = may_be_left && quality_.judge(mesh_, ti).skinny &&
+                              quality_.unimprovable(mesh_, ti, quality_.shortest_edge(mesh_, ti), nullptr);
       if (angle_rule) stopped_at.erase(ti);
       if (angle_rule || stopped_in(ti)) left.push_back(keyed(mesh_, ti));
     }
@@ -365,7 +369,7 @@ class Refiner {
     fresh_.clear();
     mesh_.for_each_in_star(around_, [&](int ti) {
       const FTri& f = mesh_.t(ti);
-      if (floor_ > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v[1]), floor_) || sqlen_below(mesh_.p(p), mesh_.p(f.v[2]), floor_)))
+      if (floor_ > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v(1)), floor_) || sqlen_below(mesh_.p(p), mesh_.p(f.v(2)), floor_)))
         below_floor = true;
       if (quality_.processed(mesh_, ti)) fresh_.push_back(keyed(mesh_, ti));
     });
@@ -441,7 +445,7 @@ class Refiner {
     s.bad = canonical(mesh_.t(item.tri));
     for (int ti : lepp.path) s.lepp.push_back(canonical(mesh_.t(ti)));
     const FTri& f1 = mesh_.t(lepp.t1);
-    int a = f1.v[next3(lepp.e1)], b = f1.v[prev3(lepp.e1)];
+    int a = f1.v(next3(lepp.e1)), b = f1.v(prev3(lepp.e1));
     s.terminal_edge = {a, b};  // as t1 runs along it, counter-clockwise
     s.t1 = canonical(f1);
     if (lepp.t2 >= 0) s.t2 = canonical(mesh_.t(lepp.t2));

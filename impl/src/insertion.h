@@ -46,22 +46,22 @@ class Inserter {
         m.split_triangle(where, p, made);
         count = 3;
       } else {
-        const std::int8_t flag = m.t(where).seg[edge];
+        const std::int8_t flag = m.t(where).seg(edge);
         if (flag >= 0) split_segment = segment_of_edge(m, mem, where, edge);
         count = m.split_edge(where, edge, p, flag, made);
       }
     }
-    mem.steiner.push_back(split_segment);
+    mem.add_steiner(split_segment);
     // Legalization order (ALGORITHM.md section 7, "creation order"): the initial
     // triangles (p, u, w) by increasing id of u, each legalized depth first.
-    std::sort(made, made + count, [&](int x, int y) { return m.t(x).v[1] < m.t(y).v[1]; });
+    std::sort(made, made + count, [&](int x, int y) { return m.t(x).v(1) < m.t(y).v(1); });
     created_.clear();
     for (int k = count; k-- > 0;) {
       stack_.push_back(made[k]);
       if (record_creation) created_.push_back(Item{made[count - 1 - k], 0});
       // The apex across each new link edge is the next thing the flips read.
       const int code = m.t(made[k]).nbr[0];
-      if (code >= 0) __builtin_prefetch(&m.p(m.t(nbr_tri(code)).v[nbr_edge(code)]));
+      if (code >= 0) __builtin_prefetch(&m.p(m.t(nbr_tri(code)).v(nbr_edge(code))));
     }
     if (record_creation)
       for (Item& it : created_) it.stamp = m.stamp[static_cast<std::size_t>(it.tri)];
@@ -83,7 +83,7 @@ class Inserter {
  private:
   static int segment_of_edge(const TriMesh& m, const SegmentMembership& mem, int ti, int i) {
     const FTri& f = m.t(ti);
-    return mem.segment_of(f.v[next3(i)], f.v[prev3(i)]);
+    return mem.segment_of(f.v(next3(i)), f.v(prev3(i)));
   }
 
   // A split of constrained edge i of ti = (c, a, b) at p strictly off the line ab
@@ -94,12 +94,12 @@ class Inserter {
   // (p on c's side), -1: keep ti (p beyond ab), 0: the usual split.
   static int kept_side(const TriMesh& m, int ti, int i, const Point& p) {
     const FTri& f = m.t(ti);
-    const Point &c = m.p(f.v[i]), &a = m.p(f.v[next3(i)]), &b = m.p(f.v[prev3(i)]);
+    const Point &c = m.p(f.v(i)), &a = m.p(f.v(next3(i))), &b = m.p(f.v(prev3(i)));
     const int side = orient(a, b, p);
     if (side > 0) {
       if (f.nbr[i] < 0) return 0;
       const FTri& g = m.t(nbr_tri(f.nbr[i]));
-      return incircle(m.p(g.v[nbr_edge(f.nbr[i])]), b, a, p) < 0 ? 1 : 0;
+      return incircle(m.p(g.v(nbr_edge(f.nbr[i]))), b, a, p) < 0 ? 1 : 0;
     }
     if (side < 0) return incircle(c, a, b, p) < 0 ? -1 : 0;
     return 0;
@@ -110,7 +110,7 @@ class Inserter {
   static bool locate_in(const TriMesh& m, int ti, const Point& p, int& edge) {
     const FTri& f = m.t(ti);
     int o[3];
-    for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]), p);
+    for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v(next3(i))), m.p(f.v(prev3(i))), p);
     if (o[0] < 0 || o[1] < 0 || o[2] < 0) return edge = -2, false;
     int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
     if (zeros >= 2) return edge = -3, false;
@@ -123,9 +123,9 @@ class Inserter {
       int ti = stack_.back();
       stack_.pop_back();
       const FTri& f = m.t(ti);
-      if (f.seg[0] >= 0 || f.nbr[0] < 0) continue;  // never flip a constrained edge
+      if (f.seg(0) >= 0 || f.nbr[0] < 0) continue;  // never flip a constrained edge
       const FTri& g = m.t(nbr_tri(f.nbr[0]));
-      int s = incircle(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), m.p(g.v[nbr_edge(f.nbr[0])]));
+      int s = incircle(m.p(f.v(0)), m.p(f.v(1)), m.p(f.v(2)), m.p(g.v(nbr_edge(f.nbr[0]))));
       if (s > 0) {
         int ni = m.flip_edge0(ti);  // ti = (p, u, d), then ni = (p, d, w): ti is legalized first
         if (record_creation) {

@@ -26,7 +26,7 @@ inline void lepp_search(TriMesh& m, int t, Lepp& out) {
   for (;;) {
     out.path.push_back(cur);
     const FTri& f = m.t(cur);
-    if (f.seg[e] >= 0 || f.nbr[e] < 0) {  // constrained (or boundary, which is constrained)
+    if (f.seg(e) >= 0 || f.nbr[e] < 0) {  // constrained (or boundary, which is constrained)
       out.t1 = cur, out.e1 = e;
       return;
     }

@@ -28,14 +28,14 @@ inline Choice split_choice(const TriMesh& m, int ti, int i, Rule rule) {
   const FTri& f = m.t(ti);
   Choice c;
   c.rule = rule;
-  c.point = midpoint(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]));
+  c.point = midpoint(m.p(f.v(next3(i))), m.p(f.v(prev3(i))));
   c.tri = ti, c.edge = i;
   return c;
 }
 
 inline bool strictly_inside(const TriMesh& m, int ti, const Point& p) {
   const FTri& f = m.t(ti);
-  const Point &a = m.p(f.v[0]), &b = m.p(f.v[1]), &c = m.p(f.v[2]);
+  const Point &a = m.p(f.v(0)), &b = m.p(f.v(1)), &c = m.p(f.v(2));
   return orient(a, b, p) > 0 && orient(b, c, p) > 0 && orient(c, a, p) > 0;
 }
 
@@ -43,8 +43,8 @@ inline Choice select_point(TriMesh& m, const Lepp& lepp, Method method) {
   if (lepp.t2 < 0) return split_choice(m, lepp.t1, lepp.e1, Rule::TerminalConstrainedMidpoint);
   const FTri &f1 = m.t(lepp.t1), &f2 = m.t(lepp.t2);
   const int l1 = second_longest(m, lepp, false), l2 = second_longest(m, lepp, true);
-  const bool c1 = f1.seg[l1] >= 0, c2 = f2.seg[l2] >= 0;
-  const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
+  const bool c1 = f1.seg(l1) >= 0, c2 = f2.seg(l2) >= 0;
+  const Point &a = m.p(f1.v(next3(lepp.e1))), &b = m.p(f1.v(prev3(lepp.e1)));
   Choice c;
   c.tri = lepp.t1, c.other = lepp.t2;
   if (method == Method::Midpoint) {
@@ -55,7 +55,7 @@ inline Choice select_point(TriMesh& m, const Lepp& lepp, Method method) {
     return c;
   }
   if (c1 && c2) return split_choice(m, lepp.t1, l1, Rule::BothSecondLongestMidpoint);
-  c.point = centroid(a, b, m.p(f1.v[lepp.e1]), m.p(f2.v[lepp.e2]));
+  c.point = centroid(a, b, m.p(f1.v(lepp.e1)), m.p(f2.v(lepp.e2)));
   if (!c1 && !c2) {
     c.rule = Rule::QuadCentroid;
     return c;

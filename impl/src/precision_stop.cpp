@@ -14,8 +14,8 @@ namespace {
 // both apexes), in ascending x, then ascending y.
 std::vector<Point> centroid_roundings(const TriMesh& m, const Lepp& lepp) {
   const FTri& f1 = m.t(lepp.t1);
-  const Point &a = m.p(f1.v[next3(lepp.e1)]), &b = m.p(f1.v[prev3(lepp.e1)]);
-  const Point &p = m.p(f1.v[lepp.e1]), &q = m.p(m.t(lepp.t2).v[lepp.e2]);
+  const Point &a = m.p(f1.v(next3(lepp.e1))), &b = m.p(f1.v(prev3(lepp.e1)));
+  const Point &p = m.p(f1.v(lepp.e1)), &q = m.p(m.t(lepp.t2).v(lepp.e2));
   std::vector<Point> out;
   for (double x : doubles_around_centroid(a.x, b.x, p.x, q.x))
     for (double y : doubles_around_centroid(a.y, b.y, p.y, q.y)) out.push_back({x, y});
@@ -38,10 +38,10 @@ bool round_otherwise(const TriMesh& m, const Lepp& lepp, Choice& c, SliverObstac
   if (c.rule == Rule::QuadCentroid || c.rule == Rule::CentroidInOther) {
     points = centroid_roundings(m, lepp);
   } else if (c.edge < 0) {  // terminal-midpoint: the unconstrained terminal edge
-    points = midpoint_roundings(m.p(f1.v[next3(lepp.e1)]), m.p(f1.v[prev3(lepp.e1)]));
+    points = midpoint_roundings(m.p(f1.v(next3(lepp.e1))), m.p(f1.v(prev3(lepp.e1))));
   } else {  // the midpoint of the constrained edge it splits
     const FTri& f = m.t(c.tri);
-    points = midpoint_roundings(m.p(f.v[next3(c.edge)]), m.p(f.v[prev3(c.edge)]));
+    points = midpoint_roundings(m.p(f.v(next3(c.edge))), m.p(f.v(prev3(c.edge))));
   }
   for (const Point& p : points) {
     Choice alt = c;
@@ -60,7 +60,7 @@ bool other_branch(TriMesh& m, const Lepp& lepp, Method method, Choice& c, Sliver
   if (method != Method::Centroid || lepp.t2 < 0) return false;
   if (c.rule != Rule::CentroidInOther && c.rule != Rule::SecondLongestMidpoint) return false;
   const int l1 = second_longest(m, lepp, false), l2 = second_longest(m, lepp, true);
-  const bool c1 = m.t(lepp.t1).seg[l1] >= 0, c2 = m.t(lepp.t2).seg[l2] >= 0;
+  const bool c1 = m.t(lepp.t1).seg(l1) >= 0, c2 = m.t(lepp.t2).seg(l2) >= 0;
   if (c1 == c2) return false;  // not Remark 10's branch
   const int star = c1 ? lepp.t1 : lepp.t2, other = c1 ? lepp.t2 : lepp.t1;
   const std::vector<Point> centroids = centroid_roundings(m, lepp);
@@ -90,7 +90,7 @@ bool other_constrained_edge(TriMesh& m, const Lepp& lepp, Choice& c, SliverObsta
   if (lepp.t2 < 0 || c.tri != lepp.t1 || c.edge < 0) return false;
   if (c.rule != Rule::BothSecondLongestMidpoint && c.rule != Rule::SecondLongestMidpoint) return false;
   const int l1 = second_longest(m, lepp, false), l2 = second_longest(m, lepp, true);
-  if (c.edge != l1 || m.t(lepp.t1).seg[l1] < 0 || m.t(lepp.t2).seg[l2] < 0) return false;  // not both constrained
+  if (c.edge != l1 || m.t(lepp.t1).seg(l1) < 0 || m.t(lepp.t2).seg(l2) < 0) return false;  // not both constrained
   Choice mid = split_choice(m, lepp.t2, l2, c.rule);
   if (!choice_insertable(m, lepp, mid, obstacles) && !round_otherwise(m, lepp, mid, obstacles)) return false;
   c = mid;

@@ -22,14 +22,14 @@ namespace lepp::fast {
 // an index built the first time this branch is reached).
 inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p, SliverObstacles& obstacles) {
   const FTri& f = m.t(ti);
-  const Point &a = m.p(f.v[next3(i)]), &b = m.p(f.v[prev3(i)]), &c = m.p(f.v[i]);
+  const Point &a = m.p(f.v(next3(i))), &b = m.p(f.v(prev3(i))), &c = m.p(f.v(i));
   if (orient(a, p, c) <= 0 || orient(p, b, c) <= 0) return false;
   if (below_precision_floor(p, a) || below_precision_floor(p, b) || below_precision_floor(p, c)) return false;
   if (f.nbr[i] < 0 && orient(a, b, p) < 0)
-    return !obstacles.blocks(m, f.v[next3(i)], f.v[prev3(i)], p);
+    return !obstacles.blocks(m, f.v(next3(i)), f.v(prev3(i)), p);
   if (f.nbr[i] < 0) return true;
   const FTri& g = m.t(nbr_tri(f.nbr[i]));
-  const Point& d = m.p(g.v[nbr_edge(f.nbr[i])]);
+  const Point& d = m.p(g.v(nbr_edge(f.nbr[i])));
   return orient(b, p, d) > 0 && orient(p, a, d) > 0 && !below_precision_floor(p, d);
 }
 
@@ -37,8 +37,8 @@ inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p, Sl
 inline bool near_pair_vertex(const TriMesh& m, const Lepp& lepp, const Point& p) {
   for (int t : {lepp.t1, lepp.t2}) {
     if (t < 0) continue;
-    for (int v : m.t(t).v)
-      if (below_precision_floor(p, m.p(v))) return true;
+    for (int i = 0; i < 3; ++i)
+      if (below_precision_floor(p, m.p(m.t(t).v(i)))) return true;
   }
   return false;
 }
@@ -48,13 +48,13 @@ inline bool near_pair_vertex(const TriMesh& m, const Lepp& lepp, const Point& p)
 inline int place_in(const TriMesh& m, int ti, const Point& p) {
   const FTri& f = m.t(ti);
   int o[3];
-  for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v[next3(i)]), m.p(f.v[prev3(i)]), p);
+  for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v(next3(i))), m.p(f.v(prev3(i))), p);
   if (o[0] < 0 || o[1] < 0 || o[2] < 0) return 0;
   const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
   if (zeros == 0) return 1;
   if (zeros >= 2) return -1;
   const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
-  return f.seg[e] >= 0 || f.nbr[e] < 0 ? -1 : 2;
+  return f.seg(e) >= 0 || f.nbr[e] < 0 ? -1 : 2;
 }
 
 // A point for a CDT insertion: in the closed terminal quad (t1, else t2),

@@ -46,7 +46,7 @@ class Quality {
     const double bound = twice_bound(m, ti);
     if (bound <= 0) return false;
     const FTri& f = m.t(ti);
-    return area_above(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), bound);
+    return area_above(m.p(f.v(0)), m.p(f.v(1)), m.p(f.v(2)), bound);
   }
 
   // Skinny iff cross^2 < S * |u|^2 |v|^2 for the two edges u, v at the smallest
@@ -55,7 +55,7 @@ class Quality {
   // filter cannot decide. Caches the longest edge for the Lepp search.
   Verdict judge(TriMesh& m, int ti) const {
     FTri& f = m.t(ti);
-    const Point &a = m.p(f.v[0]), &b = m.p(f.v[1]), &c = m.p(f.v[2]);
+    const Point &a = m.p(f.v(0)), &b = m.p(f.v(1)), &c = m.p(f.v(2));
     const double e0x = c.x - b.x, e0y = c.y - b.y, e1x = a.x - c.x, e1y = a.y - c.y, e2x = b.x - a.x, e2y = b.y - a.y;
     const double l0 = e0x * e0x + e0y * e0y, l1 = e1x * e1x + e1y * e1y, l2 = e2x * e2x + e2y * e2y;
     const double c1 = e2x * e1y, c2 = e2y * e1x;  // cross(b - a, c - a) = c2 - c1
@@ -65,14 +65,14 @@ class Quality {
     int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6);
     if (sign == 2) {
       int sh = EdgeOrder(m, ti).rank().shortest;
-      sign = skinny_at(m.p(f.v[sh]), m.p(f.v[next3(sh)]), m.p(f.v[prev3(sh)]), s_) ? 1 : -1;
+      sign = skinny_at(m.p(f.v(sh)), m.p(f.v(next3(sh))), m.p(f.v(prev3(sh))), s_) ? 1 : -1;
     }
     v.skinny = sign > 0;
     if (const double bound = twice_bound(m, ti); bound > 0) {
       int big = detail::filtered_sign(std::fabs(cross) - bound, pc + bound, 4);
       v.too_big = big == 2 ? area_above(a, b, c, bound) : big > 0;
     }
-    if (f.longest < 0) {
+    if (f.longest() < 0) {
       // The longest of the three, from the lengths already at hand.
       auto longer = [&](int i, double li, int j, double lj) {
         int s = detail::filtered_sign(li - lj, li + lj, 4);
@@ -81,7 +81,7 @@ class Quality {
       };
       int w = longer(0, l0, 1, l1) ? 0 : 1;
       double lw = w == 0 ? l0 : l1;
-      f.longest = longer(w, lw, 2, l2) ? w : 2;
+      f.set_longest(longer(w, lw, 2, l2) ? w : 2);
     }
     return v;
   }
@@ -99,7 +99,7 @@ class Quality {
   // fills *out with the smallest qualifying segment pair (s1 < s2).
   bool unimprovable(const TriMesh& m, int ti, int shortest, UnimprovableTriangle* out) const {
     const FTri& f = m.t(ti);
-    const int p = f.v[next3(shortest)], q = f.v[prev3(shortest)], r = f.v[shortest];
+    const int p = f.v(next3(shortest)), q = f.v(prev3(shortest)), r = f.v(shortest);
     if (!mem_.on_any(p) || !mem_.on_any(q)) return false;
     bool found = false;
     int best1 = 0, best2 = 0, best_apex = -1;
@@ -117,7 +117,7 @@ class Quality {
     });
     if (found && out) {
       *out = UnimprovableTriangle{};
-      out->triangle = {f.v[0], f.v[1], f.v[2]};
+      out->triangle = {f.v(0), f.v(1), f.v(2)};
       out->apex = best_apex, out->segment1 = best1, out->segment2 = best2;
       out->input_angle_deg = angle_deg(best_apex, best1, best2);
     }

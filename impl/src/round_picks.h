@@ -42,8 +42,8 @@ inline int threads_for(std::size_t n, int threads, std::size_t per_thread) {
 }
 
 // Fills picks[k] for round[which[k]], split in contiguous parts, one per thread.
-// Reads the mesh and the marks only (but for each triangle's longest-edge cache,
-// which longest_edge fills atomically). The obstacles are not read: plain_choice
+// Reads the mesh and the marks only: with several threads, the longest-edge cache
+// is not filled (edge_order.h), so nothing is written. The obstacles are not read: plain_choice
 // decides a split rounded outside the domain before the sliver clause would.
 inline void pick_window(TriMesh& m, const std::vector<Item>& round, const std::vector<std::size_t>& which,
                         const RoundMarks& marks, Method method, SliverObstacles& obstacles, int threads,
@@ -82,9 +82,11 @@ inline void pick_window(TriMesh& m, const std::vector<Item>& round, const std::v
   };
   std::vector<std::thread> workers;
   workers.reserve(static_cast<std::size_t>(t - 1));
+  m.cache_longest = false;
   for (int k = 1; k < t; ++k) workers.emplace_back(part, k);
   part(0);
   for (std::thread& w : workers) w.join();
+  m.cache_longest = true;
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
 }

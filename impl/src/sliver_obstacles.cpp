@@ -73,8 +73,7 @@ bool SliverObstacles::blocks(const TriMesh& m, int va, int vb, const Point& p) {
     chains.resize(pslg_.segments.size());
     const int n = mem_.input_vertices;
     std::vector<std::size_t> count(chains.size(), 2);
-    for (const int s : mem_.steiner)
-      if (s >= 0) ++count[static_cast<std::size_t>(s)];
+    for (const auto& [k, s] : mem_.steiner_segments) ++count[static_cast<std::size_t>(s)];
     std::vector<Entry> entries;
     entries.reserve(chains.size());
     for (std::size_t s = 0; s < chains.size(); ++s) {
@@ -88,8 +87,7 @@ bool SliverObstacles::blocks(const TriMesh& m, int va, int vb, const Point& p) {
       c.ids.push_back(g.a);
       entries.push_back({box_of(u, w), static_cast<int>(s)});
     }
-    for (std::size_t k = 0; k < mem_.steiner.size(); ++k)
-      if (const int s = mem_.steiner[k]; s >= 0) chains[static_cast<std::size_t>(s)].ids.push_back(n + static_cast<int>(k));
+    for (const auto& [k, s] : mem_.steiner_segments) chains[static_cast<std::size_t>(s)].ids.push_back(n + k);
     for (std::size_t s = 0; s < chains.size(); ++s) {
       Chain& c = chains[s];
       std::sort(c.ids.begin() + 1, c.ids.end(), [&](int x, int y) { return c.before(m.p(x), m.p(y)); });

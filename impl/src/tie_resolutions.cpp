@@ -57,7 +57,7 @@ class TieSearch {
     if ((max_states_ > 0 && seen_.size() >= max_states_) || !seen_.insert(3 * static_cast<std::int64_t>(ti) + e).second)
       return false;
     const FTri& f = m_.t(ti);
-    if (f.seg[e] >= 0 || f.nbr[e] < 0) return terminal(ti, e, -1, -1, lepp, c);  // constrained: one terminal triangle
+    if (f.seg(e) >= 0 || f.nbr[e] < 0) return terminal(ti, e, -1, -1, lepp, c);  // constrained: one terminal triangle
     const int next = nbr_tri(f.nbr[e]), j = nbr_edge(f.nbr[e]);
     int cand[3];
     const int n = tied_longest(m_, next, cand);

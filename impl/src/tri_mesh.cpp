@@ -68,12 +68,12 @@ Mesh TriMesh::to_mesh(const SegmentMembership& membership) const {
   mesh.triangles.reserve(tris.size());
   for (int ti = 0; ti < size(); ++ti) {
     const FTri& f = t(ti);
-    mesh.triangles.push_back({f.v[0], f.v[1], f.v[2]});
+    mesh.triangles.push_back({f.v(0), f.v(1), f.v(2)});
     for (int i = 0; i < 3; ++i) {
-      if (f.seg[i] < 0) continue;
+      if (f.seg(i) < 0) continue;
       // Each constrained edge once: from its only triangle, or from the lower id.
       if (f.nbr[i] >= 0 && nbr_tri(f.nbr[i]) < ti) continue;
-      int a = f.v[next3(i)], b = f.v[prev3(i)];
+      int a = f.v(next3(i)), b = f.v(prev3(i));
       mesh.constrained_edges.push_back({a, b, membership.segment_of(a, b)});
     }
   }
@@ -90,12 +90,12 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   stamp = {};
   region = {};
   auto rotated = [](const FTri& f) {
-    Tri t{f.v[0], f.v[1], f.v[2]};
+    Tri t{f.v(0), f.v(1), f.v(2)};
     while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
     return t;
   };
   // First pass: each triangle rotated to start at its smallest id, written as a
-  // 12-byte Tri at the front of the engine's own array, over the 28-byte triangles
+  // 12-byte Tri at the front of the engine's own array, over the 24-byte triangles
   // already read (Tri i ends at byte 12 i + 12, before triangle i + 1 begins), and
   // its constrained edges; the bucket sizes counted.
   static_assert(sizeof(Tri) <= sizeof(FTri) && std::is_trivially_copyable_v<FTri> && std::is_trivially_copyable_v<Tri>);
@@ -107,14 +107,14 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
     const Tri r = rotated(f);
     ++start[static_cast<std::size_t>(r[0]) + 1];
     for (int i = 0; i < 3; ++i) {
-      if (f.seg[i] < 0 || (f.nbr[i] >= 0 && static_cast<std::size_t>(nbr_tri(f.nbr[i])) < ti)) continue;
-      int a = f.v[next3(i)], b = f.v[prev3(i)];
+      if (f.seg(i) < 0 || (f.nbr[i] >= 0 && static_cast<std::size_t>(nbr_tri(f.nbr[i])) < ti)) continue;
+      int a = f.v(next3(i)), b = f.v(prev3(i));
       edges.push_back({std::min(a, b), std::max(a, b), membership.segment_of(a, b)});
     }
     std::memcpy(packed + ti * sizeof(Tri), &r, sizeof r);
   }
   // The rest of the array is given back before the output's triangles are made,
-  // so the two never hold 28 + 12 bytes per triangle at once.
+  // so the two never hold 24 + 12 bytes per triangle at once.
   release_pages(packed + nt * sizeof(Tri), packed + nt * sizeof(FTri));
   // Second pass: a counting sort by the smallest id into the output; start[v] is
   // bucket v's next free place, so afterwards bucket v ends at start[v].

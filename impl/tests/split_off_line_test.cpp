@@ -56,14 +56,14 @@ int split_at(TwoTriangles& s, Point p) {
 void expect_valid_and_delaunay(const TriMesh& m) {
   for (int t = 0; t < m.size(); ++t) {
     const FTri& f = m.t(t);
-    EXPECT_GT(orient(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2])), 0) << "triangle " << t;
+    EXPECT_GT(orient(m.p(f.v(0)), m.p(f.v(1)), m.p(f.v(2))), 0) << "triangle " << t;
     for (int i = 0; i < 3; ++i) {
       if (f.nbr[i] < 0) continue;
       const FTri& g = m.t(nbr_tri(f.nbr[i]));
       EXPECT_EQ(g.nbr[nbr_edge(f.nbr[i])], nbr_code(t, i)) << "triangle " << t << " edge " << i;
-      EXPECT_EQ(g.seg[nbr_edge(f.nbr[i])], f.seg[i]) << "triangle " << t << " edge " << i;
-      if (f.seg[i] >= 0) continue;
-      EXPECT_LE(incircle(m.p(f.v[0]), m.p(f.v[1]), m.p(f.v[2]), m.p(g.v[nbr_edge(f.nbr[i])])), 0)
+      EXPECT_EQ(g.seg(nbr_edge(f.nbr[i])), f.seg(i)) << "triangle " << t << " edge " << i;
+      if (f.seg(i) >= 0) continue;
+      EXPECT_LE(incircle(m.p(f.v(0)), m.p(f.v(1)), m.p(f.v(2)), m.p(g.v(nbr_edge(f.nbr[i])))), 0)
           << "edge " << i << " of triangle " << t << " is not locally Delaunay";
     }
   }
@@ -78,8 +78,8 @@ TEST(SplitOffLine, BeyondTheFarCircleKeepsTheNeighbour) {
   EXPECT_EQ(split_at(s, {2, 0.625}), 1);
   EXPECT_EQ(s.mesh.stamp[1], stamp) << "the kept triangle was rewritten";
   const FTri& k = s.mesh.t(1);
-  EXPECT_EQ(k.v[0], 3);
-  EXPECT_EQ(k.seg[0], -1) << "ab stays constrained beside the sliver";
+  EXPECT_EQ(k.v(0), 3);
+  EXPECT_EQ(k.seg(0), -1) << "ab stays constrained beside the sliver";
   EXPECT_EQ(s.mesh.size(), 4);
   expect_valid_and_delaunay(s.mesh);
 }
@@ -88,7 +88,7 @@ TEST(SplitOffLine, OnTheFarCircleIsTheUsualSplit) {
   TwoTriangles s = two_triangles(kA, kB, kC, &kD);
   EXPECT_EQ(split_at(s, {2, 0.5}), -1);
   EXPECT_EQ(s.mesh.size(), 4);
-  EXPECT_EQ(s.mesh.t(1).v[0], 4) << "the neighbour was not split";
+  EXPECT_EQ(s.mesh.t(1).v(0), 4) << "the neighbour was not split";
   expect_valid_and_delaunay(s.mesh);
 }
 
@@ -96,7 +96,7 @@ TEST(SplitOffLine, InsideTheFarCircleOrOnTheLineIsTheUsualSplit) {
   for (Point p : {Point{2, 0.375}, Point{2, 0}}) {
     TwoTriangles s = two_triangles(kA, kB, kC, &kD);
     EXPECT_EQ(split_at(s, p), -1) << p.y;
-    EXPECT_EQ(s.mesh.t(1).v[0], 4) << p.y;
+    EXPECT_EQ(s.mesh.t(1).v(0), 4) << p.y;
     expect_valid_and_delaunay(s.mesh);
   }
 }
@@ -109,7 +109,7 @@ TEST(SplitOffLine, BeyondTheOwnCircleKeepsTheSplitTriangle) {
   const std::uint32_t stamp = s.mesh.stamp[0];
   EXPECT_EQ(split_at(s, {2, -0.625}), 0);
   EXPECT_EQ(s.mesh.stamp[0], stamp);
-  EXPECT_EQ(s.mesh.t(0).seg[0], -1);
+  EXPECT_EQ(s.mesh.t(0).seg(0), -1);
   expect_valid_and_delaunay(s.mesh);
 
   TwoTriangles tie = two_triangles(kA, kB, c, &d);
@@ -129,7 +129,7 @@ TEST(SplitOffLine, BoundarySplitKeepsTheTriangleBesideItsSliver) {
   TwoTriangles tie = two_triangles(kA, kB, c, nullptr);
   EXPECT_EQ(split_at(tie, {2, -0.5}), -1);
   EXPECT_EQ(tie.mesh.size(), 2);
-  EXPECT_EQ(tie.mesh.t(0).v[0], 3) << "the triangle was not split (p is vertex 3 here)";
+  EXPECT_EQ(tie.mesh.t(0).v(0), 3) << "the triangle was not split (p is vertex 3 here)";
   expect_valid_and_delaunay(tie.mesh);
 }
 

@@ -9,6 +9,7 @@
 
 #include "lepp/rounding.h"
 #include "paper_choices.h"
+#include "insert_unflipped.h"
 #include "triangulation.h"
 
 namespace lepp::reference::detail {
@@ -427,6 +428,12 @@ FH keep_beside_sliver(Triangulation& tr, VH v, VH a, VH b, VH x, const FaceInfo&
 }  // namespace
 
 VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* created, FH* kept) {
+  VH v = insert_point_unflipped(tr, s, t1, kept);
+  restore_delaunay(tr, v, created);
+  return v;
+}
+
+VH insert_point_unflipped(Triangulation& tr, const Selection& s, FH t1, FH* kept) {
   Cdt& cdt = tr.cdt;
   CPoint p(s.point.x, s.point.y);
   VH v;
@@ -492,7 +499,6 @@ VH insert_point(Triangulation& tr, const Selection& s, FH t1, std::vector<Tri>* 
     FH k = keep_beside_sliver(tr, v, a, b, kept_x, kept_left ? left : right);
     if (kept) *kept = k;
   }
-  restore_delaunay(tr, v, created);
   return v;
 }
 

@@ -11,6 +11,7 @@
 #include "lepp/audit/judge/conformance.h"
 #include "lepp/audit/judge/diagnosis.h"
 #include "lepp/audit/judge/inexact.h"
+#include "lepp/audit/judge/program_mesh.h"
 #include "lepp/gen.h"
 
 namespace lepp::audit {
@@ -309,6 +310,8 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
                              "this step {} on its own mesh",
                              conf.failure->deviation),
                  kMissingFlipsDefinition);
+    // The arithmetic of the mesh named: the chain again on the program's mesh (program_mesh.h).
+    if (conf.failure) follow_program_mesh(pslg, *run.trace, co, *conf.failure);
     // Theorem 2 on the terminal pair of every replayed step, reported like a conformance finding.
     if (conf.theorem2_failure && c[Row::Theorem2].verdict == Verdict::Held) {
       const Theorem2StepFailure& f = *conf.theorem2_failure;
@@ -342,13 +345,26 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
         r.deviations = conf.failure->chain;
         if (r.consistent_variant) r.detail += fmt::format(" (every step fits this one variant)");
         if (r.deviations.size() > 1) r.detail += "; every deviation: " + chain_text(r.deviations);
+        if (!conf.failure->mesh_reading.empty())
+          r.detail += fmt::format(" (on the program's mesh as the replay rebuilds it: {}; {})", conf.failure->mesh_reading,
+                                  conf.failure->chain_complete ? "to the trace's end"
+                                                               : conf.failure->chain_end_reason + ": " + conf.failure->chain_end);
         if (const std::string note = remark10_ignored_note(*conf.failure); !note.empty()) r.detail += "; " + note;
         if (not_delaunay)
           r.detail += "; the final mesh is not constrained Delaunay: the program's intermediate meshes probably differ "
                       "from the replay's (missing flips are the likely cause)";
         if (co.area_centroid) r.detail += " [reading: area centroid]";
         if (co.arithmetic_double) r.detail += " [reading: arithmetic of doubles]";
-        r.diagnosis = std::make_shared<StepDiagnosis>(conformance_diagnosis(conf, req.theta, not_delaunay));
+        auto diagnosis = std::make_shared<StepDiagnosis>(conformance_diagnosis(conf, req.theta, not_delaunay));
+        // Where the chain stopped at no rule: that step's own picture (issue 42).
+        if (std::optional<ConformanceFailure> end = chain_end_failure(pslg, *run.trace, co, *conf.failure)) {
+          ConformanceReport at_end;
+          at_end.steps = conf.steps;
+          at_end.area_centroid = conf.area_centroid;
+          at_end.failure = std::move(end);
+          diagnosis->chain_end = std::make_shared<const StepDiagnosis>(conformance_diagnosis(at_end, req.theta, not_delaunay));
+        }
+        r.diagnosis = std::move(diagnosis);
         certify::Violation v;
         v.message = describe(conf, 3);
         v.points.push_back(conf.failure->point);

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "judge/chain_summary.h"
+#include "lepp/audit/judge/program_mesh.h"
 #include "lepp/audit/replay.h"
 
 namespace lepp::audit {
@@ -68,6 +69,8 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
       f.chain_end = named == Deviation::Unknown
                         ? fmt::format("step {} is {}", i + 1, named_what)
                         : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
+      f.chain_end_reason = named == Deviation::Unknown ? "no-rule" : "point-rule";
+      f.chain_end_step = i + 1;
       return;
     }
     replay.allow(named);
@@ -81,6 +84,8 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
       for (const DeviationLink& l : f.chain)
         if (l.deviation == name) {
           f.chain_end = fmt::format("step {} is {}'s point at a configuration the replay cannot reach with it", i + 1, name);
+          f.chain_end_reason = "unreachable";
+          f.chain_end_step = i + 1;
           return;
         }
       f.chain.push_back({name, i + 1, 0});
@@ -91,6 +96,8 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
       replay.insert(p, choice);
     } catch (const std::runtime_error& e) {
       f.chain_end = fmt::format("step {} cannot be inserted: {}", i + 1, e.what());
+      f.chain_end_reason = "not-insertable";
+      f.chain_end_step = i + 1;
       return;
     }
     if (choice.deviation != Deviation::Unknown)
@@ -120,6 +127,84 @@ void merge_remark10(ConformanceFailure& f) {
     f.deviation = reversed;
     f.deviation_definition = definition(Deviation::Remark10Reversed);
   }
+}
+
+// The program's mesh in words, for a chain's end.
+const char* mesh_words(MeshReading reading) {
+  switch (reading) {
+    case MeshReading::NoFlips: return "without flips";
+    case MeshReading::NoFlipsButSplits: return "without flips but after a constrained edge's split";
+    case MeshReading::DoubleIncircle: return "with its flips decided in double";
+    case MeshReading::FloatPoints: return "with its points at float rounding";
+    case MeshReading::Exact: break;
+  }
+  return "exactly";
+}
+
+// follow_chain on the program's mesh, from the trace's first step: f.chain[0] (the
+// arithmetic name, at f.step) stays first; each step that is no allowed choice
+// there is named by the catalogue and its rule allowed, as follow_chain does; a
+// step no rule fits ends the chain with program-mesh-lost, not unknown: on the
+// exact mesh such a step is expected, on the program's it says the replay lost it.
+// Returns the steps it followed (the trace's length when complete).
+std::size_t follow_on_program_mesh(Replay& replay, const std::vector<Point>& trace, MeshReading reading, ConformanceFailure& f,
+                                   std::size_t& centroid_inside) {
+  f.chain = {{f.deviation, f.step + 1, 0}};
+  f.chain_complete = false;
+  f.chain_end.clear();
+  f.chain_end_reason.clear();
+  f.chain_end_step = 0;
+  f.mesh_reading = to_string(reading);
+  replay.allow(deviation_named(f.deviation));  // a rule set's name first (the fallback of follow_program_mesh); no-op for the mesh's
+  std::size_t i = 0;
+  while (i < trace.size()) {
+    const Point& p = trace[i];
+    ReplayChoice choice;
+    if (!replay.match(p, choice)) {
+      const DeviationMatch diagnosis = replay.diagnose(p);
+      const std::string name = to_string(diagnosis.deviation);
+      if (diagnosis.deviation == Deviation::Unknown) {
+        f.chain_end = fmt::format("step {} fits no rule of the catalogue on the program's mesh as the replay rebuilds it ({}): "
+                                  "the program's mesh there is another, or its point is no rule; {}",
+                                  i + 1, mesh_words(reading), diagnosis.what);
+        f.chain_end_reason = "program-mesh-lost";
+        f.chain_end_step = i + 1;
+        return i;
+      }
+      for (const DeviationLink& l : f.chain)
+        if (l.deviation == name) {
+          f.chain_end = fmt::format("step {} is {}'s point at a configuration the replay cannot reach with it on the program's mesh ({})",
+                                    i + 1, name, mesh_words(reading));
+          f.chain_end_reason = "unreachable";
+          f.chain_end_step = i + 1;
+          return i;
+        }
+      f.chain.push_back({name, i + 1, 0});
+      if (!has_variant(diagnosis.deviation)) {
+        f.chain_end = fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, name);
+        f.chain_end_reason = "point-rule";
+        f.chain_end_step = i + 1;
+        return i;
+      }
+      replay.allow(diagnosis.deviation);
+      continue;  // the same step again, with the new name allowed
+    }
+    try {
+      replay.insert(p, choice);
+    } catch (const std::runtime_error& e) {
+      f.chain_end = fmt::format("step {} cannot be inserted in the program's mesh as the replay rebuilds it ({}): {}", i + 1,
+                                mesh_words(reading), e.what());
+      f.chain_end_reason = "not-insertable";
+      f.chain_end_step = i + 1;
+      return i;
+    }
+    if (choice.deviation != Deviation::Unknown)
+      for (DeviationLink& l : f.chain) l.steps += l.deviation == to_string(choice.deviation);
+    centroid_inside += remark10_centroid(choice);
+    ++i;
+  }
+  f.chain_complete = true;
+  return i;
 }
 
 std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
@@ -245,6 +330,94 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
   return report;
 }
 
+MeshReading mesh_reading_for(const std::string& deviation) {
+  if (deviation == "missing-flips") return MeshReading::NoFlips;
+  if (deviation == "inexact-incircle") return MeshReading::DoubleIncircle;
+  if (deviation == "single-precision") return MeshReading::FloatPoints;
+  return MeshReading::Exact;
+}
+
+void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace, const ConformanceOptions& options,
+                         ConformanceFailure& f) {
+  MeshReading reading = mesh_reading_for(f.deviation);
+  if (!options.check_variant) return;
+  // A chain lost on the exact mesh with nothing in the final mesh to say why: a
+  // program whose flips were decided in double may have had another mesh for a
+  // while (later insertions flipped it back to Delaunay). Kept only when that
+  // mesh takes the chain to the trace's end.
+  const bool only_if_complete = reading == MeshReading::Exact;
+  if (only_if_complete) {
+    if (f.chain_end_reason != "no-rule") return;
+    reading = MeshReading::DoubleIncircle;
+  }
+  // Missing flips may be missing everywhere, only after a point put in a face (a
+  // split made by a library's Delaunay insertion), or where a double in-circle
+  // test overflows or underflows (huge or subnormal coordinates: beyond rounding,
+  // so not inexact-incircle): each is tried, and the one that follows the trace
+  // farthest is kept (the first on a tie).
+  std::vector<MeshReading> readings{reading};
+  if (reading == MeshReading::NoFlips)
+    readings.insert(readings.end(), {MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle});
+  std::optional<ConformanceFailure> best;
+  std::size_t best_reached = 0;
+  for (MeshReading r : readings) {
+    ReplayRules rules = rules_of(options);
+    rules.mesh = r;
+    // A program that misses flips breaks no cocircular tie: its mesh is not Delaunay anyway.
+    if (r == MeshReading::NoFlips || r == MeshReading::NoFlipsButSplits) rules.follow_cocircular_flips = false;
+    Replay replay(validated, rules);
+    if (options.arithmetic_double)
+      for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
+    ConformanceFailure g = f;
+    std::size_t centroid_inside = 0;
+    const std::size_t reached = follow_on_program_mesh(replay, trace, r, g, centroid_inside);
+    merge_remark10(g);
+    g.remark10_centroid_inside_steps = centroid_inside;
+    if (!best || reached > best_reached) best = std::move(g), best_reached = reached;
+    if (best->chain_complete) break;
+  }
+  if (only_if_complete && !best->chain_complete) return;
+  f = std::move(*best);
+}
+
+std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const std::vector<Point>& trace,
+                                                    const ConformanceOptions& options, const ConformanceFailure& f) {
+  if (f.chain_end_reason != "no-rule" && f.chain_end_reason != "program-mesh-lost") return std::nullopt;
+  if (f.chain_end_step == 0 || f.chain_end_step > trace.size()) return std::nullopt;
+  ReplayRules rules = rules_of(options);
+  for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints})
+    if (f.mesh_reading == to_string(r)) rules.mesh = r;
+  if (rules.mesh == MeshReading::NoFlips || rules.mesh == MeshReading::NoFlipsButSplits) rules.follow_cocircular_flips = false;
+  Replay replay(validated, rules);
+  if (options.arithmetic_double)
+    for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
+  for (const DeviationLink& l : f.chain) replay.allow(deviation_named(l.deviation));
+  const std::size_t end = f.chain_end_step - 1;
+  try {
+    for (std::size_t i = 0; i < end; ++i) {
+      ReplayChoice choice;
+      if (!replay.match(trace[i], choice)) return std::nullopt;
+      replay.insert(trace[i], choice);
+    }
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
+  ConformanceFailure g;
+  g.step = end;
+  g.point = trace[end];
+  g.reason = f.chain_end;
+  g.mesh = replay.mesh();
+  std::vector<ReplayChoice> all = replay.all_choices(g.point, 20, g.candidates_total);
+  for (const auto& c : all) g.candidates.push_back(candidate(c));
+  if (!all.empty()) g.nearest_distance = all.front().distance;
+  const DeviationMatch dm = replay.diagnose(g.point);
+  g.deviation = to_string(dm.deviation);
+  g.deviation_what = dm.what;
+  g.deviation_definition = definition(dm.deviation);
+  g.mesh_reading = f.mesh_reading;
+  return g;
+}
+
 std::string chain_text(const std::vector<DeviationLink>& chain) {
   std::string s;
   for (const DeviationLink& l : chain) s += fmt::format("{}{} from step {}", s.empty() ? "" : "; then ", l.deviation, l.first_step);
@@ -282,8 +455,9 @@ std::string describe(const ConformanceReport& r, std::size_t max_candidates) {
     s += fmt::format("every one of the {} steps is the paper's choice or {}'s ({} of them {}'s): one consistent variant\n", r.steps,
                      f.deviation, f.variant_steps, f.deviation);
   if (f.chain.size() > 1 || !f.chain_end.empty())
-    s += fmt::format("every deviation of the trace: {}{}\n", chain_text(f.chain),
-                     f.chain_complete ? " (to the trace's end)" : "; the replay stopped: " + f.chain_end);
+    s += fmt::format("every deviation of the trace: {}{}{}\n", chain_text(f.chain),
+                     f.chain_complete ? " (to the trace's end)" : "; the replay stopped: " + f.chain_end,
+                     f.mesh_reading.empty() ? "" : fmt::format(" [followed on the program's mesh: {}]", f.mesh_reading));
   if (const std::string note = remark10_ignored_note(f); !note.empty()) s += note + "\n";
   std::size_t n = std::min(max_candidates, f.candidates.size());
   if (n) s += fmt::format("nearest of {} choices at this step:\n", f.candidates_total);

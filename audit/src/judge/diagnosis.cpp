@@ -100,6 +100,10 @@ std::string diagnosis_markdown(const StepDiagnosis& d) {
       md += fmt::format("{} `{}` from step {}{}", i ? "; then" : "", f.chain[i].deviation, f.chain[i].first_step,
                         f.chain[i].steps ? fmt::format(" ({} steps)", f.chain[i].steps) : "");
     md += f.chain_complete ? ", to the trace's end.\n" : fmt::format(". The replay stopped: {}.\n", f.chain_end);
+    if (!f.mesh_reading.empty())
+      md += fmt::format("The replay followed the program's mesh as it rebuilds it (`{}`, from the name `{}` of the final "
+                        "mesh), not the exact one.\n",
+                        f.mesh_reading, f.deviation);
   }
   if (const std::string note = remark10_ignored_note(f); !note.empty()) md += "\n" + note + ".\n";
   if (d.final_not_delaunay)

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <variant>
 
 #include <fmt/format.h>
 
+#include "lepp/audit/judge/diagnosis.h"
 #include "lepp/audit/theta_text.h"
 #include "lepp/audit/judge/signature.h"
 #include "lepp/audit/report/finding.h"
@@ -165,6 +167,11 @@ void save_one(AuditReport& rep, AuditSession& session, const AuditInput& input, 
   cx.detail = last.result[row].detail;
   cx.deviation = last.result[row].deviation;
   cx.deviations = last.result[row].deviations;
+  if (const auto& d = last.result[row].diagnosis)
+    if (const auto* f = std::get_if<ConformanceFailure>(&d->failure)) {
+      cx.chain_end_reason = f->chain_end_reason;
+      cx.mesh_reading = f->mesh_reading;
+    }
   // Absolute paths: reproduce.sh works from any directory.
   const fs::path abs_dir = fs::absolute(cx.dir).lexically_normal();
   if (!opt.reproduce_prefix.empty())

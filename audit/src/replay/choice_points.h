@@ -35,8 +35,12 @@ inline double abs_max(const CPoint& p) {
 }
 
 // The point tolerance for a choice of this scale (ReplayRules::point_tolerance_ulps).
+// Under MeshReading::FloatPoints the same number of float units (FLT_EPSILON, the
+// smallest subnormal float): a program that holds floats rounds there.
 inline double point_tolerance(const ReplayRules& rules, double scale) {
   double ulps = std::max(rules.point_tolerance_ulps, 0.0);
+  if (rules.mesh == MeshReading::FloatPoints)
+    return std::max(ulps * FLT_EPSILON * scale, ulps * double(std::numeric_limits<float>::denorm_min()));
   return std::max(ulps * DBL_EPSILON * scale, ulps * std::numeric_limits<double>::denorm_min());
 }
 

@@ -13,6 +13,17 @@ struct Replay::Impl : replay_detail::Replayer {
 
 const char* to_string(CentroidReading reading) { return reading == CentroidReading::Area ? "area" : "vertex"; }
 
+const char* to_string(MeshReading reading) {
+  switch (reading) {
+    case MeshReading::Exact: return "exact";
+    case MeshReading::NoFlips: return "no-flips";
+    case MeshReading::NoFlipsButSplits: return "no-flips-but-splits";
+    case MeshReading::DoubleIncircle: return "double-incircle";
+    case MeshReading::FloatPoints: return "float-points";
+  }
+  return "?";
+}
+
 Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_unique<Impl>(pslg, rules)) {}
 Replay::~Replay() = default;
 bool Replay::match(const Point& p, ReplayChoice& choice) { return impl_->match(p, choice); }

@@ -12,6 +12,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "insert_unflipped.h"
 #include "lepp/angle.h"
 
 namespace lepp::audit::replay_detail {
@@ -312,7 +313,12 @@ bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) {
 void Replayer::insert(const Point& p, const ReplayChoice& choice) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::runtime_error("not a finite point");
   Selection s;
-  s.point = p;
+  // A float program's point stands for the choice it computed before rounding:
+  // the replay keeps that one, the program's own mesh (MeshReading::FloatPoints).
+  s.point = rules.mesh == MeshReading::FloatPoints && std::isfinite(choice.point.x) && std::isfinite(choice.point.y) &&
+                    choice.terminal_edge[0] >= 0
+                ? choice.point
+                : p;
   FH f;
   int i = -1;
   if (choice.split_edge[0] >= 0) {
@@ -326,13 +332,18 @@ void Replayer::insert(const Point& p, const ReplayChoice& choice) {
     s.split_face = f, s.split_index = i;
   } else {
     Cdt::Locate_type lt;
-    f = tr.cdt.locate(CPoint(p.x, p.y), lt, i, hint());
+    f = tr.cdt.locate(CPoint(s.point.x, s.point.y), lt, i, hint());
     if (lt == Cdt::VERTEX) throw std::runtime_error("the point is already a vertex");
     if (lt == Cdt::EDGE && f->is_constrained(i)) s.split_face = f, s.split_index = i;  // exactly on a constrained edge
   }
   VH v;
   try {
-    v = insert_point(tr, s, f);
+    // The program's mesh (MeshReading): no flips, or flips decided in double.
+    const bool split = s.split_face != FH();
+    const bool own_flips = rules.mesh == MeshReading::NoFlips || rules.mesh == MeshReading::DoubleIncircle ||
+                           (rules.mesh == MeshReading::NoFlipsButSplits && !split);
+    v = own_flips ? insert_point_unflipped(tr, s, f) : insert_point(tr, s, f);
+    if (rules.mesh == MeshReading::DoubleIncircle) double_lawson(v);
   } catch (const std::logic_error& e) {
     throw std::runtime_error(e.what());
   }

@@ -36,6 +36,9 @@ class Replayer {
   Theorem2Check theorem2(const ReplayChoice& choice) const;
   // diagnose.cpp: which catalogue rule p is.
   DeviationMatch diagnose(const Point& p) const;
+  // double_lawson.cpp: Lawson flips around v, each decided by the in-circle
+  // determinant evaluated in double (MeshReading::DoubleIncircle).
+  void double_lawson(VH v);
 
   // From now on the variant's points are choices too (Replay::allow).
   void allow(Deviation variant) {

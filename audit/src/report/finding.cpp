@@ -187,6 +187,20 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
     } catch (const std::exception& e) {
       md += fmt::format("\n(step.svg not drawn: {})\n", e.what());
     }
+    // The step where the chain stopped at no rule (issue 42): its own picture, so a
+    // reader can see which rule the point misses and add one.
+    if (const auto& end = result.diagnosis->chain_end) {
+      std::string words = diagnosis_markdown(*end);
+      const std::string heading = "## The step (step.svg)";
+      if (const std::size_t at = words.find(heading); at != std::string::npos)
+        words.replace(at, heading.size(), "## Where the chain stopped (chain-end.svg)");
+      md += words;
+      try {
+        write_text(d / "chain-end.svg", diagnosis_svg(*end, fmt::format("{} step {}: the chain stopped", row_key(row), end->step())));
+      } catch (const std::exception& e) {
+        md += fmt::format("\n(chain-end.svg not drawn: {})\n", e.what());
+      }
+    }
   }
   write_text(d / "finding.md", md);
 }

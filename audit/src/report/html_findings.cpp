@@ -70,6 +70,9 @@ std::string finding_section(html::Page& page, const Counterexample& c, bool inte
   out += "<div id=\"" + escape(anchor) + "-step\">" +
          (step.empty() && !c.deviations.empty() ? std::string("<p>no picture of the step (no step.svg in the directory)</p>") : step) +
          "</div>\n";
+  out += picture(page, dir / "chain-end.svg",
+                 "Where the chain of deviations stopped: the mesh just before that step, the nearest choices and the program's point",
+                 "step");
   out += input_picture(page, dir, c);
   out += picture(page, dir / "finding-zoom.svg", "The program's mesh around the violation", "step");
   std::string whole = picture(page, dir / "finding.svg", "The program's whole mesh, the violation in red", "step");

@@ -255,6 +255,8 @@ nlohmann::json json_report(const AuditReport& rep) {
                         {"reproduce", c.reproduce}};
     if (!c.deviation.empty()) j["deviation"] = c.deviation;
     if (!c.deviations.empty()) j["deviations"] = deviations_json(c.deviations);
+    if (!c.chain_end_reason.empty()) j["chain_end_reason"] = c.chain_end_reason;
+    if (!c.mesh_reading.empty()) j["mesh_reading"] = c.mesh_reading;
     return j;
   };
   nlohmann::json rows = nlohmann::json::array();

@@ -69,6 +69,8 @@ Counterexample counterexample_of(const nlohmann::json& j, Row row) {
   c.detail = j.at("detail").get<std::string>();
   c.deviation = j.value("deviation", std::string());
   if (j.contains("deviations")) c.deviations = deviations_of(j.at("deviations"));
+  c.chain_end_reason = j.value("chain_end_reason", std::string());
+  c.mesh_reading = j.value("mesh_reading", std::string());
   c.original_detail = j.at("original_detail").get<std::string>();
   c.original_input = j.at("original_input").get<std::string>();
   c.deterministic = j.at("deterministic").get<bool>();

@@ -265,6 +265,60 @@ TEST(AuditDeclaredReading, MissingFlipsNamedAsTheLikelyCause) {
   EXPECT_EQ(conf.at("deviations").value("missing-flips", 0u), conf.at("failed").get<std::size_t>()) << conf.dump(2);
 }
 
+// Issue 42: after missing-flips the chain goes on on the program's mesh (no flips),
+// so the midpoint-only program without flips ("missing-flips from step 3; then
+// unknown from step 8" on the exact mesh) is named terminal-midpoint at every
+// later step, to the trace's end, and no run's chain ends unknown.
+TEST(AuditDeclaredReading, MissingFlipsFollowedOnTheProgramsMesh) {
+  const AuditRun r = audit("no-flips-terminal-midpoint", mesher("--bug terminal-midpoint --bug no-flips"),
+                           kOwnInputs + " --method centroid --theta 20,25,30 --no-shrink --max-findings 3");
+  ASSERT_FALSE(r.report.is_discarded()) << r.err;
+  const json& conf = row(r.report, "conformance");
+  ASSERT_GE(conf.at("failed").get<std::size_t>(), 3u) << conf.dump(2);
+  EXPECT_EQ(conf.at("deviations").value("unknown", 0u), 0u) << conf.dump(2);
+  EXPECT_EQ(conf.at("deviations").value("missing-flips", 0u), conf.at("failed").get<std::size_t>()) << conf.dump(2);
+  EXPECT_GE(conf.at("deviations").value("terminal-midpoint", 0u), 1u) << conf.dump(2);
+  for (const json& cx : conf.at("counterexamples")) {
+    EXPECT_NE(cx.at("detail").get<std::string>().find("on the program's mesh as the replay rebuilds it: no-flips"), std::string::npos)
+        << cx.dump(2);
+    EXPECT_EQ(cx.value("mesh_reading", "").rfind("no-flips", 0), 0u) << cx.dump(2);
+    const std::string md = slurp(fs::path(cx.at("dir").get<std::string>()) / "finding.md");
+    EXPECT_NE(md.find("The replay followed the program's mesh"), std::string::npos) << md;
+  }
+}
+
+// Issue 42, item 2: a chain that stops at a step no rule fits gets the picture of
+// that step (chain-end.svg), its words in finding.md and its picture in the HTML
+// report; a chain that reaches the trace's end gets none. The Lepp along shortest
+// edges reaches configurations of no rule after an other-second-longest step.
+TEST(AuditEveryDeviation, ChainStoppedAtNoRuleIsPictured) {
+  const fs::path html =
+      fs::temp_directory_path() / ("lepp_audit_test_" + std::to_string(::getpid())) / "shortest-edge-chain-end" / "report.html";
+  const AuditRun r = audit("shortest-edge-chain-end", mesher("--bug shortest-edge"),
+                           " --inputs " + kSource + "/corpus/paper --method centroid --theta 20,25,30 --no-shrink --max-findings 12" +
+                               " --html " + html.string());
+  ASSERT_FALSE(r.report.is_discarded()) << r.err;
+  const AuditRun again = audit("other-second-longest-chain-complete", mesher("--bug other-second-longest"),
+                               " --inputs " + kSource + "/corpus/paper --method centroid --theta 20,25,30 --no-shrink --max-findings 3");
+  int pictured = 0;
+  for (const json& cx : row(r.report, "conformance").at("counterexamples")) {
+    const json& chain = cx.at("deviations");
+    const bool stopped_unknown = chain.size() > 1 && chain.back().at("deviation") == "unknown";
+    const fs::path dir = cx.at("dir").get<std::string>();
+    EXPECT_EQ(fs::exists(dir / "chain-end.svg"), stopped_unknown) << cx.dump(2);
+    if (!stopped_unknown) continue;
+    EXPECT_EQ(cx.value("chain_end_reason", ""), "no-rule") << cx.dump(2);
+    ++pictured;
+    const std::string md = slurp(dir / "finding.md");
+    EXPECT_NE(md.find("## Where the chain stopped (chain-end.svg)"), std::string::npos) << md;
+    EXPECT_NE(slurp(dir / "chain-end.svg").find("<svg"), std::string::npos);
+  }
+  EXPECT_GE(pictured, 1) << row(r.report, "conformance").dump(2);
+  EXPECT_NE(slurp(html).find("Where the chain of deviations stopped"), std::string::npos);
+  for (const json& cx : row(again.report, "conformance").at("counterexamples"))
+    EXPECT_FALSE(fs::exists(fs::path(cx.at("dir").get<std::string>()) / "chain-end.svg")) << cx.dump(2);
+}
+
 // A program with two deviations (issue 30): one audit names both. The row
 // counts every name over the runs, a counterexample's JSON lists its trace's
 // deviations in the order the trace shows them, and its finding says the chain.

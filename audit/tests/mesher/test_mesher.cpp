@@ -26,7 +26,8 @@
 // lengths compared as computed in double), inexact-threshold (theta compared with
 // a few ulps of slack: a triangle below theta by less than rounding stays) and
 // inexact-incircle (a last Delaunay pass with an in-circle test in double that
-// flips near-cocircular quads the other way). Each is described at its use.
+// flips near-cocircular quads the other way), double-flips (every insertion's
+// Lawson flips decided by an in-circle test in double). Each is described at its use.
 // --bug may be given more than once: a program with several deviations at once
 // (area-centroid with other-second-longest: two rules for disjoint configurations).
 #include <algorithm>
@@ -85,7 +86,8 @@ enum class Bug {
   single_precision, printed_digits,
   inexact_length,     // squared edge lengths compared as computed in double, not exactly
   inexact_threshold,  // the smallest angle, in double, compared with theta (1 - 16 DBL_EPSILON)
-  inexact_incircle    // near-cocircular quads flipped the other way by an in-circle test in double
+  inexact_incircle,   // near-cocircular quads flipped the other way by an in-circle test in double
+  double_flips        // every insertion's Lawson flips decided by the in-circle determinant in double
 };
 
 struct Options {
@@ -117,7 +119,7 @@ Bug parse_bug(const std::string& s) {
       {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips},
       {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits},
       {"inexact-length", Bug::inexact_length}, {"inexact-threshold", Bug::inexact_threshold},
-      {"inexact-incircle", Bug::inexact_incircle}};
+      {"inexact-incircle", Bug::inexact_incircle}, {"double-flips", Bug::double_flips}};
   auto it = names.find(s);
   if (it == names.end()) usage("unknown bug '" + s + "'");
   return it->second;
@@ -218,6 +220,7 @@ class Mesher {
   bool process(Face f);  // one Lepp search + insertion; false if nothing can be done
   Vertex insert_point(const P2& q, Face hint);
   Vertex split_constrained(Face f, int i);
+  void legalize_in_double(Vertex v);
   void set_domain_around(Vertex v, Vertex c, bool c_side, bool other_side);
   void collect_bad(std::vector<std::array<int, 3>>& stack) const;
   std::array<int, 3> face_key(Face f) const {
@@ -325,6 +328,37 @@ bool Mesher::skipped(Face f) const {
   return false;
 }
 
+// The double-flips bug: Lawson flips around v as a double program writes them, the
+// in-circle determinant in Shewchuk's translated form evaluated in double (the
+// triangle across from its smallest vertex by coordinates, v as the fourth point),
+// flipped when positive; never across a constraint, never into a fold.
+void Mesher::legalize_in_double(Vertex v) {
+  auto incircle = [](std::array<P2, 3> t, const P2& d) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    const double adx = t[0].x() - d.x(), ady = t[0].y() - d.y(), bdx = t[1].x() - d.x(), bdy = t[1].y() - d.y(),
+                 cdx = t[2].x() - d.x(), cdy = t[2].y() - d.y();
+    const double al = adx * adx + ady * ady, bl = bdx * bdx + bdy * bdy, cl = cdx * cdx + cdy * cdy;
+    return al * (bdx * cdy - cdx * bdy) + bl * (cdx * ady - adx * cdy) + cl * (adx * bdy - bdx * ady);
+  };
+  std::vector<Face> stack;
+  Cdt::Face_circulator fc = cdt_.incident_faces(v), done = fc;
+  do stack.push_back(fc); while (++fc != done);
+  std::reverse(stack.begin(), stack.end());
+  while (!stack.empty()) {
+    Face f = stack.back();
+    stack.pop_back();
+    const int i = f->index(v);
+    Face n = f->neighbor(i);
+    if (f->is_constrained(i) || cdt_.is_infinite(f) || cdt_.is_infinite(n)) continue;
+    if (!(incircle({n->vertex(0)->point(), n->vertex(1)->point(), n->vertex(2)->point()}, v->point()) > 0)) continue;
+    const P2 &a = f->vertex(Cdt::ccw(i))->point(), &b = f->vertex(Cdt::cw(i))->point(), &o = n->vertex(n->index(f))->point();
+    if (CGAL::orientation(v->point(), a, o) != CGAL::LEFT_TURN || CGAL::orientation(v->point(), o, b) != CGAL::LEFT_TURN) continue;
+    cdt_.flip(f, i);
+    stack.push_back(n);
+    stack.push_back(f);
+  }
+}
+
 // After inserting v on a constrained edge, faces around v on the side of c
 // (a vertex that was the apex there) take c_side, the others other_side.
 void Mesher::set_domain_around(Vertex v, Vertex c, bool c_side, bool other_side) {
@@ -348,7 +382,8 @@ Vertex Mesher::split_constrained(Face f, int i) {
   bool f_in = in_domain(f), g_in = in_domain(g);
   P2 m((a->point().x() + b->point().x()) / 2, (a->point().y() + b->point().y()) / 2);
   int seg = segment_of_edge_.at(key(id(a), id(b)));
-  Vertex v = cdt_.insert(m, Cdt::EDGE, f, i);
+  Vertex v = opt_.has(Bug::double_flips) ? cdt_.Cdt::Ctr::insert(m, Cdt::EDGE, f, i) : cdt_.insert(m, Cdt::EDGE, f, i);
+  if (opt_.has(Bug::double_flips)) legalize_in_double(v);
   v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
   v->info().segments = {seg};
   steiner_.push_back(m);
@@ -368,7 +403,9 @@ Vertex Mesher::insert_point(const P2& q, Face hint) {
     return Vertex();
   if (lt == Cdt::EDGE && loc->is_constrained(li)) return Vertex();
   // The no-flips bug: the plain constrained triangulation's insertion, no Delaunay flips after it.
-  Vertex v = opt_.has(Bug::no_flips) ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
+  const bool own_flips = opt_.has(Bug::no_flips) || opt_.has(Bug::double_flips);
+  Vertex v = own_flips ? cdt_.Cdt::Ctr::insert(q, lt, loc, li) : cdt_.insert(q, lt, loc, li);
+  if (opt_.has(Bug::double_flips)) legalize_in_double(v);
   v->info().id = static_cast<int>(pslg_.vertices.size() + steiner_.size());
   steiner_.push_back(q);
   vertex_of_id_.push_back(v);

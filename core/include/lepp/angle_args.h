@@ -23,6 +23,11 @@ AngleArgs angle_args(const Point& o, const Point& p, const Point& q);
 // a zero, |atan2| is the same).
 std::array<AngleArgs, 3> triangle_angle_args(const Point& a, const Point& b, const Point& c);
 
+// triangle_angle_args(a, b, c)[k] from the two sides at corner k only, when the
+// three sides have positive, finite lengths whose squares neither overflow nor
+// underflow (the caller checks; then triangle_angle_args takes the same path).
+AngleArgs corner_angle_args(const Point& a, const Point& b, const Point& c, int k);
+
 // atan2(cross, dot) in degrees, in (-180, 180]: signed_angle_deg's value.
 double signed_degrees(const AngleArgs& a);
 

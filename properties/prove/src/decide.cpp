@@ -14,6 +14,8 @@
 namespace lepp::prove {
 namespace {
 
+bool same(const theorems::GridPoint& a, const theorems::GridPoint& b) { return a.x == b.x && a.y == b.y; }
+
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -46,6 +48,10 @@ Decision sampled(const Row& row, Decision d, const Options& opt) {
       d.confirmed = true;
       d.counterexample = "`" + path.substr(path.rfind('/') + 1) + "`: " + theorems::show(pair.quad) + " in a mesh of " +
                          std::to_string(pts.size()) + " points";
+      const theorems::TerminalQuad& q = pair.quad;
+      d.points = {{"A", q.A.x, q.A.y}, {"B", q.B.x, q.B.y}, {"C", q.C.x, q.C.y}, {"D", q.D.x, q.D.y}};
+      for (const theorems::GridPoint& p : pts)
+        if (!(same(p, q.A) || same(p, q.B) || same(p, q.C) || same(p, q.D))) d.points.push_back({"mesh vertex", p.x, p.y});
       return d;
     }
   }
@@ -86,10 +92,10 @@ Decision decide_without(const std::string& statement, const std::string& dropped
     return d;
   }
   if (!row->sampled.empty() && dropped.empty()) return sampled(*row, d, opt);
-  if (!row->via.empty()) {
-    Decision lemma = decide(row->via, opt);
+  for (const std::string& via : row->via) {
+    Decision lemma = decide(via, opt);
     if (lemma.outcome != Outcome::Proved) {
-      d.note = "its lemma " + row->via + " is not proved: " + decided_cell(lemma);
+      d.note = "its lemma " + via + " is not proved: " + decided_cell(lemma);
       return d;
     }
   }
@@ -130,6 +136,10 @@ Decision decide_without(const std::string& statement, const std::string& dropped
   }
   d.outcome = Outcome::Refuted;
   d.counterexample = s.config->show();
+  d.points = {{"B", 0, 0}, {"A", s.config->L, 0}};
+  const char* names[] = {"C", "D", "V"};
+  for (std::size_t i = 0; 2 * i + 1 < s.config->v.size() && i < 3; ++i)
+    d.points.push_back({names[i], s.config->v[2 * i], s.config->v[2 * i + 1]});
   if (row->check && (dropped.empty() || row->negative_check)) {
     theorems::Verdict v = row->check(*s.config, !dropped.empty());
     // The row's own check must reject the point: as written (hypothesis met, conclusion
@@ -176,6 +186,32 @@ std::vector<std::string> hypotheses(const std::string& statement) {
   build(*row, o);
   for (const auto& [n, h] : o.hyps) out.push_back(n);
   return out;
+}
+
+std::vector<std::vector<std::string>> x1_cuts(const std::string& statement) {
+  const Row* row = find_row(statement);
+  return row ? row->x1_cuts : std::vector<std::vector<std::string>>{};
+}
+
+std::string slice_gap(const std::vector<std::string>& cuts) {
+  z3::context ctx;
+  Obligation o(ctx);
+  o.x1_cuts = {cuts};
+  try {
+    for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+      z3::solver s(ctx);
+      s.add(ctx.real_val(cuts[j].c_str()) >= ctx.real_val(cuts[j + 1].c_str()));
+      if (s.check() != z3::unsat) return "cuts not increasing: " + cuts[j] + ", " + cuts[j + 1];
+    }
+    z3::expr any = ctx.bool_val(false);
+    for (const z3::expr& slice : slices(o, 0)) any = any || slice;
+    z3::solver s(ctx);
+    s.add(!any);
+    if (s.check() != z3::unsat) return "some x1 is in no slice: " + s.get_model().to_string();
+  } catch (const z3::exception& e) {
+    return std::string("not a rational cut: ") + e.msg();
+  }
+  return "";
 }
 
 std::string essential_hypothesis(const std::string& statement) {

@@ -36,14 +36,15 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
   };
   for (const Decision& d : decisions) {
     const Row* row = find_row(d.statement);
-    if (row && !row->via.empty() && d.outcome == Outcome::Proved && !theorems::find_statement(row->via) &&
-        !listed(row->via)) {
-      Decision lemma;
-      lemma.statement = row->via;
-      lemma.outcome = Outcome::Proved;
-      lemma.method = "Z3";
-      all.push_back(lemma);
-    }
+    if (row && d.outcome == Outcome::Proved)
+      for (const std::string& via : row->via) {
+        if (theorems::find_statement(via) || listed(via)) continue;
+        Decision lemma;
+        lemma.statement = via;
+        lemma.outcome = Outcome::Proved;
+        lemma.method = "Z3";
+        all.push_back(lemma);
+      }
     if (!listed(d.statement)) all.push_back(d);
   }
   for (const Decision& d : all) {
@@ -71,8 +72,13 @@ std::vector<ObligationFile> obligation_files(const std::vector<Decision>& decisi
     for (std::size_t i = 0; i < parts.size(); ++i) {
       // A refuted row's one check of the whole claim runs nlsat in its own order.
       std::string tactic = expected == "unsat" ? nlsat_tactic_smt2(o, i) : std::string(kTactic);
-      body += "(push 1)\n(assert " + (!parts[i]).to_string() + ")\n(check-sat-using " + tactic + ")\n(pop 1)\n";
-      answers += (answers.empty() ? "" : ",") + expected;
+      // A proved conjunct split into slices of x1 (Row::x1_cuts): one check per slice.
+      for (const z3::expr& slice : expected == "unsat" ? slices(o, i) : std::vector<z3::expr>{ctx.bool_val(true)}) {
+        body += "(push 1)\n";
+        if (!slice.is_true()) body += "(assert " + slice.to_string() + ")\n";
+        body += "(assert " + (!parts[i]).to_string() + ")\n(check-sat-using " + tactic + ")\n(pop 1)\n";
+        answers += (answers.empty() ? "" : ",") + expected;
+      }
     }
     expected = answers;
     std::ostringstream smt;

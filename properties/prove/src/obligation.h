@@ -27,6 +27,8 @@ struct Obligation {
   std::map<std::string, z3::expr> cache;  // square roots and cosines made once
   // nlsat's variable order per conjunct of the claim (Row::nlsat_seeds; 0: its own order).
   std::vector<unsigned> seeds;
+  // Per conjunct, the cut points on x1 that split it into slices (Row::x1_cuts).
+  std::vector<std::vector<std::string>> x1_cuts;
 
   z3::expr num(const std::string& rational) { return ctx.real_val(rational.c_str()); }
   // A defined variable r with r >= 0 and r^2 = e.
@@ -69,9 +71,9 @@ struct Row {
   std::string not_decided;  // non-empty: not first-order over the reals, why
   std::string sampled;      // corpus file of the sampled counterexample that refutes the row
   std::string known_extreme;  // the configuration the tight constant approaches, if known
-  // A proved row whose claim stands in for some hypotheses here (the proof is the
+  // Proved rows (lemmas) whose claims stand in for some hypotheses here (the proof is the
   // composition: the lemma's hypotheses give its claim, which with the rest gives ours).
-  std::string via;
+  std::vector<std::string> via;
   // QEPCAD B: write its input file for CI (the rows it answers within seconds, measured:
   // a four-variable CAD of the other rows runs for minutes), and try it before Z3
   // (the rows nlsat does not decide in minutes).
@@ -84,6 +86,12 @@ struct Row {
   // trying seeds 1, 2, ... with the z3 binary on the written file, and fixed here so the
   // library and the file CI re-checks run the same procedure.
   std::vector<unsigned> nlsat_seeds;
+  // Per conjunct of the claim, in order: cut points c1 < ... < cn on x1 (rationals) that
+  // split its obligation into the slices x1 <= c1, c1 <= x1 <= c2, ..., x1 >= cn, each
+  // decided (and written) on its own; the slices cover every x1, so the conjunct is
+  // proved when every slice is. Empty: one piece. For the conjuncts nlsat decides in
+  // each slice within a second and not within minutes whole.
+  std::vector<std::vector<std::string>> x1_cuts;
 };
 
 const std::vector<Row>& prover_rows();

@@ -32,7 +32,8 @@ std::string decided_cell(const Decision& d) {
     case Outcome::Refuted:
       return "**refuted** (" + d.method + (d.method.rfind("Z3", 0) == 0 ? ", " + seconds(d.seconds) : "") +
              "): " + d.counterexample +
-             (d.confirmed ? ", rejected by the row's check function" : " (" + d.note + ")");
+             (d.confirmed ? ", rejected by the row's check function" : " (" + d.note + ")") +
+             (d.picture.empty() ? "" : " ([picture](" + d.picture + "))");
     case Outcome::NotDecided: break;
   }
   return "**not decided**: " + d.note;

@@ -39,6 +39,13 @@ struct Apex {
     return o.quotient("cosa1" + tag, (o.num("1/2") - x) * (1 - x) + y * y, cm() * ca());
   }
   expr cos_beta() const { return o.quotient("cosb" + tag, o.num("1/2") - x, cm()); }  // angle BMC
+  // The circumcentre O = (1/2, oy) (oy < 0 when obtuse at P) and the circumradius R.
+  expr oy() const { return o.quotient("oy" + tag, dot(), 2 * y); }
+  expr R() const { return o.root("R" + tag, o.num("1/4") + oy() * oy()); }
+  // V = (vx, vy) not strictly inside the circle through B, A, P.
+  expr outside(const expr& vx, const expr& vy) const {
+    return y * (vx * vx + vy * vy - vx) - vy * (x * x + y * y - x) >= 0;
+  }
   // d(M) to the triangle's own vertices: min(|MB|, |MC|) > k |BC| (or >=).
   expr own_dM_above(const expr& k, bool strict) const {
     expr r = k * k * bc2();
@@ -94,7 +101,7 @@ MeshVertex make_mesh_vertex(Obligation& o, const Pair& p) {
   o.primary.push_back(x3);
   o.primary.push_back(y3);
   expr pv = x3 * x3 + y3 * y3 - x3;
-  o.hyp("V outside CC(ABC)", p.y1 * pv - y3 * (p.x1 * p.x1 + p.y1 * p.y1 - p.x1) >= 0);
+  o.hyp("V outside CC(ABC)", p.C().outside(x3, y3));
   o.hyp("V outside CC(ABD)", p.y2 * pv - y3 * (p.x2 * p.x2 + p.y2 * p.y2 - p.x2) <= 0);
   return {x3, y3};
 }
@@ -291,7 +298,7 @@ std::vector<Row> make_rows() {
     r.shape = Shape::Triangle;
     r.constant = "1";
     r.constant_meaning = "d(M)/|BC| >= k times the ratio of the triangle of angles 120, alpha0, 60 - alpha0";
-    r.via = "Theorem2.TerminalTrianglesLargestAngleAtMost120";
+    r.via = {"Theorem2.TerminalTrianglesLargestAngleAtMost120"};
     r.build = [](Obligation& o, const expr& k) {
       // The pair's hypotheses enter through Theorem 2 (proved): the angle at C is at most 120.
       Apex c = make_triangle(o);
@@ -369,39 +376,90 @@ std::vector<Row> make_rows() {
   rows.push_back(l8aii);
   rows.push_back(lemma8_own(false));
   // (b): d(M) over every vertex of the mesh: the claim for one free vertex V outside both circumcircles.
-  auto lemma8_b = [](Lemma8Part part) {
+  {
+    // Not a row of the table: the lemma the rows Lemma 8 (b)(ii) and (b)(iii) use to
+    // eliminate the free mesh vertex V. M = (1/2, 0) and O = (1/2, oy) lie on AB's
+    // perpendicular bisector; for ABC obtuse at C, oy < 0 and the point of the circle
+    // nearest M is the top of the arc through C, at distance R + oy (the arc's sagitta):
+    // a vertex not strictly inside the circle is at least that far from M.
+    Row r;
+    r.statement = "Lemma8.MeshVertexOutsideObtuseCircumcircle";
+    r.shape = Shape::Mesh;
+    r.build = [](Obligation& o, const expr&) {
+      expr x1 = o.ctx.real_const("x1"), y1 = o.ctx.real_const("y1"), x3 = o.ctx.real_const("x3"),
+           y3 = o.ctx.real_const("y3");
+      o.primary = {x1, y1, x3, y3};
+      Apex c{o, x1, y1, "C"};
+      o.hyp("C above AB", y1 > 0);
+      o.hyp("obtuse", c.obtuse());
+      o.hyp("V outside CC(ABC)", c.outside(x3, y3));
+      expr s = c.R() + c.oy();
+      o.claim = (x3 - o.num("1/2")) * (x3 - o.num("1/2")) + y3 * y3 >= s * s;
+    };
+    r.essential = "V outside CC(ABC)";
+    r.note = "|MV| >= R + oy for every V not strictly inside the circumcircle of ABC, obtuse at C";
+    rows.push_back(r);
+  }
+  {
+    // (b)(i): d(M) over every vertex of the mesh, the claim for one free vertex V outside both circumcircles.
     Row r;
     r.shape = Shape::Mesh;
-    r.statement = part == Lemma8Part::b_i    ? "Lemma8.ObtuseBelow14DistanceAboveBC"
-                  : part == Lemma8Part::b_ii ? "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066"
-                                             : "Lemma8.ObtuseBelow30DistanceAtLeastHalf";
-    r.constant = part == Lemma8Part::b_i ? "1" : part == Lemma8Part::b_ii ? "66/100" : "1/2";
-    r.constant_meaning = part == Lemma8Part::b_iii ? "d(M) >= k |BC|" : "d(M) > k |BC|";
-    r.build = [part](Obligation& o, const expr& k) {
+    r.statement = "Lemma8.ObtuseBelow14DistanceAboveBC";
+    r.constant = "1";
+    r.constant_meaning = "d(M) > k |BC|";
+    r.build = [](Obligation& o, const expr& k) {
       Pair p = make_pair(o);
       p.hypotheses(true);
       Apex c = p.C();
       MeshVertex v = make_mesh_vertex(o, p);
       o.hyp("obtuse", c.obtuse());
-      if (part == Lemma8Part::b_i)  // alpha0 <= 14 strengthened to cos alpha0 >= 0.97 (alpha0 <= 14.07)
-        o.hyp("cos alpha0 >= 0.97", (1 - c.x) * (1 - c.x) >= o.num("9409/10000") * c.ca2());
-      else if (part == Lemma8Part::b_ii)
+      // alpha0 <= 14 strengthened to cos alpha0 >= 0.97 (alpha0 <= 14.07)
+      o.hyp("cos alpha0 >= 0.97", (1 - c.x) * (1 - c.x) >= o.num("9409/10000") * c.ca2());
+      expr mv2 = (v.x - o.num("1/2")) * (v.x - o.num("1/2")) + v.y * v.y;
+      o.claim = mv2 > k * k * c.bc2();
+    };
+    r.check = [](const Config& c, bool) { return check_lemma8(mesh_of(c), Lemma8Part::b_i); };
+    r.essential = "cos alpha0 >= 0.97";
+    r.note = "proved for the stronger hypothesis cos alpha0 >= 0.97 (alpha0 <= 14.07 degrees), which "
+             "contains alpha0 <= 14";
+    rows.push_back(r);
+  }
+  // (b)(ii), (b)(iii) through two lemmas: the free vertex V (six variables with the pair,
+  // beyond nlsat's time limit) is eliminated by Lemma8.MeshVertexOutsideObtuseCircumcircle
+  // (d(M) >= R + oy, the sagitta of the arc through C; reached by the vertex C when ABC is
+  // isosceles), and the pair's D by Theorem 2 (the angle at C is at most 120), leaving the
+  // triangle: R + oy > k |BC| (>= for (b)(iii)); R + oy > 0 since R^2 = 1/4 + oy^2.
+  auto lemma8_b_sagitta = [](Lemma8Part part) {
+    Row r;
+    r.shape = Shape::Triangle;
+    const bool b_ii = part == Lemma8Part::b_ii;
+    r.statement = b_ii ? "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066" : "Lemma8.ObtuseBelow30DistanceAtLeastHalf";
+    r.constant = b_ii ? "66/100" : "1/2";
+    r.constant_meaning = b_ii ? "d(M) > k |BC|" : "d(M) >= k |BC|";
+    r.via = {"Theorem2.TerminalTrianglesLargestAngleAtMost120", "Lemma8.MeshVertexOutsideObtuseCircumcircle"};
+    r.build = [b_ii](Obligation& o, const expr& k) {
+      Apex c = make_triangle(o);
+      o.hyp("angle at C <= 120 (Theorem 2)", c.dot() >= 0 || 4 * c.dot() * c.dot() <= c.ca2() * c.bc2());
+      o.hyp("obtuse", c.obtuse());
+      if (b_ii)
         o.hyp("alpha0 <= alpha_limit", c.le_limit());
       else
         o.hyp("alpha0 <= 30", c.le30());
-      expr mv2 = (v.x - o.num("1/2")) * (v.x - o.num("1/2")) + v.y * v.y;
-      o.claim = part == Lemma8Part::b_iii ? mv2 >= k * k * c.bc2() : mv2 > k * k * c.bc2();
+      expr s = c.R() + c.oy();
+      o.claim = b_ii ? s * s > k * k * c.bc2() : s * s >= k * k * c.bc2();
     };
-    r.check = [part](const Config& c, bool) { return check_lemma8(mesh_of(c), part); };
-    r.essential = part == Lemma8Part::b_i ? "cos alpha0 >= 0.97" : "obtuse";
-    if (part == Lemma8Part::b_i)
-      r.note = "proved for the stronger hypothesis cos alpha0 >= 0.97 (alpha0 <= 14.07 degrees), which "
-               "contains alpha0 <= 14";
+    r.essential = "angle at C <= 120 (Theorem 2)";
+    // (b)(iii) in seed 3's order: 0.1 s with the z3 binary on the written file, 13 s in nlsat's own.
+    if (!b_ii) r.nlsat_seeds = {3};
+    r.note = "through the lemmas Theorem 2 (the angle at C is at most 120) and "
+             "Lemma8.MeshVertexOutsideObtuseCircumcircle (every mesh vertex is at least R + oy from M, the "
+             "sagitta of the arc through C): proved R + oy " + std::string(b_ii ? ">" : ">=") + " k |BC|";
+    r.known_extreme = b_ii ? "the isosceles-apex sagitta at angle C = 120, alpha0 = alpha_limit (1/(4 sin alpha_limit) = 0.6605)"
+                           : "Theorem 2's equality case with ABC isosceles: angle C = 120, D the equilateral apex (exactly 1/2)";
     return r;
   };
-  rows.push_back(lemma8_b(Lemma8Part::b_i));
-  rows.push_back(lemma8_b(Lemma8Part::b_ii));
-  rows.push_back(lemma8_b(Lemma8Part::b_iii));
+  rows.push_back(lemma8_b_sagitta(Lemma8Part::b_ii));
+  rows.push_back(lemma8_b_sagitta(Lemma8Part::b_iii));
   {
     Row r;
     r.statement = "Lemma8.ObtuseAbove14BetaAbove28";
@@ -493,6 +551,11 @@ std::vector<Row> make_rows() {
       o.hyp("alpha0 <= 30", c.le30());
       if (which == 0) o.hyp("obtuse", c.obtuse());
       if (which == 1) o.hyp("not obtuse", !c.obtuse());
+      // (1) with Theorem 2 (proved) as a lemma: the angle at C is at most 120. Implied by the
+      // pair's hypotheses, so redundant for the truth of the row, but it cuts off the flat
+      // obtuse triangles nlsat otherwise explores (d(Q) to C: beyond minutes without it).
+      if (which == 0)
+        o.hyp("angle at C <= 120 (Theorem 2)", c.dot() >= 0 || 4 * c.dot() * c.dot() <= c.ca2() * c.bc2());
       expr qx = p.qx(), qy = p.qy(), r2 = k * k * c.bc2();
       auto d2 = [&](const expr& x, const expr& y) { return (qx - x) * (qx - x) + (qy - y) * (qy - y); };
       expr zero = o.num("0"), one = o.num("1");
@@ -506,15 +569,22 @@ std::vector<Row> make_rows() {
     r.essential = "alpha0 <= 30";
     // The check reads alpha0 > 30 as "not applicable" and compares no distance: a negative
     // test's counterexample is Z3's exact model alone.
-    if (which == 1) r.negative_check = false;
+    if (which >= 0) r.negative_check = false;
     if (which >= 0) {
-      r.via = "Remark13.WorseTriangleByTangents";
+      r.via = {"Remark13.WorseTriangleByTangents"};
+      if (which == 0) r.via.push_back("Theorem2.TerminalTrianglesLargestAngleAtMost120");
       r.note = "with the lemma Remark13.WorseTriangleByTangents (proved first): ABC the worse triangle gives "
-               "tan(DAB) and tan(DBA) >= tan(alpha0), which stands in for it";
+               "tan(DAB) and tan(DBA) >= tan(alpha0), which stands in for it" +
+               std::string(which == 0 ? "; and Theorem 2 (proved): the angle at C is at most 120" : "");
     }
     // Conjuncts d(Q) to B, A, C, D: the one to B is decided in seconds in the order of seed 4
     // and not within minutes in nlsat's own order.
     if (which == 1) r.nlsat_seeds = {4, 0, 0, 0};
+    // (1): d(Q) to B and to A in seed 4's order (about 10 s and 0.1 s; beyond minutes in nlsat's
+    // own), d(Q) to C and to D in four slices of x1 each (one about 10 s, the others under a
+    // second; whole, beyond minutes).
+    if (which == 0) r.nlsat_seeds = {4, 4, 0, 0};
+    if (which == 0) r.x1_cuts = {{}, {}, {"3/10", "35/100", "4/10"}, {"3/10", "35/100", "4/10"}};
     r.known_extreme = which == 1 ? "the mirror kite of two isosceles 30-75-75 triangles (sqrt(6)/4 = 0.6124)"
                       : which == 0 ? "a right ABC with |AD| = |AB| (0.4 sqrt(3) = 0.6928)"
                                    : "";

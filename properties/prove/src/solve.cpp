@@ -52,6 +52,7 @@ std::string nlsat_tactic_smt2(const Obligation& o, std::size_t i) {
 
 void build(const Row& row, Obligation& o, const std::string& k, const std::string& dropped) {
   o.seeds = row.nlsat_seeds;
+  o.x1_cuts = row.x1_cuts;
   row.build(o, o.num(k.empty() ? (row.constant.empty() ? "0" : row.constant) : k));
   if (!dropped.empty()) {
     for (auto it = o.hyps.begin(); it != o.hyps.end(); ++it)
@@ -68,6 +69,18 @@ std::vector<z3::expr> conjuncts(const z3::expr& claim) {
   std::vector<z3::expr> out;
   for (unsigned i = 0; i < claim.num_args(); ++i)
     for (const z3::expr& c : conjuncts(claim.arg(i))) out.push_back(c);
+  return out;
+}
+
+std::vector<z3::expr> slices(const Obligation& o, std::size_t i) {
+  if (i >= o.x1_cuts.size() || o.x1_cuts[i].empty()) return {o.ctx.bool_val(true)};
+  z3::expr x1 = o.ctx.real_const("x1");
+  std::vector<z3::expr> out;
+  const std::vector<std::string>& cuts = o.x1_cuts[i];
+  out.push_back(x1 <= o.ctx.real_val(cuts.front().c_str()));
+  for (std::size_t j = 0; j + 1 < cuts.size(); ++j)
+    out.push_back(o.ctx.real_val(cuts[j].c_str()) <= x1 && x1 <= o.ctx.real_val(cuts[j + 1].c_str()));
+  out.push_back(x1 >= o.ctx.real_val(cuts.back().c_str()));
   return out;
 }
 
@@ -88,24 +101,27 @@ Solved solve(Obligation& o, double time_limit_s) {
   std::optional<z3::solver> found;
   out.answer = Answer::Unsat;
   std::vector<z3::expr> parts = conjuncts(o.claim);
-  for (std::size_t i = 0; i < parts.size(); ++i) {
+  for (std::size_t i = 0; i < parts.size() && !found; ++i) {
     const z3::expr& part = parts[i];
-    z3::solver s = z3::try_for(nlsat_tactic(o, i), limit_ms(time_limit_s)).mk_solver();
-    s.add(premises(o));
-    s.add(!part);
-    z3::check_result r = z3::unknown;
-    try {
-      r = s.check();
-    } catch (const z3::exception& e) {
-      out.reason = std::string("Z3: ") + e.msg();
-    }
-    if (r == z3::sat) {
-      found.emplace(s);
-      break;
-    }
-    if (r == z3::unknown) {
-      out.answer = Answer::Unknown;
-      if (out.reason.empty()) out.reason = "time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s)";
+    for (const z3::expr& slice : slices(o, i)) {
+      z3::solver s = z3::try_for(nlsat_tactic(o, i), limit_ms(time_limit_s)).mk_solver();
+      s.add(premises(o));
+      if (!slice.is_true()) s.add(slice);
+      s.add(!part);
+      z3::check_result r = z3::unknown;
+      try {
+        r = s.check();
+      } catch (const z3::exception& e) {
+        out.reason = std::string("Z3: ") + e.msg();
+      }
+      if (r == z3::sat) {
+        found.emplace(s);
+        break;
+      }
+      if (r == z3::unknown) {
+        out.answer = Answer::Unknown;
+        if (out.reason.empty()) out.reason = "time limit (" + std::to_string(static_cast<int>(time_limit_s)) + " s)";
+      }
     }
   }
   if (!found) {

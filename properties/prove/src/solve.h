@@ -34,6 +34,9 @@ Solved solve(Obligation& o, double time_limit_s);
 // The claim's top-level conjuncts (solve decides them one at a time), and the premises
 // (definitions and hypotheses).
 std::vector<z3::expr> conjuncts(const z3::expr& claim);
+// The slices of conjunct `i` (Row::x1_cuts): x1 <= c1, c1 <= x1 <= c2, ..., x1 >= cn, or
+// the one piece `true` when it has no cuts. Their disjunction is valid.
+std::vector<z3::expr> slices(const Obligation& o, std::size_t i);
 z3::expr_vector premises(const Obligation& o);
 
 // QEPCAD B (cylindrical algebraic decomposition), the second procedure: its input for

@@ -39,11 +39,15 @@ const char* kProvedRows[] = {
     "Lemma8.AcuteBelowAlphaLimitOwnDistanceAbove129",
     "Lemma8.AcuteBelow30OwnDistanceAbove096",
     "Lemma8.ObtuseBelow14DistanceAboveBC",
+    "Lemma8.MeshVertexOutsideObtuseCircumcircle",
+    "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066",
+    "Lemma8.ObtuseBelow30DistanceAtLeastHalf",
     "Lemma8.ObtuseAbove14BetaAbove28",
     "Corollary12.CentroidInsideBetterTriangleWhenItIsTaller",
     "Theorem14.CentroidOnTerminalEdgeIffEqualHeights",
     "Remark13.WorseTriangleByTangents",
     "Remark13.NonObtuseCaseDistanceAbove061",
+    "Remark13.ObtuseCaseDistanceAbove069",
 };
 
 std::string test_name(const std::string& statement) {
@@ -66,13 +70,20 @@ TEST_P(ProvedRow, ProvedAndRefutedWithoutItsEssentialHypothesis) {
   // The counterexample is rejected by the row's check function (hypothesis and
   // conclusion both fail), except for Theorem 2's equality case and Lemma 8 (c),
   // whose obligations have no check function taking a grid configuration, and the lemma of
-  // the narrowed Remark 13 rows (no row of the table); Remark 13 (2)'s check reads alpha0 > 30
+  // the narrowed Remark 13 rows and of Lemma 8 (b)(ii), (b)(iii) (no rows of the table); Lemma 8 (b)(ii)
+  // and (b)(iii), proved on the triangle alone (Theorem 2 stands in for D, the lemma for the free vertex),
+  // whose counterexample without Theorem 2's bound has no Delaunay partner D to make a mesh for the
+  // check (Theorem 2 says so); Remark 13 (1)'s and (2)'s checks read alpha0 > 30
   // as "not applicable" and compares no distance (Row::negative_check), so there Z3's exact
-  // model alone refutes (no other dropped hypothesis gives a point it rejects: without Delaunay or the
+  // model alone refutes (for (2) no other dropped hypothesis gives a point it rejects: without Delaunay or the
   // frame the claim still holds; without the others Z3's points leave the check's case).
   bool has_check = statement != "Theorem2.EqualityCaseCocircularWithEquilateral" &&
                    statement != "Lemma8.ObtuseAbove14BetaAbove28" && statement != "Remark13.WorseTriangleByTangents" &&
-                   statement != "Remark13.NonObtuseCaseDistanceAbove061";
+                   statement != "Remark13.NonObtuseCaseDistanceAbove061" &&
+                   statement != "Remark13.ObtuseCaseDistanceAbove069" &&
+                   statement != "Lemma8.MeshVertexOutsideObtuseCircumcircle" &&
+                   statement != "Lemma8.ObtuseBelowAlphaLimitDistanceAbove066" &&
+                   statement != "Lemma8.ObtuseBelow30DistanceAtLeastHalf";
   if (has_check) EXPECT_TRUE(n.confirmed) << n.counterexample << ": " << n.note;
 }
 
@@ -191,3 +202,61 @@ TEST(ProveFiles, CommittedObligationsAreCurrent) {
 }
 
 }  // namespace
+
+// A refuted row's picture is written, linked from its cell, and names the counterexample's
+// exact points (Lemma 4's isosceles counterexample and a sampled mesh's pair).
+TEST(ProvePictures, WrittenLinkedAndNameTheCounterexamplesPoints) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / "lepp_prove_pictures_test";
+  fs::remove_all(dir);
+  std::vector<Decision> decisions = {decide("Lemma4.BisectionImprovesTBLeavesObtuseTA", options()),
+                                     decide("Lemma8.AcuteBelow30DistanceAbove096", options()),
+                                     decide("Lemma7.ObtuseAlpha1AboveAlpha0", options())};
+  ASSERT_EQ(decisions[0].outcome, Outcome::Refuted);
+  ASSERT_EQ(decisions[1].outcome, Outcome::Refuted);
+  ASSERT_EQ(decisions[2].outcome, Outcome::Proved);
+  std::string error;
+  ASSERT_TRUE(write_counterexample_pictures(dir.string(), "theorems", decisions, &error)) << error;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Decision& d = decisions[i];
+    EXPECT_EQ(d.picture, "theorems/" + picture_name(d.statement));
+    EXPECT_NE(decided_cell(d).find("[picture](theorems/" + picture_name(d.statement) + ")"), std::string::npos);
+    std::ifstream in(dir / picture_name(d.statement));
+    ASSERT_TRUE(in) << picture_name(d.statement);
+    std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(svg.find("<svg"), std::string::npos);
+    ASSERT_GE(d.points.size(), 3u);
+    for (const NamedPoint& p : d.points)
+      EXPECT_NE(svg.find(p.name + " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"), std::string::npos)
+          << d.statement << ": " << p.name;
+    // The points are those of the counterexample the table prints.
+    for (const NamedPoint& p : d.points)
+      if (p.name != "mesh vertex")
+        EXPECT_NE(d.counterexample.find(std::to_string(p.x) + ", " + std::to_string(p.y)), std::string::npos)
+            << d.counterexample << " vs " << p.name;
+  }
+  // A proved row has no picture.
+  EXPECT_TRUE(decisions[2].picture.empty());
+  EXPECT_FALSE(fs::exists(dir / picture_name(decisions[2].statement)));
+  Decision none;
+  EXPECT_THROW(counterexample_svg(none), std::invalid_argument);
+  fs::remove_all(dir);
+}
+
+// A conjunct decided in slices of x1 is proved only if the slices cover every x1: each
+// row's cuts are checked (increasing rationals, their slices' disjunction valid), and a
+// list that leaves a gap or is out of order is rejected.
+TEST(ProveRows, SlicesCoverEveryX1) {
+  int split = 0;
+  for (const std::string& s : row_statements())
+    for (const auto& cuts : x1_cuts(s)) {
+      if (cuts.empty()) continue;
+      ++split;
+      EXPECT_EQ(slice_gap(cuts), "") << s;
+    }
+  EXPECT_GE(split, 2);  // Remark 13 (1): d(Q) to C and to D
+  EXPECT_EQ(slice_gap({"3/10"}), "");
+  EXPECT_NE(slice_gap({"4/10", "3/10"}), "");
+  EXPECT_NE(slice_gap({"3/10", "3/10"}), "");
+  EXPECT_NE(slice_gap({"x"}), "");
+}

@@ -78,6 +78,11 @@ struct Counterexample {
   std::string detail;       // the row's one line on the shrunk input
   std::string deviation;    // conformance: the named deviation on the shrunk input (RowResult::deviation)
   std::vector<DeviationLink> deviations;  // conformance: every deviation of its trace (RowResult::deviations)
+  // Conformance: why its chain stopped, by name ("" when it reached the trace's end or did
+  // not go on; ConformanceFailure::chain_end_reason), and the program's mesh it was
+  // followed on ("" the exact one; ConformanceFailure::mesh_reading).
+  std::string chain_end_reason;
+  std::string mesh_reading;
   std::string original_detail;  // the row's line on the input as found
   std::string original_input;   // DIR/original.poly, the input as found (when shrunk)
   bool deterministic = true;    // a second run on the input as found gave the same output

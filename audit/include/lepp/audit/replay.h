@@ -24,6 +24,19 @@ namespace lepp::audit {
 enum class CentroidReading { Vertex, Area };
 const char* to_string(CentroidReading reading);  // "vertex", "area"
 
+// Which mesh the replay keeps between steps (docs/CONFORMANCE.md, "The program's
+// mesh"): the exact constrained Delaunay one (the paper's), or the one a program
+// whose output shows its arithmetic had. NoFlips: every point inserted without
+// Lawson flips (missing-flips); NoFlipsButSplits: none after a point inserted in
+// a face, the exact ones after a constrained edge's split (a program that splits
+// with its library's Delaunay insertion). DoubleIncircle: Lawson flips decided by
+// the in-circle determinant evaluated in double (inexact-incircle). FloatPoints:
+// the point tolerance in float units, and each point inserted where the exact
+// choice it matched lies, not at the float the program wrote (single-precision).
+enum class MeshReading { Exact, NoFlips, NoFlipsButSplits, DoubleIncircle, FloatPoints };
+// "exact", "no-flips", "no-flips-but-splits", "double-incircle", "float-points"
+const char* to_string(MeshReading reading);
+
 // What counts as the paper's choice (docs/AUDIT.md, "Conformance").
 struct ReplayRules {
   Method method = Method::Centroid;
@@ -59,6 +72,7 @@ struct ReplayRules {
   // rounding above theta as bad too) have a variant; the others are not a rule
   // set. Replay::allow adds more, part way through a trace.
   Deviation variant = Deviation::Unknown;
+  MeshReading mesh = MeshReading::Exact;
 };
 
 // One choice the paper allows at this moment.

@@ -111,6 +111,18 @@ struct ConformanceFailure {
   std::vector<DeviationLink> chain;
   bool chain_complete = false;  // the replay reached the trace's end with the chain's variants allowed
   std::string chain_end;        // else where and why it stopped after the first step, one line ("": it did not go on)
+  // Why it stopped, as a name (docs/CONFORMANCE.md, "The program's mesh"): "" (complete,
+  // or it did not go on), "no-rule" (an unknown step on the exact mesh),
+  // "program-mesh-lost" (a step no rule fits on the program's mesh as rebuilt),
+  // "point-rule" (a point of one bad triangle, like circumcenter), "unreachable"
+  // (a name already allowed, at a configuration the replay cannot reach with it),
+  // "not-insertable" (the point cannot be inserted in the replay's mesh).
+  std::string chain_end_reason;
+  std::size_t chain_end_step = 0;  // the step it stopped at, 1-based (0: complete, or it did not go on)
+  // The mesh the chain was followed on after the first step (MeshReading's names):
+  // "" the exact one; "no-flips", "double-incircle", "float-points" the program's,
+  // chosen by the arithmetic name of the mesh (lepp/audit/judge/program_mesh.h).
+  std::string mesh_reading;
   // Steps that took the quad centroid inside the other triangle where one
   // second-longest edge is constrained: the paper's Remark 10, which a
   // reversed program never does (the evidence for remark10-ignored).

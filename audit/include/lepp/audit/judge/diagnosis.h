@@ -8,6 +8,7 @@
 // whether the final mesh says the intermediate meshes differ).
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -29,6 +30,10 @@ struct StepDiagnosis {
   // The final mesh fails the certifier's Delaunay check: the program's
   // intermediate meshes probably differ from the replay's.
   bool final_not_delaunay = false;
+  // A conformance failure whose chain of deviations stopped at a step no rule
+  // fits (chain_end_reason no-rule or program-mesh-lost): that step, on the mesh
+  // the chain was followed on (chain-end.svg of the finding); null otherwise.
+  std::shared_ptr<const StepDiagnosis> chain_end;
 
   std::size_t step() const;        // 1-based
   const Point& point() const;      // the program's point at that step

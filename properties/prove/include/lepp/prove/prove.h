@@ -19,6 +19,13 @@ namespace lepp::prove {
 enum class Outcome { Proved, Refuted, NotDecided };
 const char* name(Outcome o);
 
+// A point of a counterexample, exact on the integer grid ("B", "A", "C", "D", "V", or
+// "mesh vertex" for the other vertices of a sampled mesh).
+struct NamedPoint {
+  std::string name;
+  std::int64_t x = 0, y = 0;
+};
+
 // One statement of docs/THEOREMS.md's table, decided.
 struct Decision {
   std::string where;      // "Theorem 2", as in the table
@@ -29,7 +36,10 @@ struct Decision {
   // Refuted: the exact counterexample (integer coordinates) and whether the
   // row's check function rejected it (a refutation it does not confirm is a bug).
   std::string counterexample;
+  std::vector<NamedPoint> points;  // the counterexample's points, for its picture
   bool confirmed = false;
+  // The picture's link as the table gives it (write_counterexample_pictures sets it).
+  std::string picture;
   std::string note;  // why not decided, or what the proof assumed (a strengthening)
 };
 
@@ -55,6 +65,13 @@ std::vector<std::string> hypotheses(const std::string& statement);
 Decision decide_without(const std::string& statement, const std::string& dropped, const Options& opt);
 // The hypothesis a negative test drops (the row's essential one).
 std::string essential_hypothesis(const std::string& statement);
+
+// --- Slices: a conjunct may be decided in slices of x1 (x1 <= c1, c1 <= x1 <= c2, ...,
+// x1 >= cn). The row's cut points per conjunct of its claim (empty: not split), and why a
+// list of cuts would not cover every x1 ("" when it does: the cuts are rationals in
+// increasing order and Z3 proves the slices' disjunction valid).
+std::vector<std::vector<std::string>> x1_cuts(const std::string& statement);
+std::string slice_gap(const std::vector<std::string>& cuts);
 
 // --- Obligation files (corpus/theorems/proofs/): SMT-LIB 2 for every algebraic
 // row, QEPCAD B input for the rows with few enough variables. Each file names the
@@ -87,6 +104,17 @@ struct TightConstant {
 };
 std::vector<std::string> tight_statements();
 TightConstant tighten(const std::string& statement, const Options& opt, double tolerance = 1e-6, int max_steps = 40);
+
+// --- Counterexample pictures: the terminal pair (or triangle) of a refuted row drawn
+// with the project's renderer, each point ringed and labelled with its exact coordinates.
+// Throws std::invalid_argument when the decision has no counterexample points.
+std::string counterexample_svg(const Decision& d);
+// The picture's file name for a row: "Lemma4-BisectionImprovesTBLeavesObtuseTA.svg".
+std::string picture_name(const std::string& statement);
+// Writes one SVG per refuted decision with points into `dir` and sets its `picture` to
+// `link_dir` + "/" + the file name (the path the table links, relative to the table).
+bool write_counterexample_pictures(const std::string& dir, const std::string& link_dir, std::vector<Decision>& decisions,
+                                   std::string* error = nullptr);
 
 // --- Markdown. The cell of the "decided" column for one row.
 std::string decided_cell(const Decision& d);

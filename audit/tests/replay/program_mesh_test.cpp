@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The chain followed on the program's mesh (lepp/audit/judge/program_mesh.h,
+// docs/CONFORMANCE.md "The program's mesh"): after missing-flips, inexact-incircle
+// or single-precision, the replay rebuilds the mesh the program had and names
+// every later step there. On audit/tests/mesher's lepp_test_mesher with those bugs
+// (and catalogue rules beside them): the chain reaches the trace's end on the
+// program's mesh, names every rule the exact replay named, and a wrong reading of
+// the mesh (or none) does not get there.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "lepp/audit/judge/conformance.h"
+#include "lepp/audit/judge/program_mesh.h"
+#include "lepp/audit/replay.h"
+#include "lepp/io.h"
+#include "lepp/trace_io.h"
+#include "lepp/validate.h"
+
+namespace lepp::audit {
+namespace {
+
+struct MesherRun {
+  std::string name;
+  Pslg input;
+  std::vector<Point> trace;
+  double theta = 0;
+};
+
+MesherRun mesh(const std::string& poly, double theta, const std::string& bugs) {
+  const std::string out = ::testing::TempDir() + "program_mesh_" + std::to_string(getpid()) + "_" +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string cmd = std::string(LEPP_TEST_MESHER) + " " + poly + " " + out + " " + std::to_string(theta) +
+                          " centroid " + bugs + " 2>/dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::vector<std::string> warnings;
+  return {poly.substr(poly.rfind('/') + 1) + " at " + std::to_string(int(theta)), validate(read_poly(poly), warnings),
+          read_trace(out + ".trace"), theta};
+}
+
+std::vector<std::string> inputs() {
+  std::vector<std::string> out;
+  for (const char* p : {"A", "rect162"}) out.push_back(std::string(LEPP_SOURCE_DIR) + "/corpus/paper/" + p + ".poly");
+  for (const char* p : {"box-with-crack", "box-with-points", "square-with-hole", "thin-rectangle"})
+    out.push_back(std::string(LEPP_SOURCE_DIR) + "/audit/tests/mesher/inputs/" + p + ".poly");
+  return out;
+}
+
+ConformanceOptions options(double theta) {
+  ConformanceOptions c;
+  c.min_angle_deg = theta;
+  return c;
+}
+
+std::set<std::string> names(const ConformanceFailure& f) {
+  std::set<std::string> out;
+  for (const DeviationLink& l : f.chain) out.insert(l.deviation);
+  return out;
+}
+
+// The exact check's failure, renamed as checks.cpp names it from the final mesh.
+ConformanceFailure named(const MesherRun& r, const std::string& name) {
+  ConformanceReport report = check_conformance(r.input, r.trace, options(r.theta));
+  EXPECT_TRUE(report.failure) << r.name;
+  ConformanceFailure f = report.failure ? *report.failure : ConformanceFailure{};
+  f.deviation = name;
+  if (!f.chain.empty()) f.chain.front().deviation = name;
+  return f;
+}
+
+// Each arithmetic name of the mesh reads its own mesh; any other name the exact one.
+TEST(ProgramMesh, ReadingChosenByTheArithmeticName) {
+  EXPECT_EQ(mesh_reading_for("missing-flips"), MeshReading::NoFlips);
+  EXPECT_EQ(mesh_reading_for("inexact-incircle"), MeshReading::DoubleIncircle);
+  EXPECT_EQ(mesh_reading_for("single-precision"), MeshReading::FloatPoints);
+  for (const char* other : {"printed-digits", "area-centroid", "terminal-midpoint", "unknown", "inexact-length", ""})
+    EXPECT_EQ(mesh_reading_for(other), MeshReading::Exact) << other;
+  // A name that reads the exact mesh leaves the failure as it is: here the exact
+  // chain ends at an unknown step (no-rule), and the mesh with flips decided in
+  // double, tried then, does not take this program without flips to the end.
+  const MesherRun r = mesh(inputs()[0], 30, "--bug terminal-midpoint --bug no-flips");
+  ConformanceFailure f = named(r, "area-centroid");
+  EXPECT_EQ(f.chain_end_reason, "no-rule") << f.chain_end;
+  const std::vector<DeviationLink> before = f.chain;
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  EXPECT_TRUE(f.mesh_reading.empty()) << f.mesh_reading;
+  EXPECT_EQ(f.chain.size(), before.size());
+  EXPECT_EQ(f.chain_end_reason, "no-rule");
+}
+
+// The seeded midpoint mesher without flips (issue 42: "missing-flips from step 3;
+// then unknown from step 8"): followed without flips, every run's chain reaches
+// the trace's end and names terminal-midpoint; on the exact mesh some end unknown,
+// and under the wrong reading (flips decided in double) some stop early.
+TEST(ProgramMesh, MissingFlipsFollowedWithoutFlips) {
+  int runs = 0, exact_unknown = 0, wrong_reading_stops = 0;
+  for (const std::string& in : inputs())
+    for (double theta : {20.0, 25.0, 30.0}) {
+      const MesherRun r = mesh(in, theta, "--bug terminal-midpoint --bug no-flips");
+      ConformanceReport exact = check_conformance(r.input, r.trace, options(theta));
+      if (!exact.failure) continue;
+      ++runs;
+      const std::set<std::string> exact_names = names(*exact.failure);
+      exact_unknown += exact_names.count("unknown") > 0;
+      ConformanceFailure f = named(r, "missing-flips");
+      follow_program_mesh(r.input, r.trace, options(theta), f);
+      EXPECT_TRUE(f.chain_complete) << r.name << ": " << chain_text(f.chain) << "; " << f.chain_end;
+      EXPECT_TRUE(f.mesh_reading == "no-flips" || f.mesh_reading == "no-flips-but-splits") << f.mesh_reading;
+      EXPECT_EQ(f.chain.front().deviation, "missing-flips");
+      EXPECT_EQ(names(f).count("unknown"), 0u) << r.name;
+      // The seeded rule wherever the exact replay named it; nothing else but the mesh's name
+      // (the exact mesh's good-triangle or precision were its own mesh's artifacts).
+      if (exact_names.count("terminal-midpoint")) EXPECT_EQ(names(f).count("terminal-midpoint"), 1u) << r.name;
+      for (const std::string& n : names(f)) EXPECT_TRUE(n == "missing-flips" || n == "terminal-midpoint") << r.name << " " << n;
+      if (getenv("LEPP_PROGRAM_MESH_VERBOSE"))
+        std::printf("%s: exact %s; %s%s; program's mesh (%s) %s%s\n", r.name.c_str(), chain_text(exact.failure->chain).c_str(),
+                    exact.failure->chain_complete ? "complete" : "stopped: ", exact.failure->chain_end.c_str(),
+                    f.mesh_reading.c_str(), chain_text(f.chain).c_str(), f.chain_complete ? " (complete)" : "");
+      ConformanceFailure wrong = named(r, "inexact-incircle");
+      follow_program_mesh(r.input, r.trace, options(theta), wrong);
+      wrong_reading_stops += !wrong.chain_complete;
+      // Lost there, the chain ends with a named reason, not an unknown link.
+      EXPECT_EQ(names(wrong).count("unknown"), 0u) << r.name;
+      if (!wrong.chain_complete) EXPECT_FALSE(wrong.chain_end_reason.empty()) << r.name << ": " << wrong.chain_end;
+    }
+  EXPECT_GT(runs, 6);
+  EXPECT_GT(exact_unknown, 0) << "the exact replay no longer loses this mesher: the test shows nothing";
+  EXPECT_GT(wrong_reading_stops, 0);
+}
+
+
+// Flips decided in double (lepp_test_mesher --bug double-flips, with the area
+// centroid and Remark 10 reversed beside it): on huge, tiny and subnormal
+// coordinates the double in-circle overflows or underflows, the final mesh misses
+// flips beyond rounding (missing-flips), and the meshes without flips or with
+// flips decided in double follow it; named inexact-incircle, the latter directly.
+// Every run's chain reaches the trace's end there (the exact replay's stop at an
+// unknown or good-triangle step) with no name but the seeded ones.
+TEST(ProgramMesh, FlipsDecidedInDoubleFollowed) {
+  int runs = 0, exact_stopped = 0;
+  for (const char* in : {"huge-coordinates", "tiny-coordinates", "subnormal-coordinates"})
+    for (double theta : {20.0, 25.0, 30.0}) {
+      const MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/corpus/hostile/" + in + ".poly", theta,
+                               "--bug double-flips --bug area-centroid --bug remark10-reversed");
+      ConformanceReport exact = check_conformance(r.input, r.trace, options(theta));
+      if (!exact.failure) continue;
+      ++runs;
+      exact_stopped += !exact.failure->chain_complete;
+      for (const char* name : {"missing-flips", "inexact-incircle"}) {
+        ConformanceFailure f = named(r, name);
+        follow_program_mesh(r.input, r.trace, options(theta), f);
+        EXPECT_TRUE(f.chain_complete) << r.name << " " << name << ": " << chain_text(f.chain) << "; " << f.chain_end;
+        // Named missing-flips, a mesh without any flip follows as far (the overflowed
+        // test flips nothing): the first reading tried is kept on a tie.
+        if (std::string(name) == "inexact-incircle") EXPECT_EQ(f.mesh_reading, "double-incircle") << r.name;
+        else EXPECT_TRUE(f.mesh_reading == "no-flips" || f.mesh_reading == "double-incircle") << r.name << " " << f.mesh_reading;
+        EXPECT_EQ(names(f).count("unknown"), 0u) << r.name;
+        if (names(*exact.failure).count("area-centroid")) EXPECT_EQ(names(f).count("area-centroid"), 1u) << r.name;
+        for (const std::string& n : names(f))
+          EXPECT_TRUE(n == name || n == "area-centroid" || n == "remark10-reversed" || n == "remark10-ignored") << r.name << " " << n;
+        if (getenv("LEPP_PROGRAM_MESH_VERBOSE"))
+          std::printf("%s: exact %s%s; program's mesh (%s) %s%s\n", r.name.c_str(), chain_text(exact.failure->chain).c_str(),
+                      exact.failure->chain_complete ? " (complete)" : "", f.mesh_reading.c_str(), chain_text(f.chain).c_str(),
+                      f.chain_complete ? " (complete)" : "");
+      }
+    }
+  EXPECT_GE(runs, 6);
+  EXPECT_GT(exact_stopped, 0) << "the exact replay no longer loses this mesher: the test shows nothing";
+}
+
+// A program that holds floats (--bug single-precision): its points are the
+// choices at float rounding; followed with the float tolerance and each point
+// kept where the program computed it, the chain reaches the trace's end with no
+// other name. On the exact mesh it stops at the first step.
+TEST(ProgramMesh, SinglePrecisionFollowedAtFloatRounding) {
+  int runs = 0;
+  for (const std::string& in : inputs())
+    for (double theta : {20.0, 30.0}) {
+      const MesherRun r = mesh(in, theta, "--bug single-precision");
+      ConformanceReport exact = check_conformance(r.input, r.trace, options(theta));
+      if (!exact.failure) continue;
+      ++runs;
+      EXPECT_FALSE(exact.failure->chain_complete && exact.failure->chain.size() == 1 &&
+                   exact.failure->chain.front().deviation == "single-precision");
+      ConformanceFailure f = named(r, "single-precision");
+      follow_program_mesh(r.input, r.trace, options(theta), f);
+      EXPECT_TRUE(f.chain_complete) << r.name << ": " << chain_text(f.chain) << "; " << f.chain_end;
+      EXPECT_EQ(f.mesh_reading, "float-points");
+      EXPECT_EQ(names(f), std::set<std::string>{"single-precision"}) << r.name << ": " << chain_text(f.chain);
+    }
+  EXPECT_GE(runs, 4);
+}
+
+
+// A double program's final mesh can be Delaunay again (later insertions flipped a
+// near tie back) and name nothing: on corpus/hostile/near-touching at 20 degrees
+// the exact chain of the double-flips mesher ends at a step no rule fits; the mesh
+// with flips decided in double takes it to the trace's end with the seeded names.
+TEST(ProgramMesh, ChainLostOnTheExactMeshFollowedWithFlipsDecidedInDouble) {
+  const MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/corpus/hostile/near-touching.poly", 20,
+                           "--bug double-flips --bug area-centroid --bug remark10-reversed");
+  ConformanceReport exact = check_conformance(r.input, r.trace, options(r.theta));
+  ASSERT_TRUE(exact.failure);
+  ConformanceFailure f = *exact.failure;
+  EXPECT_EQ(f.chain_end_reason, "no-rule") << chain_text(f.chain) << "; " << f.chain_end;
+  EXPECT_EQ(names(f).count("unknown"), 1u) << chain_text(f.chain);
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
+  EXPECT_EQ(f.mesh_reading, "double-incircle");
+  EXPECT_EQ(names(f), (std::set<std::string>{"remark10-reversed", "area-centroid"})) << chain_text(f.chain);
+}
+
+}  // namespace
+}  // namespace lepp::audit
