@@ -16,7 +16,6 @@
 #   REPEAT=1, CORPUS=bench/fuzz-corpus. Run it on an idle core: nice, not under load.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-root=$(pwd)
 build=$(readlink -f "${1:-build}")
 fuzz_build=$(readlink -f "${2:-build-fuzz}")
 modes=${MODES:-release sanitizer}
