@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iterator>
 
@@ -15,6 +16,7 @@
 #include "support/fuzz_input.h"
 #include "support/known_loops.h"
 #include "support/loop_guard.h"
+#include "support/same_result.h"
 
 using namespace lepp::fuzz;
 
@@ -302,4 +304,40 @@ TEST_F(CertifyResult, RejectsAMeshedHole) {
 TEST_F(CertifyResult, RejectsAnAngleBelowTheta) {
   if (!have_certifier()) GTEST_SKIP() << "certifier not built";
   EXPECT_NE(certify_problems(pslg, mesh, 30, {}), "");  // the CDT has angles of about 26.6 degrees
+}
+
+// fuzz_differential takes the fast run's verdict for the reference's only when the
+// certifier could not tell the two results apart: any field it reads differs, no.
+TEST_F(CertifyResult, SameCertifierInputSeesEveryFieldTheCertifierReads) {
+  lepp::RefineResult a;
+  a.mesh = mesh;
+  a.outcome = lepp::Outcome::Unimprovable;
+  lepp::UnimprovableTriangle left;
+  left.triangle = mesh.triangles[0];
+  left.reason = lepp::LeftReason::DoublePrecision;
+  left.point = {0.5, 0.5};
+  a.unimprovable.push_back(left);
+  lepp::RefineResult b = a;
+  b.outcome = lepp::Outcome::Converged;  // claims theta as well
+  b.steiner_points = 7;                  // not read by the certifier
+  EXPECT_TRUE(same_certifier_input(a, b));
+  const std::vector<std::function<void(lepp::RefineResult&)>> edits = {
+      [](lepp::RefineResult& r) { r.outcome = lepp::Outcome::SteinerBudget; },
+      [](lepp::RefineResult& r) { r.mesh.vertices[5].x = std::nextafter(r.mesh.vertices[5].x, 9.0); },
+      [](lepp::RefineResult& r) { r.mesh.input_vertices -= 1; },
+      [](lepp::RefineResult& r) { std::swap(r.mesh.triangles[0], r.mesh.triangles[1]); },
+      [](lepp::RefineResult& r) { r.mesh.constrained_edges[0].segment += 1; },
+      [](lepp::RefineResult& r) { r.mesh.constrained_edges.pop_back(); },
+      [](lepp::RefineResult& r) { r.unimprovable.clear(); },
+      [](lepp::RefineResult& r) { r.unimprovable[0].reason = lepp::LeftReason::SmallInputAngle; },
+      [](lepp::RefineResult& r) { r.unimprovable[0].point.y = 0.25; },
+      [](lepp::RefineResult& r) { r.unimprovable[0].rule = lepp::Rule::TerminalMidpoint; },
+      [](lepp::RefineResult& r) { r.unimprovable[0].segment2 = 3; },
+  };
+  for (std::size_t i = 0; i < edits.size(); ++i) {
+    lepp::RefineResult c = a;
+    edits[i](c);
+    EXPECT_FALSE(same_certifier_input(a, c)) << "edit " << i;
+    EXPECT_FALSE(same_certifier_input(c, a)) << "edit " << i;
+  }
 }

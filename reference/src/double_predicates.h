@@ -45,6 +45,36 @@ inline int compare_tiny_squared_lengths(double abx, double aby, double cdx, doub
   return compare_squared_lengths_exact(a, b, c, d);
 }
 
+// x + y == s exactly (Knuth's TwoSum: its error term is exact when nothing overflows).
+inline bool sum_is_exact(double x, double y, double s) {
+  const double yy = s - x;
+  return (x - (s - yy)) + (y - yy) == 0;
+}
+
+// A squared length computed in doubles, when every step was exact: the differences (TwoSum),
+// the squares (fma gives the product's error; it is a double when the square lies in
+// [2^-960, 2^960], which |difference| in [2^-480, 2^480] or 0 ensures) and their sum.
+// Lengths that tie exactly (grid inputs: most of the filter's failures) need no Mpzf then.
+inline bool exact_squared_length(const Point& a, const Point& b, double& out) {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  auto fits = [](double v) {
+    const double m = std::fabs(v);
+    return m == 0 || (m >= 0x1p-480 && m <= 0x1p480);
+  };
+  if (!fits(dx) || !fits(dy) || !sum_is_exact(a.x, -b.x, dx) || !sum_is_exact(a.y, -b.y, dy)) return false;
+  const double xx = dx * dx, yy = dy * dy;
+  if (std::fma(dx, dx, -xx) != 0 || std::fma(dy, dy, -yy) != 0) return false;
+  out = xx + yy;
+  return sum_is_exact(xx, yy, out);
+}
+
+// The filter could not decide: both lengths exact in doubles, or the exact path.
+inline int compare_undecided_squared_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
+  double lab, lcd;
+  if (exact_squared_length(a, b, lab) && exact_squared_length(c, d, lcd)) return (lab > lcd) - (lab < lcd);
+  return compare_squared_lengths_exact(a, b, c, d);
+}
+
 // sign(|ab|^2 - |cd|^2) exactly: -1, 0 or +1.
 inline int compare_squared_lengths(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double abx = a.x - b.x, aby = a.y - b.y, cdx = c.x - d.x, cdy = c.y - d.y;
@@ -58,7 +88,7 @@ inline int compare_squared_lengths(const Point& a, const Point& b, const Point& 
     const double margin = 8 * kU * (lab + lcd);
     if (lab - lcd > margin) return 1;
     if (lcd - lab > margin) return -1;
-    return compare_squared_lengths_exact(a, b, c, d);
+    return compare_undecided_squared_lengths(a, b, c, d);
   }
   if (big < 0x1p-900) return compare_tiny_squared_lengths(abx, aby, cdx, cdy, a, b, c, d);
   return compare_squared_lengths_exact(a, b, c, d);

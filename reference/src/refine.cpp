@@ -25,13 +25,30 @@ using namespace detail;
 
 std::string tri_string(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
 
-// For a guard outcome: the triangle being processed and its Lepp.
+// For a guard outcome: the triangle being processed and its Lepp, by ids (they
+// outlive the faces an insertion destroys), written out only when a guard stops.
+struct LeppIds {
+  Tri bad{};
+  std::vector<Tri> path;
+  int a = -1, b = -1;  // the terminal edge
+  void take(const Tri& t, const Lepp& lepp) {
+    bad = t;
+    path.clear();
+    for (FH f : lepp.path) path.push_back(ccw_ids(f));
+    a = id(lepp.t1->vertex(Cdt::ccw(lepp.edge)));
+    b = id(lepp.t1->vertex(Cdt::cw(lepp.edge)));
+  }
+  std::string text() const {
+    std::string s = "triangle " + tri_string(bad) + ", Lepp";
+    for (const Tri& t : path) s += " " + tri_string(t);
+    return s + fmt::format(", terminal edge ({},{})", a, b);
+  }
+};
+
 std::string describe(const Tri& bad, const Lepp& lepp) {
-  std::string s = "triangle " + tri_string(bad) + ", Lepp";
-  for (FH f : lepp.path) s += " " + tri_string(ccw_ids(f));
-  int l = lepp.edge;
-  s += fmt::format(", terminal edge ({},{})", id(lepp.t1->vertex(Cdt::ccw(l))), id(lepp.t1->vertex(Cdt::cw(l))));
-  return s;
+  LeppIds ids;
+  ids.take(bad, lepp);
+  return ids.text();
 }
 
 class Refiner {
@@ -303,7 +320,7 @@ class Refiner {
     if (first && too_big(f)) ++result_.area_refined;
     ++result_.lepp_searches;
     result_.lepp_triangles += static_cast<std::int64_t>(lepp.path.size());
-    std::string where = describe(t, lepp);  // before the insertion invalidates the faces
+    where_.take(t, lepp);  // before the insertion invalidates the faces; text only if the floor stops the run
     if (options_.trace) {
       result_.trace.push_back(trace_step(t, lepp, s));
       result_.trace.back().round = result_.rounds;
@@ -321,7 +338,7 @@ class Refiner {
     std::vector<Queued> fresh = new_bad(v, kept);
     if (options_.on_insertion) options_.on_insertion(extract_mesh(tr_));
     if (options_.on_progress && steiner_ % 1000 == 0) options_.on_progress(steiner_);
-    if (below_edge_floor(v)) outcome_ = Outcome::EdgeFloor, stuck_ = where;
+    if (below_edge_floor(v)) outcome_ = Outcome::EdgeFloor, stuck_ = where_.text();
     return fresh;
   }
 
@@ -451,6 +468,7 @@ class Refiner {
   LongestEdgeMemo longest_memo_;
   Outcome outcome_ = Outcome::Converged;
   std::string stuck_;
+  LeppIds where_;  // the last insertion's triangle and Lepp, for an edge-floor stop
   std::chrono::steady_clock::time_point start_;
   std::vector<Tri> last_star_;  // the last insertion's domain faces around its point (and a kept one)
   std::vector<Tri> created_;  // the flip order: the last insertion's triangles, in creation order

@@ -82,6 +82,26 @@ TEST(ReferenceDoubleLengths, LengthsDifferingInTheLastBit) {
   expect_compare({kTiny, 0}, {0, kTiny}, {0, 0}, {kTiny, 0}, 1);
 }
 
+// The filter's undecided cases are answered in doubles when every step was exact
+// (exact_squared_length): each step that is not must send the case to Mpzf.
+TEST(ReferenceDoubleLengths, UndecidedCasesTrustOnlyExactDoubleSteps) {
+  // Exact everywhere: grid ties, answered in doubles.
+  double l = 0;
+  ASSERT_TRUE(lepp::reference::detail::exact_squared_length({0, 0}, {3, 4}, l));
+  EXPECT_EQ(l, 25);
+  expect_compare({1, 1}, {4, 5}, {0, 0}, {0, 5}, 0);
+  // A difference rounded: 1 - (-2^-60) is 1 in doubles.
+  expect_compare({1, 0}, {-0x1p-60, 0}, {1, 0}, {0, 0}, 1);
+  // A square rounded: (1 + 2^-30)^2 needs 61 bits.
+  expect_compare({0, 0}, {1 + 0x1p-30, 0}, {0, 0}, {1 + 0x1p-30 - 0x1p-52, 0}, 1);
+  // A square below the doubles beside a length of 1: 2^-1200 vanishes and fma's
+  // error term with it (the range guard), so 1 + 2^-1200 must not tie with 1.
+  expect_compare({0, 0}, {1, 0x1p-600}, {0, 0}, {1, 0}, 1);
+  expect_compare({0, 0}, {1, 0x1p-600}, {0, 0}, {0x1p-600, 1}, 0);
+  // A sum rounded: 1 + 2^-60 against 1.
+  expect_compare({0, 0}, {1, 0x1p-30}, {0, 0}, {1, 0}, 1);
+}
+
 TEST(ReferenceDoubleLengths, SquaresRoundedInTheSubnormalsAreNotTrusted) {
   // |ab|^2 = 2.6 * 2^-1074 rounds to 3 * 2^-1074; |cd|^2 = 2 * 1.45 * 2^-1074, each
   // square rounded to 2^-1074: in doubles ab looks longer by a whole unit, yet it is shorter.

@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Fuzzing throughput (issue 40, item 4): a fixed corpus per band of CI's fuzz job
+# (bench/fuzz-corpus/ROW, the rows of scripts/ci.d/35-fuzz-bands.sh with their
+# environment) replayed once through each fuzz target, in two builds:
+#   release:   BUILD/fuzz/<target>_replay --as-fuzzer (the default Release build, g++)
+#   sanitizer: FUZZ_BUILD/fuzz/<target> FILE... (clang-14, libFuzzer, ASan, UBSan:
+#              CI's fuzz build), each file run once, as libFuzzer runs a corpus.
+# The checks are the fuzzers' own: a finding stops the row (the corpus is clean on
+# main); known classes are kept in a scratch directory. fuzz_engine runs BUILD's
+# lepp, traced, as CI does. Prints a markdown table: inputs, wall and CPU seconds
+# (user + system, children included: the rate to compare on a shared machine) and
+# executions per CPU second and per wall second; the median of REPEAT runs.
+# usage: bench/fuzz_throughput.sh [BUILD] [FUZZ_BUILD]   (default build, build-fuzz)
+#   MODES="release sanitizer" (one of them to skip the other), ONLY="row ..." (rows by name),
+#   REPEAT=1, CORPUS=bench/fuzz-corpus. Run it on an idle core: nice, not under load.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=$(readlink -f "${1:-build}")
+fuzz_build=$(readlink -f "${2:-build-fuzz}")
+modes=${MODES:-release sanitizer}
+repeat=${REPEAT:-1}
+corpus=$(readlink -f "${CORPUS:-bench/fuzz-corpus}")
+lepp=$build/cli/lepp
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export ASAN_OPTIONS="abort_on_error=1:detect_leaks=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+# NAME TARGET [VAR=VALUE ...]: scripts/ci.d/35-fuzz-bands.sh's rows.
+rows=(
+  "parse fuzz_parse"
+  "cdt fuzz_cdt"
+  "refine-centroid fuzz_refine LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
+  "refine-midpoint fuzz_refine LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
+  "refine-precision fuzz_refine LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
+  "differential fuzz_differential"
+  "engine-lepp fuzz_engine LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
+  "audit fuzz_audit"
+)
+
+# One replay: prints "WALL CPU" in seconds, or fails with the log's finding lines.
+replay() {  # MODE NAME TARGET VARS...
+  local mode=$1 name=$2 target=$3
+  shift 3
+  local work=$tmp/$mode-$name
+  rm -rf "$work" && mkdir -p "$work/known" "$work/engine"
+  local env_vars=(LEPP_FUZZ_KNOWN_DIR="$work/known" "$@")
+  if [[ $target == fuzz_engine ]]; then
+    env_vars+=("LEPP_ENGINE_CMD=$lepp refine {in} -o {out} --min-angle {theta} --method {method} --trace -q"
+               LEPP_ENGINE_TIMEOUT=60 LEPP_ENGINE_WORK="$work/engine")
+  fi
+  local cmd
+  if [[ $mode == release ]]; then
+    cmd=("$build/fuzz/${target}_replay" --as-fuzzer "$corpus/$name")
+  else
+    cmd=("$fuzz_build/fuzz/$target" -timeout=300 -rss_limit_mb=4096 -malloc_limit_mb=2048
+         -artifact_prefix="$work/" "$corpus/$name"/*)
+  fi
+  local start end status=0
+  start=$(date +%s.%N)
+  env "${env_vars[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "${cmd[@]}" > "$work/log" 2>&1 || status=$?
+  end=$(date +%s.%N)
+  if [[ $status -ne 0 ]]; then
+    echo "fuzz_throughput: $mode $name ($target) stopped, exit $status:" >&2
+    grep -m3 'LEPP-FINDING\|ERROR: \|SUMMARY\|FAIL' "$work/log" >&2 || tail -5 "$work/log" >&2
+    return 1
+  fi
+  awk -v s="$start" -v e="$end" 'END { printf "%.3f %.3f\n", e - s, $1 + $2 }' "$work/time"
+}
+
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+for mode in $modes; do
+  case $mode in
+    release) probe=$build/fuzz/fuzz_parse_replay ;;
+    sanitizer) probe=$fuzz_build/fuzz/fuzz_parse ;;
+    *) echo "fuzz_throughput: unknown mode $mode (release, sanitizer)" >&2; exit 2 ;;
+  esac
+  [[ -x $probe ]] || { echo "fuzz_throughput: $probe is missing (build the fuzz targets of $mode first)" >&2; exit 2; }
+done
+[[ -x $lepp ]] || { echo "fuzz_throughput: $lepp is missing (fuzz_engine runs it)" >&2; exit 2; }
+
+echo "| row | build | inputs | wall s | CPU s | exec/s (CPU) | exec/s (wall) |"
+echo "|---|---|---:|---:|---:|---:|---:|"
+failed=0
+for row in "${rows[@]}"; do
+  read -r name target vars <<<"$row"
+  if [[ -n ${ONLY:-} && " $ONLY " != *" $name "* ]]; then continue; fi
+  [[ -d $corpus/$name ]] || { echo "fuzz_throughput: $corpus/$name is missing" >&2; exit 2; }
+  inputs=$(find "$corpus/$name" -maxdepth 1 -type f | wc -l)
+  for mode in $modes; do
+    : > "$tmp/times"
+    for ((i = 0; i < repeat; ++i)); do
+      # shellcheck disable=SC2086
+      if ! replay "$mode" "$name" "$target" $vars >> "$tmp/times"; then failed=1; continue 2; fi
+    done
+    wall=$(cut -d' ' -f1 "$tmp/times" | median)
+    cpu=$(cut -d' ' -f2 "$tmp/times" | median)
+    awk -v n="$name" -v m="$mode" -v k="$inputs" -v w="$wall" -v c="$cpu" \
+      'BEGIN { printf "| %s | %s | %d | %.2f | %.2f | %.1f | %.1f |\n", n, m, k, w, c, (c > 0 ? k / c : 0), k / w }'
+  done
+done
+exit $failed
