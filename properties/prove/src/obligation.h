@@ -101,8 +101,10 @@ struct Row {
   std::function<std::string(double time_limit_s)> side;
 };
 
-// The Lemma 7 (I) rows (transcendental.cpp).
+// The Lemma 7 (I) rows (transcendental.cpp), and a row's box problem with its constant
+// replaced by k_num/k_den (k_den = 0: the row's own constant).
 Row lemma7_transcendental(const std::string& statement);
+bnb::Problem lemma7_problem(const std::string& statement, const std::string& dropped, long k_num = 0, long k_den = 0);
 
 const std::vector<Row>& prover_rows();
 const Row* find_row(const std::string& statement);

@@ -134,6 +134,12 @@ std::string right_triangles(double time_limit_s) {
 
 }  // namespace
 
+bnb::Problem lemma7_problem(const std::string& statement, const std::string& dropped, long k_num, long k_den) {
+  Spec sp = spec_of(statement);
+  if (k_den != 0) sp.k_num = k_num, sp.k_den = k_den;
+  return problem(sp, dropped);
+}
+
 Row lemma7_transcendental(const std::string& statement) {
   Spec sp = spec_of(statement);
   Row r;
