@@ -97,7 +97,8 @@ Decision decide_boxes(const Row& row, Decision d, const std::string& dropped, co
   d.confirmed = dropped.empty() ? v.hypothesis && !v.conclusion && !v.tie : v.rejected();
   if (!d.confirmed) {
     d.outcome = Outcome::NotDecided;
-    d.note = "the boxes found " + d.counterexample + " but the row's check function does not reject it (" + v.detail + ")";
+    d.note = "the boxes found " + d.counterexample + " but the row's check function does not reject it (" + v.detail +
+             ")";
   }
   return d;
 }

@@ -188,7 +188,8 @@ Outcome run(const Problem& p, double time_limit_s) {
     return out;
   }
   if (!out.left.empty()) {
-    out.why = std::to_string(out.left.size()) + (stack.empty() ? "" : "+") + " boxes left near " + describe(p, out.left);
+    out.why =
+        std::to_string(out.left.size()) + (stack.empty() ? "" : "+") + " boxes left near " + describe(p, out.left);
     return out;
   }
   out.result = Result::Proved;
