@@ -72,10 +72,11 @@ bool sine_bound_closes(const bnb::Box& b, long k_num, long k_den, const std::str
   keep("BC <= CA", x <= c.real_val(1, 2));
   keep("BA longest", (1 - x) * (1 - x) + y * y <= 1);
   keep("acute", x * x - x + y * y > 0);
-  s.add(y > 0 && x < 1);  // the closing argument needs alpha0 in (0, pi/2): else not closed
-  s.add(w >= 0 && w * w == (c.real_val(1, 2) - x) * (c.real_val(1, 2) - x) + y * y);
-  s.add(u * (1 - x) == y);
-  s.add(2 * c.real_val(k_num) * w > c.real_val(k_den) * (1 - u * u / 6));
+  // Unsat: every point of the box meeting the hypotheses kept has alpha0 in (0, pi/2)
+  // (y > 0, x < 1: the argument needs it) and meets the closing condition.
+  z3::expr misses = w >= 0 && w * w == (c.real_val(1, 2) - x) * (c.real_val(1, 2) - x) + y * y &&
+                    u * (1 - x) == y && 2 * c.real_val(k_num) * w > c.real_val(k_den) * (1 - u * u / 6);
+  s.add(!(y > 0 && x < 1) || misses);
   return s.check() == z3::unsat;
 }
 
