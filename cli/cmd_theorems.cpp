@@ -102,7 +102,13 @@ Z3's nlsat procedure, complete for nonlinear real arithmetic, decides
 when it has one, turned into an exact integer-grid configuration that the
 row's own check function (the one its sampling property calls) rejects;
 **not decided** with the reason otherwise (not first-order over the reals, or
-the time limit). Rows refuted by a sampled mesh counterexample stay refuted by
+the time limit). The transcendental rows, Lemma 7 (I) (an angle compared with a
+decimal multiple of an angle), are decided by a rigorous interval
+branch-and-bound (MPFI, outward rounding) on the triangle C = (x1, y1) in the
+box [0, 1/2] x [0, 1], its degenerate corner C -> B (where alpha1/alpha0 -> 1
+and no interval is certain) closed by Z3 on an algebraic sufficient condition;
+a box left undecided makes the row not decided, never proved.
+Rows refuted by a sampled mesh counterexample stay refuted by
 it, re-checked; each refuted row's counterexample is also drawn (`--pictures`,
 `docs/theorems/`, linked from its cell). Each decided obligation is written to
 `corpus/theorems/proofs/` (SMT-LIB 2, and QEPCAD B input where it has at most
@@ -235,9 +241,10 @@ void add_theorems_command(CLI::App& app, int& status) {
   cmd->add_option("--only", args->only, "Run only these statements (Suite.Name)");
   cmd->add_option("--seed", args->seed, "RapidCheck seed (default: the fixed seed of the certificate)");
   cmd->add_flag("--prove", args->prove,
-                "Also decide every row for all configurations (Z3): proved, refuted by an exact counterexample, or "
-                "not decided and why (the \"decided\" column)");
-  cmd->add_option("--time-limit", args->time_limit, "With --prove: seconds per solver call (default 30)")
+                "Also decide every row for all configurations (Z3; Lemma 7 (I) by MPFI interval boxes): proved, "
+                "refuted by an exact counterexample, or not decided and why (the \"decided\" column)");
+  cmd->add_option("--time-limit", args->time_limit,
+                  "With --prove: seconds per solver call and per branch-and-bound (default 30)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--tight-time-limit", args->tight_time_limit,
                   "With --tight: seconds per solver call of the bisection (default 10)")

@@ -22,7 +22,7 @@ apt-get install -y --no-install-recommends \
   python3-meshio gmsh python3-gmsh \
   dpkg-dev file gcovr llvm-14 \
   chromium python3-pil \
-  libz3-dev z3 qepcad
+  libz3-dev z3 qepcad libmpfi-dev
 # Node.js runs Triangle (triangle-wasm) for the comparisons; some machines ship
 # nodejs with npm bundled (NodeSource), where Debian's npm package conflicts.
 if ! command -v node >/dev/null; then apt-get install -y --no-install-recommends nodejs; fi

@@ -4,6 +4,7 @@
 // rejects), or not decided (why). Rows already refuted by a sampled counterexample
 // (corpus/theorems/) stay refuted by it, re-checked here.
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -59,6 +60,49 @@ Decision sampled(const Row& row, Decision d, const Options& opt) {
   return d;
 }
 
+// A transcendental row: its algebraic side (Z3), then its boxes. A refutation is the
+// counterexample point on the grid, confirmed by the row's check function.
+Decision decide_boxes(const Row& row, Decision d, const std::string& dropped, const Options& opt) {
+  auto t0 = std::chrono::steady_clock::now();
+  d.method = "interval branch-and-bound (MPFI)";
+  if (row.side && dropped.empty()) {
+    std::string why = row.side(opt.time_limit_s);
+    d.seconds = since(t0);
+    if (!why.empty()) {
+      d.note = why;
+      return d;
+    }
+  }
+  bnb::Problem p = row.boxes(dropped);
+  bnb::Outcome r = bnb::run(p, opt.time_limit_s);
+  d.seconds = since(t0);
+  d.method += ", " + std::to_string(r.boxes) + " boxes";
+  if (r.closed) d.method += ", " + std::to_string(r.closed) + " closed by Z3 " + kTactic;
+  if (row.side && dropped.empty()) d.method += ", and Z3 " + std::string(kTactic);
+  if (r.result == bnb::Result::Proved) {
+    d.outcome = Outcome::Proved;
+    return d;
+  }
+  if (r.result == bnb::Result::NotDecided) {
+    d.note = r.why;
+    return d;
+  }
+  Config c;
+  c.L = p.grid;
+  for (double v : r.point) c.v.push_back(static_cast<std::int64_t>(std::llround(v * static_cast<double>(p.grid))));
+  d.outcome = Outcome::Refuted;
+  d.counterexample = c.show();
+  d.points = {{"B", 0, 0}, {"A", c.L, 0}, {"C", c.v[0], c.v[1]}};
+  theorems::Verdict v = row.check(c, !dropped.empty());
+  d.confirmed = dropped.empty() ? v.hypothesis && !v.conclusion && !v.tie : v.rejected();
+  if (!d.confirmed) {
+    d.outcome = Outcome::NotDecided;
+    d.note = "the boxes found " + d.counterexample + " but the row's check function does not reject it (" + v.detail +
+             ")";
+  }
+  return d;
+}
+
 }  // namespace
 
 const char* name(Outcome o) {
@@ -92,6 +136,7 @@ Decision decide_without(const std::string& statement, const std::string& dropped
     return d;
   }
   if (!row->sampled.empty() && dropped.empty()) return sampled(*row, d, opt);
+  if (row->boxes) return decide_boxes(*row, d, dropped, opt);
   for (const std::string& via : row->via) {
     Decision lemma = decide(via, opt);
     if (lemma.outcome != Outcome::Proved) {
@@ -174,12 +219,19 @@ std::vector<Decision> decide_all(const Options& opt, const std::function<void(co
 std::string row_kind(const std::string& statement) {
   const Row* row = find_row(statement);
   if (!row) return "";
-  return row->build ? "algebraic" : !row->sampled.empty() ? "sampled" : "not first-order";
+  return row->build    ? "algebraic"
+         : row->boxes  ? "transcendental"
+         : !row->sampled.empty() ? "sampled"
+                                 : "not first-order";
 }
 
 std::vector<std::string> hypotheses(const std::string& statement) {
   const Row* row = find_row(statement);
   std::vector<std::string> out;
+  if (row && row->boxes) {
+    for (const bnb::Hypothesis& h : row->boxes("").hyps) out.push_back(h.name);
+    return out;
+  }
   if (!row || !row->build) return out;
   z3::context ctx;
   Obligation o(ctx);

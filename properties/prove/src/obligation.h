@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "interval_bnb.h"
 #include "lepp/theorems/checks.h"
 
 namespace lepp::prove {
@@ -92,7 +93,18 @@ struct Row {
   // proved when every slice is. Empty: one piece. For the conjuncts nlsat decides in
   // each slice within a second and not within minutes whole.
   std::vector<std::vector<std::string>> x1_cuts;
+  // A transcendental row (its claim compares angles with a decimal multiple of angles):
+  // its box problem without the hypothesis `dropped` (none when empty), decided by the
+  // interval branch-and-bound (interval_bnb.h) instead of `build`.
+  std::function<bnb::Problem(const std::string& dropped)> boxes;
+  // An algebraic part of such a row, proved by Z3 before the boxes: "" when proved, else why not.
+  std::function<std::string(double time_limit_s)> side;
 };
+
+// The Lemma 7 (I) rows (transcendental.cpp), and a row's box problem with its constant
+// replaced by k_num/k_den (k_den = 0: the row's own constant).
+Row lemma7_transcendental(const std::string& statement);
+bnb::Problem lemma7_problem(const std::string& statement, const std::string& dropped, long k_num = 0, long k_den = 0);
 
 const std::vector<Row>& prover_rows();
 const Row* find_row(const std::string& statement);

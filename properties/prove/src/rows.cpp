@@ -319,13 +319,10 @@ std::vector<Row> make_rows() {
     r.known_extreme = "the triangle of angles 120, alpha0, 60 - alpha0 (the proposition's own worst case)";
     rows.push_back(r);
   }
-  const std::string ratio =
-      "not first-order over the reals: compares the angle alpha1 with a decimal multiple of alpha0 (a "
-      "transcendental relation of cosines); the interval branch-and-bound it needs is not built yet";
-  rows.push_back(not_first_order("Lemma7.AcuteAlpha1AtLeast079Alpha0", ratio));
-  rows.push_back(not_first_order("Lemma7.AcuteAlpha1AtLeast0866Alpha0BelowAlphaLimit", ratio));
-  rows.push_back(not_first_order("Lemma7.Alpha1OverAlpha0TendsToOne", ratio + " (its acute part, 0.99)"));
-  rows.push_back(not_first_order("Lemma7.BetaAtLeast179Alpha0", ratio));
+  // Compare the angle alpha1 (or beta) with a decimal multiple of alpha0: transcendental.
+  for (const char* s : {"Lemma7.AcuteAlpha1AtLeast079Alpha0", "Lemma7.AcuteAlpha1AtLeast0866Alpha0BelowAlphaLimit",
+                        "Lemma7.Alpha1OverAlpha0TendsToOne", "Lemma7.BetaAtLeast179Alpha0"})
+    rows.push_back(lemma7_transcendental(s));
   {
     Row r;
     r.statement = "Lemma7.ObtuseAlpha1AboveAlpha0";

@@ -12,6 +12,8 @@
 #include <map>
 #include <sstream>
 
+#include "interval_bnb.h"
+#include "obligation.h"
 #include "lepp/prove/prove.h"
 #include "lepp/theorems/statements.h"
 
@@ -36,6 +38,11 @@ const char* kProvedRows[] = {
     "Lemma4.HoldsWhenBCShorterThanCA",
     "Proposition6.AcuteWorstRatioIsIsosceles",
     "Lemma7.ObtuseAlpha1AboveAlpha0",
+    // Transcendental: the interval branch-and-bound.
+    "Lemma7.AcuteAlpha1AtLeast079Alpha0",
+    "Lemma7.AcuteAlpha1AtLeast0866Alpha0BelowAlphaLimit",
+    "Lemma7.Alpha1OverAlpha0TendsToOne",
+    "Lemma7.BetaAtLeast179Alpha0",
     "Lemma8.AcuteBelowAlphaLimitOwnDistanceAbove129",
     "Lemma8.AcuteBelow30OwnDistanceAbove096",
     "Lemma8.ObtuseBelow14DistanceAboveBC",
@@ -259,4 +266,105 @@ TEST(ProveRows, SlicesCoverEveryX1) {
   EXPECT_NE(slice_gap({"4/10", "3/10"}), "");
   EXPECT_NE(slice_gap({"3/10", "3/10"}), "");
   EXPECT_NE(slice_gap({"x"}), "");
+}
+
+// --- The interval branch-and-bound on its own (interval_bnb.h).
+namespace {
+namespace bnb = lepp::prove::bnb;
+using bnb::Interval;
+
+// On the unit disk, acos x + acos y >= k: true for k = 3/2 (the least value is pi/2,
+// on the arc x, y >= 0), false for k = 8/5 (x = y = 0.7 gives 1.59).
+bnb::Problem disk(long k_num, long k_den) {
+  bnb::Problem p;
+  p.vars = {{"x", -1, 1}, {"y", -1, 1}};
+  p.hyps = {{"in the disk", [](const bnb::Point& v) { return Interval(1) - bnb::sqr(v[0]) - bnb::sqr(v[1]); }, false}};
+  Interval k = Interval::rational(k_num, k_den);
+  p.claim = [k](const bnb::Point& v) { return bnb::acos(v[0]) + bnb::acos(v[1]) - k; };
+  return p;
+}
+}  // namespace
+
+TEST(ProveBoxes, ProvesATrueTranscendentalStatement) {
+  bnb::Outcome r = bnb::run(disk(3, 2), 60);
+  EXPECT_EQ(r.result, bnb::Result::Proved) << r.why;
+  EXPECT_TRUE(r.left.empty());
+  EXPECT_GT(r.boxes, 1u);
+}
+
+TEST(ProveBoxes, RefutesAFalseOneWithACheckedGridPoint) {
+  bnb::Problem p = disk(8, 5);
+  bnb::Outcome r = bnb::run(p, 60);
+  ASSERT_EQ(r.result, bnb::Result::Refuted) << r.why;
+  ASSERT_EQ(r.point.size(), 2u);
+  // On the grid, in the disk, and below the constant: checked independently in long double.
+  const long double x = r.point[0], y = r.point[1];
+  EXPECT_EQ(std::fmod(static_cast<double>(x * p.grid), 1.0), 0.0);
+  EXPECT_LE(x * x + y * y, 1.0L);
+  EXPECT_LT(std::acos(x) + std::acos(y), 1.6L);
+}
+
+// (x - sin x)^2 >= 0, written expanded so that intervals never see it certain around its
+// equality case x = 0, which lies on the boundary of the hypothesis x >= 0: the boxes
+// there are left (no closer), and the statement is "not decided", never "proved".
+bnb::Problem dependent_square() {
+  bnb::Problem p;
+  p.vars = {{"x", -1, 2}};  // 0 is never a cut point: it stays inside a box at every width
+  p.hyps = {{"x >= 0", [](const bnb::Point& v) { return v[0]; }, false}};
+  p.claim = [](const bnb::Point& v) {
+    Interval s = bnb::sin(v[0]);
+    return bnb::sqr(v[0]) - Interval(2) * v[0] * s + bnb::sqr(s);
+  };
+  return p;
+}
+
+TEST(ProveBoxes, AnEqualityCaseItCannotCloseIsNotDecided) {
+  bnb::Problem p = dependent_square();
+  bnb::Outcome r = bnb::run(p, 60);
+  EXPECT_EQ(r.result, bnb::Result::NotDecided);
+  ASSERT_FALSE(r.left.empty());
+  EXPECT_LE(r.left.front()[0].first, 0.0);
+  EXPECT_GE(r.left.front()[0].second, 0.0);
+  EXPECT_NE(r.why.find("boxes left near x in"), std::string::npos) << r.why;
+  // A closer that refuses leaves them too; one that proves the box (here: (x - sin x)^2 is
+  // a square) closes them: proved.
+  p.close = [](const bnb::Box&) { return false; };
+  EXPECT_EQ(bnb::run(p, 60).result, bnb::Result::NotDecided);
+  p.close = [](const bnb::Box&) { return true; };
+  EXPECT_EQ(bnb::run(p, 60).result, bnb::Result::Proved);
+}
+
+TEST(ProveBoxes, ATimeLimitIsNotAProof) {
+  bnb::Outcome r = bnb::run(dependent_square(), 0);
+  EXPECT_EQ(r.result, bnb::Result::NotDecided);
+  EXPECT_TRUE(r.timed_out);
+  EXPECT_NE(r.why.find("time limit"), std::string::npos) << r.why;
+}
+
+// The Lemma 7 (I) rows are decided by the boxes (ProvedRow above: proved, and refuted with a
+// counterexample their check functions reject once the bound on alpha0 is dropped).
+TEST(ProveBoxes, Lemma7RowsAreTranscendental) {
+  // The corner C -> B: Z3 closes it for 0.79 (alpha1/alpha0 -> 1 there) and refuses for
+  // 1.01, where the closing condition 2 k CM <= 1 - u^2/6 fails (2 CM >= 1 when acute).
+  bnb::Box corner = {{0, 1.0 / (1 << 17)}, {0, 1.0 / (1 << 16)}};
+  EXPECT_TRUE(lepp::prove::lemma7_problem("Lemma7.AcuteAlpha1AtLeast079Alpha0", "").close(corner));
+  EXPECT_FALSE(lepp::prove::lemma7_problem("Lemma7.AcuteAlpha1AtLeast079Alpha0", "", 101, 100).close(corner));
+  // beta >= 1.79 alpha0 closes as alpha1 >= 0.79 alpha0 (beta = alpha0 + alpha1); beta >= 2.01 alpha0 does not.
+  EXPECT_TRUE(lepp::prove::lemma7_problem("Lemma7.BetaAtLeast179Alpha0", "").close(corner));
+  EXPECT_FALSE(lepp::prove::lemma7_problem("Lemma7.BetaAtLeast179Alpha0", "", 201, 100).close(corner));
+  // The closing condition is a sufficient one, not the claim: at the worst triangle (alpha0 = 30,
+  // CA = BA: C = (1 - cos 30, 1/2)) it fails (2 0.79 CM = 0.979 > 1 - tan^2(30)/6 = 0.944).
+  bnb::Box worst = {{0.1339, 0.1340}, {0.4999, 0.5}};
+  EXPECT_FALSE(lepp::prove::lemma7_problem("Lemma7.AcuteAlpha1AtLeast079Alpha0", "").close(worst));
+  // Just above the true worst ratio at alpha0 = 30 (0.79313, the isosceles triangle): refuted.
+  bnb::Outcome above = bnb::run(lepp::prove::lemma7_problem("Lemma7.AcuteAlpha1AtLeast079Alpha0", "", 7935, 10000), 60);
+  EXPECT_EQ(above.result, bnb::Result::Refuted) << above.why;
+  EXPECT_EQ(row_kind("Lemma7.AcuteAlpha1AtLeast079Alpha0"), "transcendental");
+  auto h = hypotheses("Lemma7.BetaAtLeast179Alpha0");
+  EXPECT_NE(std::find(h.begin(), h.end(), "acute"), h.end());
+}
+
+TEST(ProveBoxes, Lemma7aJustBelowItsWorstRatioIsProved) {
+  bnb::Outcome below = bnb::run(lepp::prove::lemma7_problem("Lemma7.AcuteAlpha1AtLeast079Alpha0", "", 7930, 10000), 60);
+  EXPECT_EQ(below.result, bnb::Result::Proved) << below.why;
 }

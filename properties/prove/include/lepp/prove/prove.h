@@ -31,7 +31,7 @@ struct Decision {
   std::string where;      // "Theorem 2", as in the table
   std::string statement;  // the row's property, Suite.Name
   Outcome outcome = Outcome::NotDecided;
-  std::string method;     // "Z3 nlsat", "sampled counterexample", ...
+  std::string method;     // "Z3 nlsat", "interval branch-and-bound (MPFI), ...", "sampled counterexample", ...
   double seconds = 0;
   // Refuted: the exact counterexample (integer coordinates) and whether the
   // row's check function rejected it (a refutation it does not confirm is a bug).
@@ -50,7 +50,8 @@ struct Options {
 
 // The rows, in the table's order: every statement of lepp::theorems::statements().
 std::vector<std::string> row_statements();
-// "algebraic" (an obligation for the solvers), "sampled" (refuted by a kept sampled
+// "algebraic" (an obligation for the solvers), "transcendental" (a box problem for the
+// interval branch-and-bound, MPFI), "sampled" (refuted by a kept sampled
 // counterexample), "not first-order", or "" when the prover has no such row.
 std::string row_kind(const std::string& statement);
 // Decide one row (by Suite.Name), or all; `progress` hears each row as it ends.
