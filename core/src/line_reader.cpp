@@ -134,8 +134,10 @@ bool LineReader::plain(const char* kinds, std::int64_t* ints, double* reals) {
       if (minus) ++i;
       std::int64_t v = 0;
       const std::size_t digits_from = i;
+      // Digits past the 18th are counted, not added: 19 of them could overflow, and
+      // such a number takes the general path anyway.
       for (unsigned d; (d = static_cast<unsigned char>(text[i]) - static_cast<unsigned>('0')) <= 9; ++i)
-        v = v * 10 + static_cast<std::int64_t>(d);
+        if (i - digits_from < 18) v = v * 10 + static_cast<std::int64_t>(d);
       if (i == digits_from || i - digits_from > 18 || !ends(i)) return false;
       *ints++ = minus ? -v : v;
     } else if (*kind == 'r') {

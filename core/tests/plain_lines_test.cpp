@@ -117,6 +117,10 @@ TEST_F(PlainLines, ErrorsAfterPlainLinesNameTheirLine) {
   EXPECT_EQ(node_error(head + "5 1.5x 1 0\n5 0 1 1\n"), ":6: vertex number 5 out of order (expected 4)");
   EXPECT_EQ(node_error(head + "4 1 1 0\n5 0 1 99999999999999999999\n"),
             ":7: boundary marker '99999999999999999999' is out of range");
+  // Forty digits: the plain path counts them without adding past the 18th (adding
+  // overflowed, which the sanitizer build stops at), and the general path names them.
+  EXPECT_EQ(node_error(head + "4000000000000000000000000000000000000000 1 1 0\n5 0 1 1\n"),
+            ":6: vertex number '4000000000000000000000000000000000000000' is out of range");
   EXPECT_EQ(node_error(head + "4 1 1\n5 0 1 1\n6 0 0 0\n"), ":8: unexpected content after the last vertex");
   EXPECT_EQ(node_error(head + "4 1 1 0\n"), ":6: unexpected end of file: expected vertex 5 of 5");
   // Extra fields: a column on every line is ignored, on one line of five it is an error
