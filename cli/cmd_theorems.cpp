@@ -124,8 +124,9 @@ const char* kTightPreamble = R"(
 For each row with a numeric constant k (every claim gets stronger as k grows),
 bisection on k: the largest value proved and the smallest value refuted, a
 rational configuration at which Z3, with every coordinate fixed, re-checks
-"hypotheses and not claim" exactly. A row whose bisection stopped (time limit)
-says where.
+"hypotheses and not claim" exactly (Lemma 7 (I): the interval branch-and-bound
+decides each k, and the row's check function, given k, rejects its grid
+counterexample). A row whose bisection stopped (time limit) says where.
 
 )";
 

@@ -105,6 +105,9 @@ struct Row {
 // replaced by k_num/k_den (k_den = 0: the row's own constant).
 Row lemma7_transcendental(const std::string& statement);
 bnb::Problem lemma7_problem(const std::string& statement, const std::string& dropped, long k_num = 0, long k_den = 0);
+// Its check function with the constant k (the row's own check at the paper's k), on the
+// configuration's triangle B A C with D its mirror image in AB.
+theorems::Verdict lemma7_check_at(const std::string& statement, const Config& c, double k);
 
 const std::vector<Row>& prover_rows();
 const Row* find_row(const std::string& statement);

@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tight constants: a row's constant k moved by bisection between the largest value
 // proved and the smallest refuted (every claim with a constant gets stronger as k
-// grows). A refuted value comes with a rational configuration on which Z3, with
-// every coordinate fixed, re-checks "hypotheses and not claim" exactly.
+// grows). An algebraic row is decided at k by Z3: a refuted value comes with a rational
+// configuration on which Z3, with every coordinate fixed, re-checks "hypotheses and not
+// claim" exactly. A transcendental row (Lemma 7 (I)) is decided at k by the interval
+// branch-and-bound: a refuted value is its grid counterexample, which the row's check
+// function, given k, must reject.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "lepp/prove/prove.h"
 #include "lepp/theorems/statements.h"
+#include "obligation.h"
 #include "solve.h"
 
 namespace lepp::prove {
@@ -26,12 +30,24 @@ double value_of(const std::string& rational) {
   return std::stod(rational.substr(0, slash)) / std::stod(rational.substr(slash + 1));
 }
 
+// The bisection's boxes are finer than a row's decision's: near the extreme the claim
+// fails on a region about (k - k*) wide, which boxes and grid points must resolve.
+constexpr double kTightMinWidth = 1.0 / (1 << 28);
+constexpr std::int64_t kTightGrid = std::int64_t(1) << 32;
+// Where the claim's zero curve meets a hypothesis's boundary (Lemma 7 (I)(c) at k in
+// (0.9925, 1): on BA = CA) hundreds of boxes are left while a counterexample lies
+// further on: the search goes on past them (its time limit bounds it).
+constexpr std::size_t kTightMaxLeft = 4096;
+constexpr long kTightDen = 1000000000L;  // k is decided as the rational round(k 10^9) / 10^9
+
+bool tightenable(const Row* r) { return r && (r->build || r->boxes) && !r->constant.empty(); }
+
 }  // namespace
 
 std::vector<std::string> tight_statements() {
   std::vector<std::string> out;
   for (const std::string& s : row_statements())
-    if (const Row* r = find_row(s); r && r->build && !r->constant.empty()) out.push_back(s);
+    if (tightenable(find_row(s))) out.push_back(s);
   return out;
 }
 
@@ -41,7 +57,7 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
   t.statement = statement;
   if (const auto* s = theorems::find_statement(statement)) t.where = s->where;
   const Row* row = find_row(statement);
-  if (!row || !row->build || row->constant.empty()) return t;
+  if (!tightenable(row)) return t;
   t.paper = row->constant;
   t.meaning = row->constant_meaning;
   t.known = row->known_extreme;
@@ -49,8 +65,7 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
   // Sat without a grid point (the solutions Z3 found have no small rational point
   // near them) still refutes k exactly; the configuration shown stays the last one with a point.
   std::string why;
-  auto at = [&](double k, std::string* config) {
-    ++t.steps;
+  auto algebraic = [&](double k, std::string* config) {
     z3::context ctx;
     Obligation o(ctx);
     build(*row, o, decimal(k));
@@ -59,6 +74,53 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
     if (s.answer == Answer::Sat && s.config && (t.witnessed == 0 || k < t.witnessed)) t.witnessed = k;
     why = s.reason;
     return s.answer;
+  };
+  // The boxes at k = round(k 10^9)/10^9 (the value reported): proved when the search
+  // proves it, refuted when its grid counterexample is rejected by the row's check
+  // function given k, else Unknown with the search's reason.
+  std::string side;  // the row's algebraic part (k-free), proved once
+  if (row->boxes && row->side) side = row->side(opt.time_limit_s);
+  auto boxes = [&](double& k, std::string* config) {
+    long num = std::lround(k * static_cast<double>(kTightDen));
+    k = static_cast<double>(num) / static_cast<double>(kTightDen);
+    if (!side.empty()) {
+      why = side;
+      return Answer::Unknown;
+    }
+    bnb::Problem p = lemma7_problem(statement, "", num, kTightDen);
+    p.min_width = kTightMinWidth;
+    p.grid = kTightGrid;
+    p.max_left = kTightMaxLeft;
+    bnb::Outcome r = bnb::run(p, opt.time_limit_s);
+    if (r.result == bnb::Result::Proved) {
+      // Row (c)'s right triangles (the side) have alpha1 = alpha0: they meet the claim for k <= 1 only.
+      if (row->side && k > 1) {
+        why = "right triangles have alpha1 = alpha0 < k alpha0 (no grid point taken)";
+        return Answer::Unknown;
+      }
+      return Answer::Unsat;
+    }
+    if (r.result == bnb::Result::NotDecided) {
+      why = r.why;
+      return Answer::Unknown;
+    }
+    Config c;
+    c.L = p.grid;
+    for (double v : r.point) c.v.push_back(std::llround(v * static_cast<double>(p.grid)));
+    theorems::Verdict v = lemma7_check_at(statement, c, k);
+    if (!(v.hypothesis && !v.conclusion && !v.tie)) {
+      why = "the boxes found " + c.show() + " but the row's check function does not reject it (" + v.detail + ")";
+      return Answer::Unknown;
+    }
+    Config m = c;  // shown as the pair the check function was given: D mirrors C in AB
+    m.v = {c.v[0], c.v[1], c.v[0], -c.v[1]};
+    if (config) *config = m.show();
+    if (t.witnessed == 0 || k < t.witnessed) t.witnessed = k;
+    return Answer::Sat;
+  };
+  auto at = [&](double& k, std::string* config) {
+    ++t.steps;
+    return row->boxes ? boxes(k, config) : algebraic(k, config);
   };
   double k = value_of(row->constant);
   std::string config;
@@ -70,7 +132,10 @@ TightConstant tighten(const std::string& statement, const Options& opt, double t
   }
   double lo = k, hi = k;
   bool have_lo = first == Answer::Unsat, have_hi = first == Answer::Sat;
-  double step = std::max(0.01, std::abs(k) * 0.01);
+  // The boxes walk in 0.1% steps: Lemma 7 (I)(c)'s ratio tends to 1 at the corner C -> B,
+  // so a 1% step from 0.99 would probe k = 1, where the corner's closer (it needs k < 1)
+  // leaves boxes; a smaller step brackets the extreme 0.9925 first.
+  double step = row->boxes ? std::max(0.001, std::abs(k) * 0.001) : std::max(0.01, std::abs(k) * 0.01);
   // Bracket: walk away from k, doubling the step, until the other answer appears.
   while (!(have_lo && have_hi) && t.steps < max_steps) {
     double probe = have_lo ? lo + step : hi - step;

@@ -18,6 +18,7 @@
 // alpha1 >= k alpha0 on the box.
 #include <gmpxx.h>
 
+#include "lepp/theorems/lemma7_checks.h"
 #include "obligation.h"
 #include "solve.h"
 
@@ -31,15 +32,24 @@ struct Spec {
   long k_num, k_den;     // alpha1 >= k alpha0 (beta >= k alpha0 when `beta`)
   bool beta = false;
   const char* bound;     // the hypothesis on alpha0: "alpha0 <= 30", "alpha0 <= alpha_limit", "alpha0 <= 5"
-  std::function<Verdict(const TerminalQuad&)> check;
+  Lemma7Part part;       // the row's check function, check_lemma7_I_at(.., part, k)
+  const char* meaning;   // how the constant k reads (the tight-constant table)
+  const char* known;     // the configuration where alpha1/alpha0 (beta/alpha0) is least
 };
 
 Spec spec_of(const std::string& statement) {
-  if (statement == "Lemma7.AcuteAlpha1AtLeast079Alpha0") return {79, 100, false, "alpha0 <= 30", check_lemma7_Ia};
+  if (statement == "Lemma7.AcuteAlpha1AtLeast079Alpha0")
+    return {79, 100, false, "alpha0 <= 30", Lemma7Part::a, "alpha1 >= k alpha0 (acute, alpha0 <= 30)",
+            "the isosceles triangle BA = CA at alpha0 = 30 (alpha1/alpha0 = 0.793133)"};
   if (statement == "Lemma7.AcuteAlpha1AtLeast0866Alpha0BelowAlphaLimit")
-    return {866, 1000, false, "alpha0 <= alpha_limit", check_lemma7_Ib};
-  if (statement == "Lemma7.Alpha1OverAlpha0TendsToOne") return {99, 100, false, "alpha0 <= 5", check_lemma7_Ic};
-  return {179, 100, true, "alpha0 <= 30", check_lemma7_Id};
+    return {866, 1000, false, "alpha0 <= alpha_limit", Lemma7Part::b,
+            "alpha1 >= k alpha0 (acute, alpha0 <= alpha_limit)",
+            "the isosceles triangle BA = CA at alpha0 = alpha_limit (alpha1/alpha0 = 0.872599)"};
+  if (statement == "Lemma7.Alpha1OverAlpha0TendsToOne")
+    return {99, 100, false, "alpha0 <= 5", Lemma7Part::c, "alpha1 >= k alpha0 (acute, alpha0 <= 5)",
+            "the isosceles triangle BA = CA at alpha0 = 5 (alpha1/alpha0 = 0.992456)"};
+  return {179, 100, true, "alpha0 <= 30", Lemma7Part::d, "beta >= k alpha0 (acute, alpha0 <= 30)",
+          "the isosceles triangle BA = CA at alpha0 = 30 (beta/alpha0 = 1.793133)"};
 }
 
 // Fig. 3's angles of B A C, C = (x, y) with y > 0, x <= 1/2.
@@ -141,6 +151,13 @@ bnb::Problem lemma7_problem(const std::string& statement, const std::string& dro
   return problem(sp, dropped);
 }
 
+Verdict lemma7_check_at(const std::string& statement, const Config& c, double k) {
+  // The triangle B A C with D its mirror image in AB: a Delaunay terminal pair.
+  Config m = c;
+  m.v = {c.v[0], c.v[1], c.v[0], -c.v[1]};
+  return check_lemma7_I_at(m.quad(), spec_of(statement).part, k);
+}
+
 Row lemma7_transcendental(const std::string& statement) {
   Spec sp = spec_of(statement);
   Row r;
@@ -148,13 +165,11 @@ Row lemma7_transcendental(const std::string& statement) {
   r.shape = Shape::Triangle;
   r.boxes = [sp](const std::string& dropped) { return problem(sp, dropped); };
   if (statement == "Lemma7.Alpha1OverAlpha0TendsToOne") r.side = right_triangles;
-  auto check = sp.check;
-  r.check = [check](const Config& c, bool) {
-    // The triangle B A C with D its mirror image in AB: a Delaunay terminal pair.
-    Config m = c;
-    m.v = {c.v[0], c.v[1], c.v[0], -c.v[1]};
-    return check(m.quad());
-  };
+  const double k = static_cast<double>(sp.k_num) / static_cast<double>(sp.k_den);
+  r.check = [statement, k](const Config& c, bool) { return lemma7_check_at(statement, c, k); };
+  r.constant = std::to_string(sp.k_num) + "/" + std::to_string(sp.k_den);
+  r.constant_meaning = sp.meaning;
+  r.known_extreme = sp.known;
   r.essential = sp.bound;
   r.note = std::string("C -> B closed by Z3 (alpha1 >= sin alpha1 = sin alpha0/(2 CM), sin t >= t - t^3/6)") +
            (sp.beta ? "; beta = alpha0 + alpha1" : "") +

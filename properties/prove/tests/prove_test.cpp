@@ -368,3 +368,36 @@ TEST(ProveBoxes, Lemma7aJustBelowItsWorstRatioIsProved) {
   bnb::Outcome below = bnb::run(lepp::prove::lemma7_problem("Lemma7.AcuteAlpha1AtLeast079Alpha0", "", 7930, 10000), 60);
   EXPECT_EQ(below.result, bnb::Result::Proved) << below.why;
 }
+
+// The tight-constant bisection covers the Lemma 7 (I) rows with the boxes: (a) brackets its
+// worst ratio, the isosceles triangle at alpha0 = 30 (alpha1/alpha0 = 0.7931326), proved
+// below and refuted above by a grid point its check function, given k, rejects.
+TEST(ProveTight, Lemma7aBracketsTheIsoscelesWorstRatio) {
+  auto rows = tight_statements();
+  for (const char* s : {"Lemma7.AcuteAlpha1AtLeast079Alpha0", "Lemma7.AcuteAlpha1AtLeast0866Alpha0BelowAlphaLimit",
+                        "Lemma7.Alpha1OverAlpha0TendsToOne", "Lemma7.BetaAtLeast179Alpha0"})
+    EXPECT_NE(std::find(rows.begin(), rows.end(), s), rows.end()) << s;
+  TightConstant t = tighten("Lemma7.AcuteAlpha1AtLeast079Alpha0", options(), 1e-3, 20);
+  EXPECT_TRUE(t.complete) << t.stopped;
+  EXPECT_LT(t.proved, 0.7931326);
+  EXPECT_GT(t.refuted, 0.7931325);
+  EXPECT_LE(t.refuted - t.proved, 1e-3);
+  EXPECT_EQ(t.witnessed, t.refuted);
+  EXPECT_FALSE(t.extreme.empty());
+  EXPECT_EQ(t.paper, "79/100");
+}
+
+// The check function given k: near the worst triangle (C just below alpha0 = 30 on CA = BA,
+// alpha1/alpha0 = 0.79313) it rejects k = 0.7935 and accepts k = 0.7930.
+TEST(ProveTight, Lemma7CheckFunctionTakesTheConstant) {
+  Config c;
+  c.L = std::int64_t(1) << 32;
+  c.v = {575415628, 2147482120};
+  auto above = lemma7_check_at("Lemma7.AcuteAlpha1AtLeast079Alpha0", c, 0.7935);
+  EXPECT_TRUE(above.hypothesis && !above.conclusion && !above.tie) << above.detail;
+  auto below = lemma7_check_at("Lemma7.AcuteAlpha1AtLeast079Alpha0", c, 0.7930);
+  EXPECT_TRUE(below.hypothesis && below.conclusion) << below.detail;
+  // beta = alpha0 + alpha1: the same triangle, 1.7935 rejected, 1.7930 accepted.
+  EXPECT_FALSE(lemma7_check_at("Lemma7.BetaAtLeast179Alpha0", c, 1.7935).conclusion);
+  EXPECT_TRUE(lemma7_check_at("Lemma7.BetaAtLeast179Alpha0", c, 1.7930).conclusion);
+}

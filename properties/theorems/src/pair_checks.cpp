@@ -2,8 +2,11 @@
 // Statements about a pair of Delaunay terminal triangles ABC, ABD sharing the
 // unconstrained terminal edge AB: Theorem 2, Proposition 6, Lemma 7, Lemma 11,
 // Corollary 12, Remark 13, Theorem 14.
+#include <cstdio>
+
 #include "exact.h"
 #include "lepp/theorems/checks.h"
+#include "lepp/theorems/lemma7_checks.h"
 
 namespace lepp::theorems {
 using namespace exact;
@@ -196,44 +199,60 @@ Verdict lemma7_ratio(const Fig3& t, bool hypothesis, double k, const char* what)
 }
 }  // namespace
 
-Verdict check_lemma7_Ia(const TerminalQuad& q) {
-  return both(q, [](const Fig3& t) { return lemma7_ratio(t, is_acute(t) && small_alpha0(t), 0.79, "alpha1 < 0.79 alpha0"); });
+namespace {
+std::string constant(double k) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", k);
+  return buf;
 }
-Verdict check_lemma7_Ib(const TerminalQuad& q) {
-  return both(q, [](const Fig3& t) {
-    return lemma7_ratio(t, is_acute(t) && t.cos_alpha0 >= cos_alpha_limit(), 0.866, "alpha1 < 0.866 alpha0");
-  });
-}
-// (c) as checkable statements: a right triangle has alpha1 = alpha0 exactly (M is its
-// circumcentre); an acute one with alpha0 <= 5 degrees has alpha1 >= 0.99 alpha0.
-Verdict check_lemma7_Ic(const TerminalQuad& q) {
-  return both(q, [](const Fig3& t) {
-    bool right = !is_acute(t) && !is_obtuse(t);
-    if (right) {
-      Verdict v;
-      v.conclusion = t.cos_alpha1 == t.cos_alpha0;
-      v.label = "right";
-      v.detail = "right triangle with alpha1 != alpha0";
-      return v;
-    }
-    Cmp small = ge_const(angle_deg(t.cos_alpha0), 5.0);
-    Verdict v = lemma7_ratio(t, is_acute(t) && small == Cmp::No, 0.99, "alpha1 < 0.99 alpha0 with alpha0 <= 5");
-    v.label = "acute, alpha0 <= 5";
-    return v;
-  });
-}
-Verdict check_lemma7_Id(const TerminalQuad& q) {
-  return both(q, [](const Fig3& t) {
+}  // namespace
+
+Verdict check_lemma7_I_at(const TerminalQuad& q, Lemma7Part part, double k) {
+  const std::string ks = constant(k);
+  switch (part) {
+    case Lemma7Part::a:
+      return both(q, [&](const Fig3& t) {
+        return lemma7_ratio(t, is_acute(t) && small_alpha0(t), k, ("alpha1 < " + ks + " alpha0").c_str());
+      });
+    case Lemma7Part::b:
+      return both(q, [&](const Fig3& t) {
+        return lemma7_ratio(t, is_acute(t) && t.cos_alpha0 >= cos_alpha_limit(), k, ("alpha1 < " + ks + " alpha0").c_str());
+      });
+    // (c) as checkable statements: a right triangle has alpha1 = alpha0 exactly (M is its
+    // circumcentre); an acute one with alpha0 <= 5 degrees has alpha1 >= k alpha0.
+    case Lemma7Part::c:
+      return both(q, [&](const Fig3& t) {
+        bool right = !is_acute(t) && !is_obtuse(t);
+        if (right) {
+          Verdict v;
+          v.conclusion = t.cos_alpha1 == t.cos_alpha0;
+          v.label = "right";
+          v.detail = "right triangle with alpha1 != alpha0";
+          return v;
+        }
+        Cmp small = ge_const(angle_deg(t.cos_alpha0), 5.0);
+        Verdict v = lemma7_ratio(t, is_acute(t) && small == Cmp::No, k,
+                                 ("alpha1 < " + ks + " alpha0 with alpha0 <= 5").c_str());
+        v.label = "acute, alpha0 <= 5";
+        return v;
+      });
+    case Lemma7Part::d: break;
+  }
+  return both(q, [&](const Fig3& t) {
     Verdict v;
     v.hypothesis = is_acute(t) && small_alpha0(t);
-    Cmp c = ge(angle_deg(t.cos_beta), 1.79, angle_deg(t.cos_alpha0));
+    Cmp c = ge(angle_deg(t.cos_beta), k, angle_deg(t.cos_alpha0));
     v.tie = c == Cmp::Tie;
     v.conclusion = c != Cmp::No;
     v.label = shape(t);
-    v.detail = "beta " + deg(t.cos_beta) + " < 1.79 alpha0, alpha0 " + deg(t.cos_alpha0);
+    v.detail = "beta " + deg(t.cos_beta) + " < " + ks + " alpha0, alpha0 " + deg(t.cos_alpha0);
     return v;
   });
 }
+Verdict check_lemma7_Ia(const TerminalQuad& q) { return check_lemma7_I_at(q, Lemma7Part::a, 0.79); }
+Verdict check_lemma7_Ib(const TerminalQuad& q) { return check_lemma7_I_at(q, Lemma7Part::b, 0.866); }
+Verdict check_lemma7_Ic(const TerminalQuad& q) { return check_lemma7_I_at(q, Lemma7Part::c, 0.99); }
+Verdict check_lemma7_Id(const TerminalQuad& q) { return check_lemma7_I_at(q, Lemma7Part::d, 1.79); }
 Verdict check_lemma7_II(const TerminalQuad& q) {
   return both(q, [](const Fig3& t) {
     Verdict v;

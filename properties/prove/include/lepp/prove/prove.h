@@ -94,7 +94,8 @@ struct TightConstant {
   std::string paper;        // the paper's (or the narrowed row's) constant
   std::string meaning;      // how the constant k reads in the claim
   double proved = 0;        // largest value proved
-  double refuted = 0;       // smallest value refuted (Z3: satisfiable, exactly)
+  double refuted = 0;       // smallest value refuted (Z3: satisfiable, exactly; Lemma 7 (I): a grid point
+                            // of the boxes that the row's check function, given k, rejects)
   double witnessed = 0;     // smallest value refuted with a grid configuration (`extreme`)
   bool complete = false;    // refuted - proved <= tolerance, both decided
   std::string extreme;      // the configuration near the extreme (counterexample at `refuted`)
