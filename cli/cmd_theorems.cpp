@@ -173,12 +173,9 @@ int run_theorems(const TheoremsArgs& args) {
         ok = false;
     }
     if (!args.pictures.empty()) {
-      // The table links each picture relative to itself (the --out file's directory).
-      namespace fs = std::filesystem;
-      fs::path base = args.out.empty() ? fs::current_path() : fs::absolute(fs::path(args.out)).parent_path();
-      std::string link = fs::absolute(args.pictures).lexically_normal().lexically_relative(base).generic_string();
       std::string error;
-      if (!prove::write_counterexample_pictures(args.pictures, link, decisions, &error)) {
+      if (!prove::write_counterexample_pictures(args.pictures, prove::picture_link_dir(args.pictures, args.out),
+                                                decisions, &error)) {
         message("lepp theorems: %s\n", error.c_str());
         return 2;
       }

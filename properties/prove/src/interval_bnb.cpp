@@ -11,6 +11,17 @@ namespace lepp::prove::bnb {
 namespace {
 constexpr mpfr_prec_t kPrecision = 128;
 
+// One endpoint of v (mpfi_get_left or mpfi_get_right), rounded to double in the
+// direction that keeps it enclosing.
+double endpoint(mpfi_srcptr v, int (*get)(mpfr_ptr, mpfi_srcptr), mpfr_rnd_t rounding) {
+  mpfr_t e;
+  mpfr_init2(e, kPrecision);
+  get(e, v);
+  const double d = mpfr_get_d(e, rounding);
+  mpfr_clear(e);
+  return d;
+}
+
 template <class F>
 Interval unary(const Interval& a, F f) {
   Interval r;
@@ -44,22 +55,8 @@ Interval Interval::pi() {
   mpfi_const_pi(r.v_);
   return r;
 }
-double Interval::lo() const {
-  mpfr_t e;
-  mpfr_init2(e, kPrecision);
-  mpfi_get_left(e, v_);
-  double d = mpfr_get_d(e, MPFR_RNDD);
-  mpfr_clear(e);
-  return d;
-}
-double Interval::hi() const {
-  mpfr_t e;
-  mpfr_init2(e, kPrecision);
-  mpfi_get_right(e, v_);
-  double d = mpfr_get_d(e, MPFR_RNDU);
-  mpfr_clear(e);
-  return d;
-}
+double Interval::lo() const { return endpoint(v_, mpfi_get_left, MPFR_RNDD); }
+double Interval::hi() const { return endpoint(v_, mpfi_get_right, MPFR_RNDU); }
 // The endpoints compared with 0 exactly (rounding to double keeps the sign).
 bool Interval::certainly_ge0() const { return !nan() && lo() >= 0; }
 bool Interval::certainly_gt0() const { return !nan() && lo() > 0; }

@@ -74,6 +74,12 @@ std::string counterexample_svg(const Decision& d) {
   return render::render_svg(mesh, opt);
 }
 
+std::string picture_link_dir(const std::string& dir, const std::string& table_path) {
+  namespace fs = std::filesystem;
+  const fs::path base = table_path.empty() ? fs::current_path() : fs::absolute(table_path).parent_path();
+  return fs::absolute(dir).lexically_normal().lexically_relative(base).generic_string();
+}
+
 bool write_counterexample_pictures(const std::string& dir, const std::string& link_dir, std::vector<Decision>& decisions,
                                    std::string* error) {
   std::error_code ec;

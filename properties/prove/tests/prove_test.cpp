@@ -210,6 +210,14 @@ TEST(ProveFiles, CommittedObligationsAreCurrent) {
 
 }  // namespace
 
+// The table links its pictures relative to its own directory (stdout: the current one).
+TEST(ProvePictures, LinkIsRelativeToTheTable) {
+  EXPECT_EQ(picture_link_dir("docs/theorems", "docs/THEOREMS.md"), "theorems");
+  EXPECT_EQ(picture_link_dir("docs/theorems", ""), "docs/theorems");
+  EXPECT_EQ(picture_link_dir("pics", "out/deep/T.md"), "../../pics");
+  EXPECT_EQ(picture_link_dir("docs/./theorems", "docs/THEOREMS.md"), "theorems");
+}
+
 // A refuted row's picture is written, linked from its cell, and names the counterexample's
 // exact points (Lemma 4's isosceles counterexample and a sampled mesh's pair).
 TEST(ProvePictures, WrittenLinkedAndNameTheCounterexamplesPoints) {

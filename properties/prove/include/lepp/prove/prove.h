@@ -117,6 +117,9 @@ std::string picture_name(const std::string& statement);
 // `link_dir` + "/" + the file name (the path the table links, relative to the table).
 bool write_counterexample_pictures(const std::string& dir, const std::string& link_dir, std::vector<Decision>& decisions,
                                    std::string* error = nullptr);
+// The `link_dir` for a table written to `table_path` ("" when it goes to stdout: the
+// current directory): `dir` relative to the table's directory, with '/' separators.
+std::string picture_link_dir(const std::string& dir, const std::string& table_path);
 
 // --- Markdown. The cell of the "decided" column for one row.
 std::string decided_cell(const Decision& d);
