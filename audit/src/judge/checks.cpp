@@ -63,10 +63,6 @@ void name_arithmetic(ConformanceFailure& f, const ArithmeticEvidence& from_mesh)
   if (!e.name.empty()) name_first(f, e.name, e.what, arithmetic_definition(e.name));
 }
 
-constexpr const char* kMissingFlips = "missing-flips";
-constexpr const char* kMissingFlipsDefinition =
-    "the program's final mesh is not constrained Delaunay: it did not flip (always) after an insertion, so its "
-    "intermediate meshes are not the replay's, and its steps after the first missing flip are judged on meshes it never had";
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "judge/chain_summary.h"
+#include "lepp/audit/judge/inexact.h"
 #include "lepp/audit/judge/program_mesh.h"
 #include "lepp/audit/replay.h"
 
@@ -136,6 +137,7 @@ const char* mesh_words(MeshReading reading) {
     case MeshReading::NoFlipsButSplits: return "without flips but after a constrained edge's split";
     case MeshReading::DoubleIncircle: return "with its flips decided in double";
     case MeshReading::FloatPoints: return "with its points at float rounding";
+    case MeshReading::TiesKept: return "with every exactly cocircular quad's diagonal kept as its insertion made it";
     case MeshReading::Exact: break;
   }
   return "exactly";
@@ -147,15 +149,20 @@ const char* mesh_words(MeshReading reading) {
 // step no rule fits ends the chain with program-mesh-lost, not unknown: on the
 // exact mesh such a step is expected, on the program's it says the replay lost it.
 // Returns the steps it followed (the trace's length when complete).
+// With f.deviation empty (the fallback of follow_program_mesh: a tie rule, not
+// a name) the chain starts empty, and its first name becomes f.deviation.
 std::size_t follow_on_program_mesh(Replay& replay, const std::vector<Point>& trace, MeshReading reading, ConformanceFailure& f,
                                    std::size_t& centroid_inside) {
-  f.chain = {{f.deviation, f.step + 1, 0}};
+  f.chain.clear();
+  if (!f.deviation.empty()) {
+    f.chain.push_back({f.deviation, f.step + 1, 0});
+    replay.allow(deviation_named(f.deviation));  // a rule set's name first; no-op for the mesh's
+  }
   f.chain_complete = false;
   f.chain_end.clear();
   f.chain_end_reason.clear();
   f.chain_end_step = 0;
   f.mesh_reading = to_string(reading);
-  replay.allow(deviation_named(f.deviation));  // a rule set's name first (the fallback of follow_program_mesh); no-op for the mesh's
   std::size_t i = 0;
   while (i < trace.size()) {
     const Point& p = trace[i];
@@ -179,6 +186,13 @@ std::size_t follow_on_program_mesh(Replay& replay, const std::vector<Point>& tra
           f.chain_end_step = i + 1;
           return i;
         }
+      if (f.chain.empty()) {
+        f.deviation = name;
+        f.deviation_what = fmt::format("step {} on the program's mesh as the replay rebuilds it ({}): {}", i + 1,
+                                       mesh_words(reading), diagnosis.what);
+        f.deviation_definition = definition(diagnosis.deviation);
+        f.consistent_variant = false;
+      }
       f.chain.push_back({name, i + 1, 0});
       if (!has_variant(diagnosis.deviation)) {
         f.chain_end = fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, name);
@@ -331,7 +345,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
 }
 
 MeshReading mesh_reading_for(const std::string& deviation) {
-  if (deviation == "missing-flips") return MeshReading::NoFlips;
+  if (deviation == kMissingFlips) return MeshReading::NoFlips;
   if (deviation == "inexact-incircle") return MeshReading::DoubleIncircle;
   if (deviation == "single-precision") return MeshReading::FloatPoints;
   return MeshReading::Exact;
@@ -339,36 +353,44 @@ MeshReading mesh_reading_for(const std::string& deviation) {
 
 void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace, const ConformanceOptions& options,
                          ConformanceFailure& f) {
-  MeshReading reading = mesh_reading_for(f.deviation);
   if (!options.check_variant) return;
-  // A chain lost on the exact mesh with nothing in the final mesh to say why: a
-  // program whose flips were decided in double may have had another mesh for a
-  // while (later insertions flipped it back to Delaunay). Kept only when that
-  // mesh takes the chain to the trace's end.
-  const bool only_if_complete = reading == MeshReading::Exact;
-  if (only_if_complete) {
-    if (f.chain_end_reason != "no-rule") return;
-    reading = MeshReading::DoubleIncircle;
+  std::vector<MeshReading> readings{mesh_reading_for(f.deviation)};
+  // A chain lost on the exact mesh at a step no rule fits, with nothing in the
+  // final mesh to say why: the program's mesh may be another constrained Delaunay
+  // one (an exactly cocircular quad's diagonal kept as its insertion made it, where
+  // CGAL breaks the tie by its perturbation and the replay's search of cocircular
+  // cells does not reach), or it decided flips in double and later insertions made
+  // it Delaunay again. The chain is followed again from the first step on each,
+  // and kept only when it goes past the step the exact chain lost.
+  const bool fallback = readings.front() == MeshReading::Exact;
+  std::size_t lost_at = 0;  // the exact chain's step no rule fits, 1-based
+  if (fallback) {
+    if (f.chain_end_reason == "no-rule") lost_at = f.chain_end_step;
+    else if (f.deviation == "unknown" && f.chain.size() <= 1) lost_at = f.step + 1;  // the first failing step itself
+    else return;
+    readings = {MeshReading::TiesKept, MeshReading::DoubleIncircle, MeshReading::NoFlips, MeshReading::NoFlipsButSplits};
   }
   // Missing flips may be missing everywhere, only after a point put in a face (a
   // split made by a library's Delaunay insertion), or where a double in-circle
   // test overflows or underflows (huge or subnormal coordinates: beyond rounding,
-  // so not inexact-incircle): each is tried, and the one that follows the trace
-  // farthest is kept (the first on a tie).
-  std::vector<MeshReading> readings{reading};
-  if (reading == MeshReading::NoFlips)
+  // so not inexact-incircle): each is tried.
+  if (readings.front() == MeshReading::NoFlips)
     readings.insert(readings.end(), {MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle});
+  // The one that follows the trace farthest is kept (the first on a tie).
   std::optional<ConformanceFailure> best;
   std::size_t best_reached = 0;
   for (MeshReading r : readings) {
     ReplayRules rules = rules_of(options);
     rules.mesh = r;
-    // A program that misses flips breaks no cocircular tie: its mesh is not Delaunay anyway.
-    if (r == MeshReading::NoFlips || r == MeshReading::NoFlipsButSplits) rules.follow_cocircular_flips = false;
+    // A program that makes its own flips (or none) breaks no cocircular tie by
+    // CGAL's perturbation: the replay does not search other triangulations of
+    // cocircular cells on its mesh.
+    if (r != MeshReading::FloatPoints) rules.follow_cocircular_flips = false;
     Replay replay(validated, rules);
     if (options.arithmetic_double)
       for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
     ConformanceFailure g = f;
+    if (fallback) g.deviation.clear();  // the chain is named again, from the first step, on that mesh
     std::size_t centroid_inside = 0;
     const std::size_t reached = follow_on_program_mesh(replay, trace, r, g, centroid_inside);
     merge_remark10(g);
@@ -376,7 +398,32 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
     if (!best || reached > best_reached) best = std::move(g), best_reached = reached;
     if (best->chain_complete) break;
   }
-  if (only_if_complete && !best->chain_complete) return;
+  if (fallback) {
+    // Lost there (or sooner) on those meshes too, or no step named on them (a
+    // program the exact replay's search of cocircular cells did not follow; not
+    // met in the measurements of docs/CONFORMANCE.md): the exact chain stays.
+    if (best_reached < lost_at || best->chain.empty()) return;
+    // The mesh's arithmetic (flips decided in double, or missing) is the
+    // program's: named where the exact mesh lost the chain.
+    const std::string name = best->mesh_reading == to_string(MeshReading::DoubleIncircle) ? kInexactIncircle
+                             : best->mesh_reading == to_string(MeshReading::TiesKept) ? ""
+                                                                                       : kMissingFlips;
+    auto& chain = best->chain;
+    if (!name.empty() && std::none_of(chain.begin(), chain.end(), [&](const DeviationLink& l) { return l.deviation == name; })) {
+      chain.insert(std::find_if(chain.begin(), chain.end(), [&](const DeviationLink& l) { return l.first_step >= lost_at; }),
+                   {name, lost_at, 0});
+      if (chain.front().deviation == name) {
+        best->deviation = name;
+        best->deviation_what = fmt::format(
+            "step {} fits no rule on the exact mesh, and the paper's rules on the mesh {}: {} (its final mesh is Delaunay "
+            "again: later insertions removed the difference)",
+            lost_at, mesh_words(name == kInexactIncircle ? MeshReading::DoubleIncircle : MeshReading::NoFlips),
+            name == kInexactIncircle ? "a quad cocircular within double rounding got the other diagonal"
+                                     : "the program did not flip after its insertions");
+        best->deviation_definition = name == kInexactIncircle ? inexact_definition(kInexactIncircle) : kMissingFlipsDefinition;
+      }
+    }
+  }
   f = std::move(*best);
 }
 
@@ -385,9 +432,10 @@ std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const
   if (f.chain_end_reason != "no-rule" && f.chain_end_reason != "program-mesh-lost") return std::nullopt;
   if (f.chain_end_step == 0 || f.chain_end_step > trace.size()) return std::nullopt;
   ReplayRules rules = rules_of(options);
-  for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints})
+  for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints,
+                        MeshReading::TiesKept})
     if (f.mesh_reading == to_string(r)) rules.mesh = r;
-  if (rules.mesh == MeshReading::NoFlips || rules.mesh == MeshReading::NoFlipsButSplits) rules.follow_cocircular_flips = false;
+  if (rules.mesh != MeshReading::Exact && rules.mesh != MeshReading::FloatPoints) rules.follow_cocircular_flips = false;
   Replay replay(validated, rules);
   if (options.arithmetic_double)
     for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);

@@ -20,6 +20,7 @@ const char* to_string(MeshReading reading) {
     case MeshReading::NoFlipsButSplits: return "no-flips-but-splits";
     case MeshReading::DoubleIncircle: return "double-incircle";
     case MeshReading::FloatPoints: return "float-points";
+    case MeshReading::TiesKept: return "ties-kept";
   }
   return "?";
 }

@@ -340,10 +340,11 @@ void Replayer::insert(const Point& p, const ReplayChoice& choice) {
   try {
     // The program's mesh (MeshReading): no flips, or flips decided in double.
     const bool split = s.split_face != FH();
-    const bool own_flips = rules.mesh == MeshReading::NoFlips || rules.mesh == MeshReading::DoubleIncircle ||
+    const bool program_flips = rules.mesh == MeshReading::DoubleIncircle || rules.mesh == MeshReading::TiesKept;
+    const bool own_flips = rules.mesh == MeshReading::NoFlips || program_flips ||
                            (rules.mesh == MeshReading::NoFlipsButSplits && !split);
     v = own_flips ? insert_point_unflipped(tr, s, f) : insert_point(tr, s, f);
-    if (rules.mesh == MeshReading::DoubleIncircle) double_lawson(v);
+    if (program_flips) program_lawson(v);
   } catch (const std::logic_error& e) {
     throw std::runtime_error(e.what());
   }

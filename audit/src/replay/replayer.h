@@ -36,9 +36,10 @@ class Replayer {
   Theorem2Check theorem2(const ReplayChoice& choice) const;
   // diagnose.cpp: which catalogue rule p is.
   DeviationMatch diagnose(const Point& p) const;
-  // double_lawson.cpp: Lawson flips around v, each decided by the in-circle
-  // determinant evaluated in double (MeshReading::DoubleIncircle).
-  void double_lawson(VH v);
+  // program_lawson.cpp: Lawson flips around v as a program makes them, each
+  // decided by the in-circle determinant evaluated in double
+  // (MeshReading::DoubleIncircle) or exactly but strictly (TiesKept).
+  void program_lawson(VH v);
 
   // From now on the variant's points are choices too (Replay::allow).
   void allow(Deviation variant) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -81,17 +82,74 @@ TEST(ProgramMesh, ReadingChosenByTheArithmeticName) {
   EXPECT_EQ(mesh_reading_for("single-precision"), MeshReading::FloatPoints);
   for (const char* other : {"printed-digits", "area-centroid", "terminal-midpoint", "unknown", "inexact-length", ""})
     EXPECT_EQ(mesh_reading_for(other), MeshReading::Exact) << other;
-  // A name that reads the exact mesh leaves the failure as it is: here the exact
-  // chain ends at an unknown step (no-rule), and the mesh with flips decided in
-  // double, tried then, does not take this program without flips to the end.
+  // A name that reads the exact mesh, its chain ended at a step no rule fits
+  // (no-rule): the program's final mesh is Delaunay here, but it had none of the
+  // replay's meshes. The fallback's meshes are tried and the one that follows past
+  // that step is kept, with the mesh's name there: without flips, missing-flips.
   const MesherRun r = mesh(inputs()[0], 30, "--bug terminal-midpoint --bug no-flips");
   ConformanceFailure f = named(r, "area-centroid");
-  EXPECT_EQ(f.chain_end_reason, "no-rule") << f.chain_end;
+  ASSERT_EQ(f.chain_end_reason, "no-rule") << f.chain_end;
+  const std::size_t lost_at = f.chain_end_step;
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  EXPECT_TRUE(f.mesh_reading == "no-flips" || f.mesh_reading == "no-flips-but-splits") << f.mesh_reading;
+  EXPECT_TRUE(f.chain_complete || f.chain_end_step > lost_at) << chain_text(f.chain) << "; " << f.chain_end;
+  std::size_t missing_at = 0;
+  for (const DeviationLink& l : f.chain)
+    if (l.deviation == "missing-flips") missing_at = l.first_step;
+  EXPECT_EQ(missing_at, lost_at) << chain_text(f.chain);
+  // In step order, the mesh's name first among the names of its step.
+  for (std::size_t i = 1; i < f.chain.size(); ++i) {
+    EXPECT_LE(f.chain[i - 1].first_step, f.chain[i].first_step) << chain_text(f.chain);
+    if (f.chain[i].first_step == lost_at) EXPECT_NE(f.chain[i].deviation, "missing-flips") << chain_text(f.chain);
+  }
+  EXPECT_EQ(names(f).count("terminal-midpoint"), 1u) << chain_text(f.chain);
+  EXPECT_EQ(names(f).count("unknown"), 0u) << chain_text(f.chain);
+}
+
+// The fallback is kept only when it goes past the step the exact chain lost: the
+// area-centroid mesher's trace with its last point moved off every choice names
+// area-centroid, then a step no rule fits on the exact mesh and on every mesh of
+// the fallback: the exact chain stays, ending no-rule at that step.
+TEST(ProgramMesh, FallbackNotKeptWhereEveryMeshLosesTheStep) {
+  MesherRun r = mesh(inputs()[1], 30, "--bug area-centroid");
+  ASSERT_GT(r.trace.size(), 6u);
+  Point& last = r.trace.back();
+  last.x += 1e-3 * (1 + std::abs(last.x));
+  ConformanceReport exact = check_conformance(r.input, r.trace, options(r.theta));
+  ASSERT_TRUE(exact.failure);
+  ConformanceFailure f = *exact.failure;
+  ASSERT_EQ(f.deviation, "area-centroid") << chain_text(f.chain);
+  ASSERT_EQ(f.chain_end_reason, "no-rule") << chain_text(f.chain) << "; " << f.chain_end;
+  ASSERT_EQ(f.chain_end_step, r.trace.size());
   const std::vector<DeviationLink> before = f.chain;
   follow_program_mesh(r.input, r.trace, options(r.theta), f);
-  EXPECT_TRUE(f.mesh_reading.empty()) << f.mesh_reading;
-  EXPECT_EQ(f.chain.size(), before.size());
+  EXPECT_TRUE(f.mesh_reading.empty()) << f.mesh_reading << ": " << chain_text(f.chain);
   EXPECT_EQ(f.chain_end_reason, "no-rule");
+  EXPECT_EQ(chain_text(f.chain), chain_text(before));
+}
+
+// A program that keeps an exactly cocircular quad's diagonal as its insertion made
+// it (a strict Lawson test), where CGAL's insertion breaks the tie the other way:
+// on the audit's generated box with a hole (integer coordinates) the exact replay
+// loses the double-flips mesher's chain at its first failing step (unknown); the
+// mesh with ties kept follows it to the end, naming the seeded rules and no
+// arithmetic, since every in-circle test of this run is exact in double too.
+TEST(ProgramMesh, ChainLostAtACocircularTieFollowedWithTiesKept) {
+  const MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/audit/tests/replay/inputs/cocircular-box-hole.poly", 30,
+                           "--bug double-flips --bug area-centroid --bug remark10-reversed");
+  ConformanceReport exact = check_conformance(r.input, r.trace, options(r.theta));
+  ASSERT_TRUE(exact.failure);
+  ConformanceFailure f = *exact.failure;
+  ASSERT_EQ(f.deviation, "unknown") << chain_text(f.chain);
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  EXPECT_EQ(f.mesh_reading, "ties-kept");
+  EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
+  EXPECT_EQ(f.deviation, "area-centroid") << chain_text(f.chain);
+  EXPECT_EQ(f.chain.front().first_step, exact.failure->step + 1) << chain_text(f.chain);
+  for (const char* arithmetic : {"unknown", "inexact-incircle", "missing-flips"})
+    EXPECT_EQ(names(f).count(arithmetic), 0u) << arithmetic << ": " << chain_text(f.chain);
+  // Where the chain would have stopped, the same mesh draws the step (chain_end_failure).
+  EXPECT_FALSE(chain_end_failure(r.input, r.trace, options(r.theta), f)) << "a complete chain has no end to draw";
 }
 
 // The seeded midpoint mesher without flips (issue 42: "missing-flips from step 3;
@@ -213,7 +271,10 @@ TEST(ProgramMesh, ChainLostOnTheExactMeshFollowedWithFlipsDecidedInDouble) {
   follow_program_mesh(r.input, r.trace, options(r.theta), f);
   EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
   EXPECT_EQ(f.mesh_reading, "double-incircle");
-  EXPECT_EQ(names(f), (std::set<std::string>{"remark10-reversed", "area-centroid"})) << chain_text(f.chain);
+  // The flips decided in double named where the exact mesh lost the chain.
+  EXPECT_EQ(names(f), (std::set<std::string>{"inexact-incircle", "remark10-reversed", "area-centroid"})) << chain_text(f.chain);
+  for (const DeviationLink& l : f.chain)
+    if (l.deviation == "inexact-incircle") EXPECT_EQ(l.first_step, exact.failure->chain_end_step);
 }
 
 }  // namespace

@@ -33,8 +33,11 @@ const char* to_string(CentroidReading reading);  // "vertex", "area"
 // the in-circle determinant evaluated in double (inexact-incircle). FloatPoints:
 // the point tolerance in float units, and each point inserted where the exact
 // choice it matched lies, not at the float the program wrote (single-precision).
-enum class MeshReading { Exact, NoFlips, NoFlipsButSplits, DoubleIncircle, FloatPoints };
-// "exact", "no-flips", "no-flips-but-splits", "double-incircle", "float-points"
+// TiesKept: Lawson flips decided exactly, but only strictly inside the circle:
+// an exactly cocircular quad keeps the diagonal its insertion made (a
+// constrained Delaunay mesh too, the tie broken as a plain Lawson program does).
+enum class MeshReading { Exact, NoFlips, NoFlipsButSplits, DoubleIncircle, FloatPoints, TiesKept };
+// "exact", "no-flips", "no-flips-but-splits", "double-incircle", "float-points", "ties-kept"
 const char* to_string(MeshReading reading);
 
 // What counts as the paper's choice (docs/AUDIT.md, "Conformance").

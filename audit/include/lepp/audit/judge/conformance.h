@@ -120,8 +120,9 @@ struct ConformanceFailure {
   std::string chain_end_reason;
   std::size_t chain_end_step = 0;  // the step it stopped at, 1-based (0: complete, or it did not go on)
   // The mesh the chain was followed on after the first step (MeshReading's names):
-  // "" the exact one; "no-flips", "double-incircle", "float-points" the program's,
-  // chosen by the arithmetic name of the mesh (lepp/audit/judge/program_mesh.h).
+  // "" the exact one; "no-flips", "no-flips-but-splits", "double-incircle",
+  // "float-points", "ties-kept" the program's, chosen by the arithmetic name of the
+  // mesh, or tried where the exact chain lost a step (lepp/audit/judge/program_mesh.h).
   std::string mesh_reading;
   // Steps that took the quad centroid inside the other triangle where one
   // second-longest edge is constrained: the paper's Remark 10, which a

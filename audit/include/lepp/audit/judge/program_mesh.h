@@ -13,6 +13,14 @@
 
 namespace lepp::audit {
 
+// The name of a program that did not flip (always) after an insertion, and its
+// definition (docs/CONFORMANCE.md, "Deviations").
+constexpr const char* kMissingFlips = "missing-flips";
+constexpr const char* kMissingFlipsDefinition =
+    "the program did not flip (always) after an insertion: its final mesh is not constrained Delaunay, or a step is the "
+    "paper's choice only on the mesh without flips; its intermediate meshes are not the replay's, and its steps after "
+    "the first missing flip are judged on meshes it never had";
+
 // The mesh a program named so had: missing-flips no flips, inexact-incircle flips
 // decided in double, single-precision points at float rounding; Exact for any
 // other name (the exact mesh is the program's as far as the output says).
@@ -23,11 +31,14 @@ MeshReading mesh_reading_for(const std::string& deviation);
 // catalogue there: f.chain becomes f.deviation at f.step, then every name the
 // program's mesh shows, to the trace's end or to a named reason
 // (chain_end_reason); f.mesh_reading says which mesh. When the name reads the
-// exact mesh and the chain ended at a step no rule fits (chain_end_reason
-// "no-rule"), the mesh with flips decided in double is tried too, and kept only
-// when it takes the chain to the trace's end (a double program's final mesh can
-// be Delaunay again and name nothing). Nothing changes otherwise, nor when
-// options.check_variant is off.
+// exact mesh and the exact chain lost a step no rule fits (chain_end_reason
+// "no-rule", or the first failing step itself unknown), the meshes a program
+// whose final mesh is Delaunay may still have had are tried (cocircular ties
+// kept as inserted, flips decided in double, no flips, no flips but after
+// splits): the one that follows farthest is kept when it goes past that step,
+// its chain named again from the first step, with the mesh's arithmetic name
+// (inexact-incircle, missing-flips; none for ties kept) at the lost step.
+// Nothing changes otherwise, nor when options.check_variant is off.
 void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace, const ConformanceOptions& options,
                          ConformanceFailure& f);
 

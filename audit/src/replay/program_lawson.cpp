@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The flips of a program that decides them in double (MeshReading::DoubleIncircle,
-// docs/CONFORMANCE.md "The program's mesh"): after a point is inserted, Lawson
-// flips around it, never across a constrained edge, each decided by the in-circle
-// determinant as a double program evaluates it. Where that disagrees with the
-// exact sign (a quad cocircular within rounding), the replay's mesh is the
-// program's, not the constrained Delaunay one.
+// The flips of a program that makes its own Lawson flips (docs/CONFORMANCE.md
+// "The program's mesh"): after a point is inserted, flips around it, never across
+// a constrained edge, each decided by the in-circle determinant as the program
+// evaluates it. DoubleIncircle: in double; where that disagrees with the exact
+// sign (a quad cocircular within rounding), the replay's mesh is the program's,
+// not the constrained Delaunay one. TiesKept: exactly, flipped only strictly
+// inside, so an exactly cocircular quad keeps its diagonal, where CGAL's
+// insertion breaks the tie by its symbolic perturbation.
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -34,7 +36,8 @@ Point as_double(VH v) { return {CGAL::to_double(v->point().x()), CGAL::to_double
 
 // The reference's legalization order (restore_delaunay): the faces around v,
 // each legalized depth first; only the decision differs.
-void Replayer::double_lawson(VH v) {
+void Replayer::program_lawson(VH v) {
+  const bool in_double = rules.mesh == MeshReading::DoubleIncircle;
   std::vector<FH> stack;
   Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
   do stack.push_back(fc); while (++fc != done);
@@ -46,8 +49,13 @@ void Replayer::double_lawson(VH v) {
     const int i = f->index(v);
     FH n = f->neighbor(i);
     if (f->is_constrained(i) || tr.cdt.is_infinite(f) || tr.cdt.is_infinite(n)) continue;
-    const std::array<Point, 3> t{as_double(n->vertex(0)), as_double(n->vertex(1)), as_double(n->vertex(2))};
-    if (!(incircle_double(t, d) > 0)) continue;
+    if (in_double) {
+      const std::array<Point, 3> t{as_double(n->vertex(0)), as_double(n->vertex(1)), as_double(n->vertex(2))};
+      if (!(incircle_double(t, d) > 0)) continue;
+    } else if (CGAL::side_of_oriented_circle(n->vertex(0)->point(), n->vertex(1)->point(), n->vertex(2)->point(),
+                                             v->point()) != CGAL::ON_POSITIVE_SIDE) {
+      continue;
+    }
     // A flip the double decides but the quad does not allow (not strictly convex)
     // would make a flat or folded triangle: no program's mesh has it.
     const CPoint& a = f->vertex(Cdt::ccw(i))->point();
