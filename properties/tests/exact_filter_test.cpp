@@ -85,6 +85,51 @@ TEST(ExactFilter, DecidedSignsAreExactNearDegeneracyAtEveryScale) {
   EXPECT_LT(near.decided, near.cases);
 }
 
+// SmallCorners (the minimum-angle check's shared filter) answers as acute_angle_sin2_below
+// at the two corners that do not face a longest side, on triangles with an angle a few
+// ulps from 30 degrees (where the filter must leave the sign open) and general ones, at
+// every scale; the filter itself must decide most of them or it only costs time.
+TEST(ExactFilter, SmallCornersAnswerAsTheCornerPredicate) {
+  std::mt19937_64 rng(40);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const double s30 = 0.25, s_below = std::nextafter(0.25, 0.0), s_above = std::nextafter(0.25, 1.0);
+  int corners = 0, near = 0;
+  for (int exponent : {-1070, -1030, -500, -20, 0, 30, 250, 500, 511}) {
+    for (int i = 0; i < 2000; ++i) {
+      Point a{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
+      Point b{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
+      // c at 30 degrees from ab seen from a (rounded, then moved by ulps), or anywhere.
+      Point c = i % 2 ? Point{a.x + (b.x - a.x) * 0.8660254037844386 - (b.y - a.y) * 0.5,
+                              a.y + (b.x - a.x) * 0.5 + (b.y - a.y) * 0.8660254037844386}
+                      : Point{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
+      std::uniform_int_distribution<int> ulps(-3, 3);
+      if (i % 2)
+        for (double* v : {&c.x, &c.y})
+          for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) *v = std::nextafter(*v, k > 0 ? INFINITY : -INFINITY);
+      const int o = orient(a, b, c);
+      if (o == 0) continue;
+      if (o < 0) std::swap(b, c);
+      const Point* x[3] = {&a, &b, &c};
+      int longest = 0;  // side i runs x[i] -> x[i + 1]
+      for (int k = 1; k < 3; ++k)
+        if (compare_squared_length(*x[k], *x[(k + 1) % 3], *x[longest], *x[(longest + 1) % 3]) > 0) longest = k;
+      const SmallCorners fused(a, b, c);
+      for (int k = 0; k < 3; ++k) {
+        if (k == (longest + 2) % 3) continue;
+        for (double s : {s30, s_below, s_above, 0.0669872981077807, 0.74}) {
+          ++corners;
+          near += i % 2;
+          ASSERT_EQ(fused.sin2_below(k, s), acute_angle_sin2_below(*x[k], *x[(k + 1) % 3], *x[(k + 2) % 3], s))
+              << "corner " << k << " of (" << a.x << ", " << a.y << ") (" << b.x << ", " << b.y << ") (" << c.x << ", " << c.y
+              << ") against sin^2 " << s;
+        }
+      }
+    }
+  }
+  EXPECT_GT(corners, 50000);
+  EXPECT_GT(near, 20000);
+}
+
 TEST(ExactFilter, ExactZeroOnlyWithoutRounding) {
   const Point a{1, 1}, b{2, 2}, c{3, 3};
   // Products are never trusted to be zero: the determinant of collinear points is left open...

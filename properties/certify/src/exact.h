@@ -165,4 +165,39 @@ inline bool acute_angle_sin2_below(const Point& o, const Point& p, const Point& 
          }) < 0;
 }
 
+// acute_angle_sin2_below at the corners of one triangle (x0, x1, x2) that do not face
+// its longest edge, sharing the first filter: the three sides' squared lengths and the
+// cross product (twice the area, the same at every corner) once, not once per corner.
+// Only for a triangle that is not degenerate (orient != 0) and whose corner `largest`
+// faces a longest side: each other corner faces a side no longer than another, so its
+// angle is below 90 degrees and its dot product positive, and acute_angle_sin2_below
+// reduces to cross^2 < s |u|^2 |v|^2. A sign the filter leaves open takes
+// acute_angle_sin2_below itself: the same answer at every corner, in fewer operations.
+class SmallCorners {
+ public:
+  SmallCorners(const Point& x0, const Point& x1, const Point& x2) : x_{&x0, &x1, &x2} {
+    ErrorBounded side[3][2];
+    for (int i = 0; i < 3; ++i) {  // side i runs x[i] -> x[i + 1]
+      const Point &a = *x_[i], &b = *x_[(i + 1) % 3];
+      side[i][0] = ErrorBounded(b.x) - ErrorBounded(a.x);
+      side[i][1] = ErrorBounded(b.y) - ErrorBounded(a.y);
+      length2_[i] = side[i][0] * side[i][0] + side[i][1] * side[i][1];
+    }
+    const ErrorBounded cross = side[0][0] * side[2][1] - side[0][1] * side[2][0];
+    cross2_ = cross * cross;
+  }
+  // The angle at corner i (between sides i and i + 2) has sin^2 below s. Corner i must
+  // not be the one facing the longest side (for longest side L, corner L + 2 mod 3).
+  bool sin2_below(int i, double s) const {
+    const int c = (cross2_ - ErrorBounded(s) * length2_[i] * length2_[(i + 2) % 3]).sign_or_undecided();
+    if (c != 2) return c < 0;
+    return acute_angle_sin2_below(*x_[i], *x_[(i + 1) % 3], *x_[(i + 2) % 3], s);
+  }
+
+ private:
+  const Point* x_[3];
+  ErrorBounded length2_[3];
+  ErrorBounded cross2_;
+};
+
 }  // namespace lepp::certify::exact

@@ -146,16 +146,25 @@ void check_angles(Certification& cert) {
       int worst = -1;
       bool certainly = false;
       const int largest = skip_largest ? (ix.longest[t] + 2) % 3 : -1;  // half-edge i runs x[i] -> x[i + 1]
-      for (int i = 0; i < 3; ++i) {
-        if (i == largest) continue;
-        const Point &o = ix.P(x[static_cast<std::size_t>(i)]), &p = ix.P(x[static_cast<std::size_t>((i + 1) % 3)]),
-                    &q = ix.P(x[static_cast<std::size_t>((i + 2) % 3)]);
-        if (exact::acute_angle_sin2_below(o, p, q, bracket.hi)) {
-          const bool below = exact::acute_angle_sin2_below(o, p, q, bracket.lo);
+      auto corner = [&](int i, bool below_hi, auto&& below_lo) {
+        if (below_hi) {
+          const bool below = below_lo();
           if (worst < 0 || (below && !certainly)) {
             worst = i;
             certainly = below;
           }
+        }
+      };
+      if (largest >= 0 && ix.ccw[t]) {  // the two other corners' tests share one first filter
+        const exact::SmallCorners corners(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]));
+        for (int i = 0; i < 3; ++i)
+          if (i != largest) corner(i, corners.sin2_below(i, bracket.hi), [&] { return corners.sin2_below(i, bracket.lo); });
+      } else {
+        for (int i = 0; i < 3; ++i) {
+          if (i == largest) continue;
+          const Point &o = ix.P(x[static_cast<std::size_t>(i)]), &p = ix.P(x[static_cast<std::size_t>((i + 1) % 3)]),
+                      &q = ix.P(x[static_cast<std::size_t>((i + 2) % 3)]);
+          corner(i, exact::acute_angle_sin2_below(o, p, q, bracket.hi), [&] { return exact::acute_angle_sin2_below(o, p, q, bracket.lo); });
         }
       }
       if (worst >= 0) skinny[range.range].push_back({t, worst, certainly});
