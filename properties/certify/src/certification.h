@@ -81,7 +81,15 @@ struct MeshIndex {
   std::vector<std::vector<int>> chains;  // per segment: mesh vertex ids from a to b, empty if not found
   std::vector<int> vertex_segment;     // Steiner vertex -> the segment whose chain it is inside, -1 none
   std::vector<char> constrained_half;
-  std::vector<signed char> longest;    // per triangle: index i of its longest half-edge
+  std::vector<signed char> longest;    // per triangle: index i of its longest half-edge (index_triangles)
+  // The triangles with an angle below theta's upper bracket (index_triangles, with the
+  // angle check on): per range of triangles, in triangle order.
+  struct BelowTheta {
+    std::size_t t;
+    int worst;       // a corner with an angle below theta (the smallest such angle is not needed)
+    bool certainly;  // below the lower bracket too: certainly below theta
+  };
+  std::vector<std::vector<BelowTheta>> below_theta;
 
   const Point& P(int v) const { return mesh.vertices[static_cast<std::size_t>(v)]; }
   const Tri& T(std::size_t t) const { return mesh.triangles[t]; }

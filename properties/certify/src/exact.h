@@ -7,6 +7,7 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/Interval_nt.h>
 
+#include <array>
 #include <cmath>
 
 #include "lepp/pslg.h"
@@ -186,6 +187,8 @@ class SmallCorners {
     const ErrorBounded cross = side[0][0] * side[2][1] - side[0][1] * side[2][0];
     cross2_ = cross * cross;
   }
+  // Side i's squared length (x[i] to x[i + 1]), as compare_squared_length's first filter computes it.
+  const std::array<ErrorBounded, 3>& squared_lengths() const { return length2_; }
   // The angle at corner i (between sides i and i + 2) has sin^2 below s. Corner i must
   // not be the one facing the longest side (for longest side L, corner L + 2 mod 3).
   bool sin2_below(int i, double s) const {
@@ -196,7 +199,7 @@ class SmallCorners {
 
  private:
   const Point* x_[3];
-  ErrorBounded length2_[3];
+  std::array<ErrorBounded, 3> length2_;
   ErrorBounded cross2_;
 };
 
