@@ -90,6 +90,13 @@ struct MeshIndex {
     bool certainly;  // below the lower bracket too: certainly below theta
   };
   std::vector<std::vector<BelowTheta>> below_theta;
+  // With one area bound for every triangle (--max-area, no region bounds; index_triangles):
+  // the valid triangles above it, per range of triangles, in triangle order. bound 0: not found here.
+  struct AreaBound {
+    double bound = 0;
+    std::vector<std::vector<std::size_t>> above;
+  };
+  AreaBound area_bound;
 
   const Point& P(int v) const { return mesh.vertices[static_cast<std::size_t>(v)]; }
   const Tri& T(std::size_t t) const { return mesh.triangles[t]; }

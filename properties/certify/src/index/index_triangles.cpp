@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The mesh index's first pass, one visit per triangle: valid ids, orientation, the longest
-// edge, and the corners with an angle below theta (the minimum-angle check's candidates).
-// One pass and not three: each loads the triangle's three points, and at 10^7 triangles
-// those loads, not the arithmetic, were most of each pass's time.
+// edge, the corners with an angle below theta (the minimum-angle check's candidates) and,
+// with one area bound, the triangles above it (the size-bound check's). One pass and not
+// four: each loaded the triangle's three points, and at 10^7 triangles those loads, not
+// the arithmetic, were much of each pass's time.
 #include <array>
+#include <cmath>
 
 #include "../exact.h"
 #include "../passes.h"
@@ -45,8 +47,14 @@ void index_triangles(Certification& cert) {
   // theta (an obtuse one is not acute) and is not tested.
   const bool skip_largest = bracket.hi < 0.75;
   ix.below_theta.assign(range_count(cert, nt), {});
+  // The size-bound check's areas (section 7) where one bound holds everywhere (--max-area
+  // without region bounds); region bounds wait for the regions' flooding.
+  const bool one_bound = cert.options.max_area > 0 && std::isfinite(cert.options.max_area) && !cert.options.region_area_bounds;
+  const double area_limit = ix.area_bound.bound = one_bound ? cert.options.max_area : 0;
+  ix.area_bound.above.assign(range_count(cert, nt), {});
   over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<MeshIndex::BelowTheta>& below = ix.below_theta[found.range];
+    std::vector<std::size_t>& above = ix.area_bound.above[found.range];
     for (std::size_t t = begin; t < end; ++t) {
       const Tri& x = ix.T(t);
       bool ids = true;
@@ -68,10 +76,12 @@ void index_triangles(Certification& cert) {
       else
         found.add({Reason::NotCounterClockwise, fmt::format("{} is not strictly counter-clockwise", ix.tri_text(t)),
                    {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
-      // The longest edge, and the two small corners' sine tests through one first filter.
-      const exact::SmallCorners corners(a, b, c);
-      const int longest = longest_side(ix, t, corners.squared_lengths());
+      // The longest edge, the area against one bound and the small corners' sine tests
+      // through one first filter (exact.h).
+      const exact::TriangleShape shape(a, b, c);
+      const int longest = longest_side(ix, t, shape.squared_lengths());
       ix.longest[t] = static_cast<signed char>(longest);
+      if (area_limit > 0 && shape.doubled_area_above(area_limit)) above.push_back(t);
       if (!angles) continue;
       // A corner with an angle below theta (the smallest such angle is not needed):
       // the first below the upper bracket, unless a later one is certainly below.
@@ -89,7 +99,7 @@ void index_triangles(Certification& cert) {
       const int largest = skip_largest ? (longest + 2) % 3 : -1;  // the corner facing the longest edge
       if (largest >= 0 && ccw) {
         for (int i = 0; i < 3; ++i)
-          if (i != largest) corner(i, corners.sin2_below(i, bracket.hi), [&] { return corners.sin2_below(i, bracket.lo); });
+          if (i != largest) corner(i, shape.sin2_below(i, bracket.hi), [&] { return shape.sin2_below(i, bracket.lo); });
       } else {  // all three corners, or a clockwise or degenerate triangle: each corner on its own
         for (int i = 0; i < 3; ++i) {
           if (i == largest) continue;
