@@ -86,22 +86,22 @@ TEST(ExactFilter, DecidedSignsAreExactNearDegeneracyAtEveryScale) {
 }
 
 // TriangleShape (the index's shared filter over a triangle) answers as acute_angle_sin2_below
-// at the two corners that do not face a longest side, and as the exact sign of |orient| -
-// 2 bound for the area, on triangles with an angle a few ulps from 30 degrees (where the
-// filter must leave the sign open) and general ones, at every scale; its squared lengths
-// order the sides as compare_squared_length does.
+// at the two corners that do not face a longest side, as angle_over_120 at every corner,
+// and as the exact sign of |orient| - 2 bound for the area, on triangles with an angle a
+// few ulps from 30 or 120 degrees (where the filter must leave the sign open) and general
+// ones, at every scale; its squared lengths order the sides as compare_squared_length does.
 TEST(ExactFilter, TriangleShapeAnswersAsTheFullPredicates) {
   std::mt19937_64 rng(40);
   std::uniform_real_distribution<double> unit(-1, 1);
   const double s30 = 0.25, s_below = std::nextafter(0.25, 0.0), s_above = std::nextafter(0.25, 1.0);
-  int corners = 0, near = 0, areas = 0;
+  int corners = 0, near = 0, areas = 0, obtuse = 0;
   for (int exponent : {-1070, -1030, -500, -20, 0, 30, 250, 500, 511}) {
     for (int i = 0; i < 2000; ++i) {
       Point a{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
       Point b{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
-      // c at 30 degrees from ab seen from a (rounded, then moved by ulps), or anywhere.
-      Point c = i % 2 ? Point{a.x + (b.x - a.x) * 0.8660254037844386 - (b.y - a.y) * 0.5,
-                              a.y + (b.x - a.x) * 0.5 + (b.y - a.y) * 0.8660254037844386}
+      // c at 30 or 120 degrees from ab seen from a (rounded, then moved by ulps), or anywhere.
+      const double cosine = i % 4 == 3 ? -0.5 : 0.8660254037844386, sine = i % 4 == 3 ? 0.8660254037844386 : 0.5;
+      Point c = i % 2 ? Point{a.x + (b.x - a.x) * cosine - (b.y - a.y) * sine, a.y + (b.x - a.x) * sine + (b.y - a.y) * cosine}
                       : Point{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
       std::uniform_int_distribution<int> ulps(-3, 3);
       if (i % 2)
@@ -119,6 +119,10 @@ TEST(ExactFilter, TriangleShapeAnswersAsTheFullPredicates) {
         const int filtered = (fused.squared_lengths()[static_cast<std::size_t>(k)] - fused.squared_lengths()[static_cast<std::size_t>((k + 1) % 3)])
                                  .sign_or_undecided();
         if (filtered != 2) ASSERT_EQ(filtered, compare_squared_length(*x[k], *x[(k + 1) % 3], *x[(k + 1) % 3], *x[(k + 2) % 3]));
+      }
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_EQ(fused.angle_over_120_at(k), angle_over_120(*x[k], *x[(k + 1) % 3], *x[(k + 2) % 3])) << "over 120 at corner " << k;
+        obtuse += fused.angle_over_120_at(k);
       }
       // The area against bounds around its own value (a rounded half of the doubled area).
       const double half = std::abs(orientation<double>(a, b, c)) / 2;
@@ -141,6 +145,7 @@ TEST(ExactFilter, TriangleShapeAnswersAsTheFullPredicates) {
   }
   EXPECT_GT(corners, 50000);
   EXPECT_GT(areas, 50000);
+  EXPECT_GT(obtuse, 2000);
   EXPECT_GT(near, 20000);
 }
 

@@ -97,6 +97,9 @@ struct MeshIndex {
     std::vector<std::vector<std::size_t>> above;
   };
   AreaBound area_bound;
+  // Per valid triangle, with the Theorem 2 check on (index_triangles): its angle facing
+  // its longest edge is over 120 degrees (exact::angle_over_120).
+  std::vector<char> largest_over_120;
 
   const Point& P(int v) const { return mesh.vertices[static_cast<std::size_t>(v)]; }
   const Tri& T(std::size_t t) const { return mesh.triangles[t]; }

@@ -174,15 +174,28 @@ inline bool acute_angle_sin2_below(const Point& o, const Point& p, const Point& 
 class TriangleShape {
  public:
   TriangleShape(const Point& x0, const Point& x1, const Point& x2) : x_{&x0, &x1, &x2} {
-    ErrorBounded side[3][2];
     for (int i = 0; i < 3; ++i) {  // side i runs x[i] -> x[i + 1]
       const Point &a = *x_[i], &b = *x_[(i + 1) % 3];
-      side[i][0] = ErrorBounded(b.x) - ErrorBounded(a.x);
-      side[i][1] = ErrorBounded(b.y) - ErrorBounded(a.y);
-      length2_[i] = side[i][0] * side[i][0] + side[i][1] * side[i][1];
+      side_[i][0] = ErrorBounded(b.x) - ErrorBounded(a.x);
+      side_[i][1] = ErrorBounded(b.y) - ErrorBounded(a.y);
+      length2_[i] = side_[i][0] * side_[i][0] + side_[i][1] * side_[i][1];
     }
-    cross_ = side[0][0] * side[2][1] - side[0][1] * side[2][0];
+    cross_ = side_[0][0] * side_[2][1] - side_[0][1] * side_[2][0];
     cross2_ = cross_ * cross_;
+  }
+  // angle_over_120 at corner i (between sides i and i + 2, toward x[i + 1] and x[i + 2]):
+  // dot < 0 and 4 dot^2 > |u|^2 |v|^2, the dot product of side i and side i + 2 reversed.
+  // Any triangle.
+  bool angle_over_120_at(int i) const {
+    const int j = (i + 2) % 3;
+    const ErrorBounded minus_dot = side_[i][0] * side_[j][0] + side_[i][1] * side_[j][1];  // -dot(u, v)
+    const int d = minus_dot.sign_or_undecided();
+    if (d == 0 || d == -1) return false;  // dot >= 0: not obtuse
+    if (d == 1) {
+      const int s = (ErrorBounded(4) * minus_dot * minus_dot - length2_[i] * length2_[j]).sign_or_undecided();
+      if (s != 2) return s > 0;
+    }
+    return angle_over_120(*x_[i], *x_[(i + 1) % 3], *x_[(i + 2) % 3]);
   }
   // |orient(x0, x1, x2)| > 2 * bound, exactly (the area above a bound): from the same
   // cross product, then the full exact path if its filter leaves the sign open. Any triangle.
@@ -211,6 +224,7 @@ class TriangleShape {
 
  private:
   const Point* x_[3];
+  ErrorBounded side_[3][2];
   std::array<ErrorBounded, 3> length2_;
   ErrorBounded cross_, cross2_;
 };

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The mesh index's first pass, one visit per triangle: valid ids, orientation, the longest
-// edge, the corners with an angle below theta (the minimum-angle check's candidates) and,
-// with one area bound, the triangles above it (the size-bound check's). One pass and not
-// four: each loaded the triangle's three points, and at 10^7 triangles those loads, not
-// the arithmetic, were much of each pass's time.
+// edge, the corners with an angle below theta (the minimum-angle check's candidates), the
+// largest angle over 120 degrees (Theorem 2's) and, with one area bound, the triangles
+// above it (the size-bound check's). One pass and not five: each loaded the triangle's
+// three points, and at 10^7 triangles those loads, not the arithmetic, were much of each
+// pass's time.
 #include <array>
 #include <cmath>
 
@@ -39,6 +40,8 @@ void index_triangles(Certification& cert) {
   ix.tri_ok.assign(nt, 0);
   ix.ccw.assign(nt, 0);
   ix.longest.assign(nt, 0);
+  const bool theorem2 = cert.options.theorem2;
+  ix.largest_over_120.assign(theorem2 ? nt : 0, 0);
   // The minimum-angle check's search (docs/CERTIFIER.md section 5): sin^2 theta's bracket.
   const bool angles = cert.options.min_angle_deg > 0;
   const Sin2Bracket bracket = sin2_bracket(angles ? cert.options.min_angle_deg : 30);
@@ -82,6 +85,7 @@ void index_triangles(Certification& cert) {
       const int longest = longest_side(ix, t, shape.squared_lengths());
       ix.longest[t] = static_cast<signed char>(longest);
       if (area_limit > 0 && shape.doubled_area_above(area_limit)) above.push_back(t);
+      if (theorem2) ix.largest_over_120[t] = shape.angle_over_120_at((longest + 2) % 3);  // ranges write apart
       if (!angles) continue;
       // A corner with an angle below theta (the smallest such angle is not needed):
       // the first below the upper bracket, unless a later one is certainly below.
