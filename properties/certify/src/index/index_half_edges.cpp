@@ -59,7 +59,10 @@ void index_half_edges(Certification& cert) {
     // edges, the library's merge sort for a vertex of high degree (a fan's centre).
     auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
     std::vector<std::array<int, 2>>& edges = range_edges[found.range];
-    edges.reserve(static_cast<std::size_t>(ix.half_begin[end] - ix.half_begin[begin]) / 2 + 1);
+    // At most one edge per half-edge (a boundary edge has one): reserved so, the vector never
+    // grows by copying (half of that, the estimate before, was short by the boundary's
+    // edges, and the last growth copied the whole list). Capacity not written costs no memory.
+    edges.reserve(static_cast<std::size_t>(ix.half_begin[end] - ix.half_begin[begin]));
     for (std::size_t v = begin; v < end; ++v) {
       const auto first = ix.halves.begin() + ix.half_begin[v], last = ix.halves.begin() + ix.half_begin[v + 1];
       if (last - first > 32) {
@@ -99,11 +102,9 @@ void index_half_edges(Certification& cert) {
       }
     }
   });
-  std::size_t total = 0;
-  for (const auto& e : range_edges) total += e.size();
-  ix.edges.clear();
-  ix.edges.reserve(total);
-  for (const auto& e : range_edges) ix.edges.insert(ix.edges.end(), e.begin(), e.end());
+  // In range order: the first range's list taken over (one thread: no copy), the others appended.
+  ix.edges = std::move(range_edges.front());
+  for (std::size_t r = 1; r < range_edges.size(); ++r) ix.edges.insert(ix.edges.end(), range_edges[r].begin(), range_edges[r].end());
 }
 
 namespace {
