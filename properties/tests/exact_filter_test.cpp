@@ -85,6 +85,70 @@ TEST(ExactFilter, DecidedSignsAreExactNearDegeneracyAtEveryScale) {
   EXPECT_LT(near.decided, near.cases);
 }
 
+// TriangleShape (the index's shared filter over a triangle) answers as acute_angle_sin2_below
+// at the two corners that do not face a longest side, as angle_over_120 at every corner,
+// and as the exact sign of |orient| - 2 bound for the area, on triangles with an angle a
+// few ulps from 30 or 120 degrees (where the filter must leave the sign open) and general
+// ones, at every scale; its squared lengths order the sides as compare_squared_length does.
+TEST(ExactFilter, TriangleShapeAnswersAsTheFullPredicates) {
+  std::mt19937_64 rng(40);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const double s30 = 0.25, s_below = std::nextafter(0.25, 0.0), s_above = std::nextafter(0.25, 1.0);
+  int corners = 0, near = 0, areas = 0, obtuse = 0;
+  for (int exponent : {-1070, -1030, -500, -20, 0, 30, 250, 500, 511}) {
+    for (int i = 0; i < 2000; ++i) {
+      Point a{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
+      Point b{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
+      // c at 30 or 120 degrees from ab seen from a (rounded, then moved by ulps), or anywhere.
+      const double cosine = i % 4 == 3 ? -0.5 : 0.8660254037844386, sine = i % 4 == 3 ? 0.8660254037844386 : 0.5;
+      Point c = i % 2 ? Point{a.x + (b.x - a.x) * cosine - (b.y - a.y) * sine, a.y + (b.x - a.x) * sine + (b.y - a.y) * cosine}
+                      : Point{std::ldexp(unit(rng), exponent), std::ldexp(unit(rng), exponent)};
+      std::uniform_int_distribution<int> ulps(-3, 3);
+      if (i % 2)
+        for (double* v : {&c.x, &c.y})
+          for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) *v = std::nextafter(*v, k > 0 ? INFINITY : -INFINITY);
+      const int o = orient(a, b, c);
+      if (o == 0) continue;
+      if (o < 0) std::swap(b, c);
+      const Point* x[3] = {&a, &b, &c};
+      int longest = 0;  // side i runs x[i] -> x[i + 1]
+      for (int k = 1; k < 3; ++k)
+        if (compare_squared_length(*x[k], *x[(k + 1) % 3], *x[longest], *x[(longest + 1) % 3]) > 0) longest = k;
+      const TriangleShape fused(a, b, c);
+      for (int k = 0; k < 3; ++k) {
+        const int filtered = (fused.squared_lengths()[static_cast<std::size_t>(k)] - fused.squared_lengths()[static_cast<std::size_t>((k + 1) % 3)])
+                                 .sign_or_undecided();
+        if (filtered != 2) ASSERT_EQ(filtered, compare_squared_length(*x[k], *x[(k + 1) % 3], *x[(k + 1) % 3], *x[(k + 2) % 3]));
+      }
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_EQ(fused.angle_over_120_at(k), angle_over_120(*x[k], *x[(k + 1) % 3], *x[(k + 2) % 3])) << "over 120 at corner " << k;
+        obtuse += fused.angle_over_120_at(k);
+      }
+      // The area against bounds around its own value (a rounded half of the doubled area).
+      const double half = std::abs(orientation<double>(a, b, c)) / 2;
+      for (double bound : {half, std::nextafter(half, 0.0), std::nextafter(half, INFINITY), half / 3, half * 3}) {
+        const int exact = exact_sign(CGAL::abs(orientation<CGAL::Mpzf>(a, b, c)) - (CGAL::Mpzf(bound) + CGAL::Mpzf(bound)));
+        ASSERT_EQ(fused.doubled_area_above(bound), exact > 0) << "area against " << bound;
+        ++areas;
+      }
+      for (int k = 0; k < 3; ++k) {
+        if (k == (longest + 2) % 3) continue;
+        for (double s : {s30, s_below, s_above, 0.0669872981077807, 0.74}) {
+          ++corners;
+          near += i % 2;
+          ASSERT_EQ(fused.sin2_below(k, s), acute_angle_sin2_below(*x[k], *x[(k + 1) % 3], *x[(k + 2) % 3], s))
+              << "corner " << k << " of (" << a.x << ", " << a.y << ") (" << b.x << ", " << b.y << ") (" << c.x << ", " << c.y
+              << ") against sin^2 " << s;
+        }
+      }
+    }
+  }
+  EXPECT_GT(corners, 50000);
+  EXPECT_GT(areas, 50000);
+  EXPECT_GT(obtuse, 2000);
+  EXPECT_GT(near, 20000);
+}
+
 TEST(ExactFilter, ExactZeroOnlyWithoutRounding) {
   const Point a{1, 1}, b{2, 2}, c{3, 3};
   // Products are never trusted to be zero: the determinant of collinear points is left open...

@@ -81,7 +81,25 @@ struct MeshIndex {
   std::vector<std::vector<int>> chains;  // per segment: mesh vertex ids from a to b, empty if not found
   std::vector<int> vertex_segment;     // Steiner vertex -> the segment whose chain it is inside, -1 none
   std::vector<char> constrained_half;
-  std::vector<signed char> longest;    // per triangle: index i of its longest half-edge
+  std::vector<signed char> longest;    // per triangle: index i of its longest half-edge (index_triangles)
+  // The triangles with an angle below theta's upper bracket (index_triangles, with the
+  // angle check on): per range of triangles, in triangle order.
+  struct BelowTheta {
+    std::size_t t;
+    int worst;       // a corner with an angle below theta (the smallest such angle is not needed)
+    bool certainly;  // below the lower bracket too: certainly below theta
+  };
+  std::vector<std::vector<BelowTheta>> below_theta;
+  // With one area bound for every triangle (--max-area, no region bounds; index_triangles):
+  // the valid triangles above it, per range of triangles, in triangle order. bound 0: not found here.
+  struct AreaBound {
+    double bound = 0;
+    std::vector<std::vector<std::size_t>> above;
+  };
+  AreaBound area_bound;
+  // Per valid triangle, with the Theorem 2 check on (index_triangles): its angle facing
+  // its longest edge is over 120 degrees (exact::angle_over_120).
+  std::vector<char> largest_over_120;
 
   const Point& P(int v) const { return mesh.vertices[static_cast<std::size_t>(v)]; }
   const Tri& T(std::size_t t) const { return mesh.triangles[t]; }

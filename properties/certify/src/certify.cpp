@@ -21,7 +21,6 @@ void build_index(Certification& cert) {
   index_domain(cert);
   index_input_vertices(cert);
   index_chains(cert);
-  index_longest_edges(cert);
 }
 
 Report run_alone(Check group, void (*group_pass)(Certification&), const Pslg& pslg, const Mesh& mesh, const Options& options) {
@@ -68,7 +67,6 @@ Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
   pass::check_coverage(cert);
   pass::check_chains_cross_nowhere(cert);
   pass::check_euler(cert);
-  pass::index_longest_edges(cert);
   // 4. Delaunay, 5. minimum angle, 6. Theorem 2, 7. size bounds.
   pass::delaunay(cert);
   pass::min_angle(cert);

@@ -127,41 +127,10 @@ void check_angles(Certification& cert) {
                                                              std::chrono::duration<double>(cert.options.time_limit_seconds));
   cert.report.tie_search_states = cert.options.tie_search_states;
   cert.report.time_limit_seconds = cert.options.time_limit_seconds;
-  // The triangles with an angle below theta, found over ranges (the exact signs are the
-  // pass's cost); what follows, in triangle order on this thread, sees only those.
-  struct Skinny {
-    std::size_t t;
-    int worst;  // corner with an angle below theta (the smallest such angle is not needed)
-    bool certainly;
-  };
-  // The corner facing the longest edge has the largest angle, at least 60 degrees: when
-  // sin^2 theta's upper bracket is below sin^2 60 = 3/4, that corner is never below
-  // theta (an obtuse one is not acute) and is not tested.
-  const bool skip_largest = bracket.hi < 0.75;
-  std::vector<std::vector<Skinny>> skinny(range_count(cert, ix.mesh.triangles.size()));
-  over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& range) {
-    for (std::size_t t = begin; t < end; ++t) {
-      if (!ix.tri_ok[t]) continue;
-      const Tri& x = ix.T(t);
-      int worst = -1;
-      bool certainly = false;
-      const int largest = skip_largest ? (ix.longest[t] + 2) % 3 : -1;  // half-edge i runs x[i] -> x[i + 1]
-      for (int i = 0; i < 3; ++i) {
-        if (i == largest) continue;
-        const Point &o = ix.P(x[static_cast<std::size_t>(i)]), &p = ix.P(x[static_cast<std::size_t>((i + 1) % 3)]),
-                    &q = ix.P(x[static_cast<std::size_t>((i + 2) % 3)]);
-        if (exact::acute_angle_sin2_below(o, p, q, bracket.hi)) {
-          const bool below = exact::acute_angle_sin2_below(o, p, q, bracket.lo);
-          if (worst < 0 || (below && !certainly)) {
-            worst = i;
-            certainly = below;
-          }
-        }
-      }
-      if (worst >= 0) skinny[range.range].push_back({t, worst, certainly});
-    }
-  });
-  for (const std::vector<Skinny>& in_range : skinny)
+  // The triangles with an angle below theta, found with the index (index_triangles, over
+  // ranges: the exact signs are the search's cost); what follows, in triangle order on
+  // this thread, sees only those.
+  for (const std::vector<MeshIndex::BelowTheta>& in_range : ix.below_theta)
     for (const auto& [t, worst, certainly] : in_range) {
       const Tri& x = ix.T(t);
       // Decided before the engine's list is looked at: the rule sees only input and mesh.

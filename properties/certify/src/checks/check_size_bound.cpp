@@ -154,11 +154,35 @@ std::string region_text(const Pslg& pslg, int r) {
                   : fmt::format("region {}", r);
 }
 
+// Triangle t's area above `bound`, in region r (-1: none); use_region: the bound is the region's.
+Violation area_violation(const Certification& cert, std::size_t t, int r, bool use_region, double bound) {
+  const MeshIndex& ix = cert.index;
+  const Tri& x = ix.T(t);
+  const Point &a = ix.P(x[0]), &b = ix.P(x[1]), &c = ix.P(x[2]);
+  const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
+  const std::string whose = use_region ? fmt::format("the bound {} of {}", bound, region_text(ix.pslg, r))
+                                       : fmt::format("the global bound {} (--max-area){}", bound,
+                                                     r >= 0 ? ", in " + region_text(ix.pslg, r)
+                                                     : cert.options.region_area_bounds ? std::string(", in no region") : std::string());
+  Violation v{Reason::AreaAboveBound,
+              fmt::format("{} has area about {}, above {} (exactly: doubled area > 2 x bound)", ix.tri_text(t), area, whose),
+              {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1};
+  v.region = r;
+  return v;
+}
+
 void check_area_bounds(Certification& cert) {
   const MeshIndex& ix = cert.index;
   cert.report.max_area = is_bound(cert.options.max_area) ? cert.options.max_area : 0;
   cert.report.region_area_bounds = cert.options.region_area_bounds;
   const double max_area = cert.report.max_area;
+  if (ix.area_bound.bound > 0 && ix.area_bound.bound == max_area) {
+    // One bound for every valid triangle: the index found those above it (index_triangles).
+    cert.report.area_checked += static_cast<std::size_t>(std::count(ix.tri_ok.begin(), ix.tri_ok.end(), 1));
+    for (const std::vector<std::size_t>& in_range : ix.area_bound.above)
+      for (std::size_t t : in_range) cert.add(area_violation(cert, t, -1, false, max_area));
+    return;
+  }
   const std::vector<int>& triangle_region = cert.report.triangle_region;
   // Over ranges of triangles (ranges.h); counters: [0] triangles checked.
   const auto counts = over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
@@ -172,18 +196,7 @@ void check_area_bounds(Certification& cert) {
       if (bound <= 0) continue;
       ++found.counters[0];
       const Tri& x = ix.T(t);
-      if (!area_above(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]), bound)) continue;
-      const Point &a = ix.P(x[0]), &b = ix.P(x[1]), &c = ix.P(x[2]);
-      const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
-      const std::string whose = use_region ? fmt::format("the bound {} of {}", bound, region_text(ix.pslg, r))
-                                           : fmt::format("the global bound {} (--max-area){}", bound,
-                                                         r >= 0 ? ", in " + region_text(ix.pslg, r)
-                                                         : cert.options.region_area_bounds ? std::string(", in no region") : std::string());
-      Violation v{Reason::AreaAboveBound,
-                  fmt::format("{} has area about {}, above {} (exactly: doubled area > 2 x bound)", ix.tri_text(t), area, whose),
-                  {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1};
-      v.region = r;
-      found.add(std::move(v));
+      if (area_above(ix.P(x[0]), ix.P(x[1]), ix.P(x[2]), bound)) found.add(area_violation(cert, t, r, use_region, bound));
     }
   });
   cert.report.area_checked += counts[0];

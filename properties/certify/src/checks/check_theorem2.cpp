@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Theorem 2 check on the built index: no angle over 120 degrees at an unconstrained terminal edge.
-#include "../exact.h"
 #include "../passes.h"
 #include "../ranges.h"
 #include "lepp/stats.h"
@@ -23,7 +22,7 @@ void check_terminal_edges(Certification& cert) {
       const int a = ix.from(h), b = ix.to(h);
       for (int half : {h, g}) {
         const int c = ix.apex(half);
-        if (exact::angle_over_120(ix.P(c), ix.P(a), ix.P(b))) {
+        if (ix.largest_over_120[static_cast<std::size_t>(half / 3)]) {  // the angle at c (index_triangles: exact::angle_over_120)
           const Point &C = ix.P(c), &A = ix.P(a), &B = ix.P(b);
           const double deg = angle_deg(C, A, B);  // scaled: right at 1e299 and 1e-301 too
           found.add({Reason::TerminalAngleOver120,

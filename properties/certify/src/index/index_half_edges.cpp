@@ -1,43 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The mesh index's first layer: valid triangles, paired half-edges, merged duplicate vertices, longest edges.
+// The mesh index's second layer: paired half-edges, merged duplicate vertices.
 #include <algorithm>
 #include <utility>
 #include <unordered_set>
 
-#include "../exact.h"
 #include "../passes.h"
 #include "../ranges.h"
 
 namespace lepp::certify::pass {
-
-void index_triangles(Certification& cert) {
-  MeshIndex& ix = cert.index;
-  const int n = static_cast<int>(ix.mesh.vertices.size());
-  ix.tri_ok.assign(ix.mesh.triangles.size(), 0);
-  ix.ccw.assign(ix.mesh.triangles.size(), 0);
-  over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
-    for (std::size_t t = begin; t < end; ++t) {
-      const Tri& x = ix.T(t);
-      bool ids = true;
-      for (int v : x) ids = ids && v >= 0 && v < n;
-      if (!ids || x[0] == x[1] || x[1] == x[2] || x[0] == x[2]) {
-        found.add({Reason::BadTriangle, fmt::format("triangle {} has vertex ids {} {} {} (out of range or repeated)", t, x[0], x[1], x[2]),
-                   {static_cast<int>(t)}, {}, {}, {}, -1});
-        continue;
-      }
-      if (!finite(ix.P(x[0])) || !finite(ix.P(x[1])) || !finite(ix.P(x[2]))) {
-        found.add({Reason::BadTriangle, fmt::format("{} has a NaN or infinite coordinate", ix.tri_text(t)), {static_cast<int>(t)}, {}, {}, {}, -1});
-        continue;
-      }
-      ix.tri_ok[t] = 1;  // ranges write apart
-      if (exact::orient(ix.P(x[0]), ix.P(x[1]), ix.P(x[2])) > 0)
-        ix.ccw[t] = 1;
-      else
-        found.add({Reason::NotCounterClockwise, fmt::format("{} is not strictly counter-clockwise", ix.tri_text(t)),
-                   {static_cast<int>(t)}, {}, {x[0], x[1], x[2]}, {}, -1});
-    }
-  });
-}
 
 void index_half_edges(Certification& cert) {
   MeshIndex& ix = cert.index;
@@ -89,7 +59,10 @@ void index_half_edges(Certification& cert) {
     // edges, the library's merge sort for a vertex of high degree (a fan's centre).
     auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
     std::vector<std::array<int, 2>>& edges = range_edges[found.range];
-    edges.reserve(static_cast<std::size_t>(ix.half_begin[end] - ix.half_begin[begin]) / 2 + 1);
+    // At most one edge per half-edge (a boundary edge has one): reserved so, the vector never
+    // grows by copying (half of that, the estimate before, was short by the boundary's
+    // edges, and the last growth copied the whole list). Capacity not written costs no memory.
+    edges.reserve(static_cast<std::size_t>(ix.half_begin[end] - ix.half_begin[begin]));
     for (std::size_t v = begin; v < end; ++v) {
       const auto first = ix.halves.begin() + ix.half_begin[v], last = ix.halves.begin() + ix.half_begin[v + 1];
       if (last - first > 32) {
@@ -129,11 +102,9 @@ void index_half_edges(Certification& cert) {
       }
     }
   });
-  std::size_t total = 0;
-  for (const auto& e : range_edges) total += e.size();
-  ix.edges.clear();
-  ix.edges.reserve(total);
-  for (const auto& e : range_edges) ix.edges.insert(ix.edges.end(), e.begin(), e.end());
+  // In range order: the first range's list taken over (one thread: no copy), the others appended.
+  ix.edges = std::move(range_edges.front());
+  for (std::size_t r = 1; r < range_edges.size(); ++r) ix.edges.insert(ix.edges.end(), range_edges[r].begin(), range_edges[r].end());
 }
 
 namespace {
@@ -201,32 +172,6 @@ void merge_duplicate_vertices(Certification& cert) {
     }
     i = j;
   }
-}
-
-void index_longest_edges(Certification& cert) {
-  MeshIndex& ix = cert.index;
-  ix.longest.assign(ix.mesh.triangles.size(), 0);
-  using exact::ErrorBounded;
-  over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings&) {
-    for (std::size_t t = begin; t < end; ++t) {
-      if (!ix.tri_ok[t]) continue;
-      // Each edge's squared length with its error bound once, not once per comparison:
-      // their difference is the first filter of compare_squared_length, step for step.
-      std::array<ErrorBounded, 3> length;
-      for (int i = 0; i < 3; ++i) {
-        const Point &a = ix.P(ix.from(static_cast<int>(3 * t) + i)), &b = ix.P(ix.to(static_cast<int>(3 * t) + i));
-        const ErrorBounded ux = ErrorBounded(b.x) - ErrorBounded(a.x), uy = ErrorBounded(b.y) - ErrorBounded(a.y);
-        length[static_cast<std::size_t>(i)] = ux * ux + uy * uy;
-      }
-      int best = 0;
-      for (int i = 1; i < 3; ++i) {
-        const int h = static_cast<int>(3 * t) + i, b = static_cast<int>(3 * t) + best;
-        const int s = (length[static_cast<std::size_t>(i)] - length[static_cast<std::size_t>(best)]).sign_or_undecided();
-        if (s == 2 || s == 0 ? ix.longer(ix.from(h), ix.to(h), ix.from(b), ix.to(b)) : s > 0) best = i;  // a tie: by ids
-      }
-      ix.longest[t] = static_cast<signed char>(best);  // ranges write apart
-    }
-  });
 }
 
 }  // namespace lepp::certify::pass
