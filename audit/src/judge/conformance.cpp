@@ -403,6 +403,7 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
     // program the exact replay's search of cocircular cells did not follow; not
     // met in the measurements of docs/CONFORMANCE.md): the exact chain stays.
     if (best_reached < lost_at || best->chain.empty()) return;
+    best->mesh_reading_fallback = true;
     // The mesh's arithmetic (flips decided in double, or missing) is the
     // program's: named where the exact mesh lost the chain.
     const std::string name = best->mesh_reading == to_string(MeshReading::DoubleIncircle) ? kInexactIncircle

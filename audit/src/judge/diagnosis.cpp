@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The diagnosis of a step finding: words and a picture of the step.
 #include "lepp/audit/judge/diagnosis.h"
-#include "lepp/audit/judge/program_mesh.h"
 
 #include <algorithm>
 #include <map>
@@ -101,16 +100,17 @@ std::string diagnosis_markdown(const StepDiagnosis& d) {
       md += fmt::format("{} `{}` from step {}{}", i ? "; then" : "", f.chain[i].deviation, f.chain[i].first_step,
                         f.chain[i].steps ? fmt::format(" ({} steps)", f.chain[i].steps) : "");
     md += f.chain_complete ? ", to the trace's end.\n" : fmt::format(". The replay stopped: {}.\n", f.chain_end);
-    if (!f.mesh_reading.empty() && f.mesh_reading == to_string(mesh_reading_for(f.deviation)))
-      md += fmt::format("The replay followed the program's mesh as it rebuilds it (`{}`, from the name `{}` of the final "
-                        "mesh), not the exact one.\n",
-                        f.mesh_reading, f.deviation);
-    else if (!f.mesh_reading.empty())
-      md += fmt::format("The replay followed the program's mesh as it rebuilds it (`{}`), not the exact one: on the exact "
-                        "mesh the chain lost a step no rule fits, and of the meshes a program whose final mesh is Delaunay "
-                        "may have had, this one follows the trace farthest.\n",
-                        f.mesh_reading);
   }
+  // Which mesh the chain was judged on, even for a chain of one name.
+  if (!f.mesh_reading.empty() && !f.mesh_reading_fallback)
+    md += fmt::format("\nThe replay followed the program's mesh as it rebuilds it (`{}`, from the name `{}` of the final "
+                      "mesh), not the exact one.\n",
+                      f.mesh_reading, f.deviation);
+  else if (!f.mesh_reading.empty())
+    md += fmt::format("\nThe replay followed the program's mesh as it rebuilds it (`{}`), not the exact one: on the exact "
+                      "mesh the chain lost a step no rule fits, and of the meshes a program whose final mesh is Delaunay "
+                      "may have had, this one follows the trace farthest.\n",
+                      f.mesh_reading);
   if (const std::string note = remark10_ignored_note(f); !note.empty()) md += "\n" + note + ".\n";
   if (d.final_not_delaunay)
     md += "\nThe final mesh is not constrained Delaunay (certificate row): the program's intermediate meshes probably "

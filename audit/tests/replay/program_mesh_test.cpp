@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lepp/audit/judge/conformance.h"
+#include "lepp/audit/judge/diagnosis.h"
 #include "lepp/audit/judge/program_mesh.h"
 #include "lepp/audit/replay.h"
 #include "lepp/io.h"
@@ -100,10 +101,31 @@ TEST(ProgramMesh, ReadingChosenByTheArithmeticName) {
   // In step order, the mesh's name first among the names of its step.
   for (std::size_t i = 1; i < f.chain.size(); ++i) {
     EXPECT_LE(f.chain[i - 1].first_step, f.chain[i].first_step) << chain_text(f.chain);
-    if (f.chain[i].first_step == lost_at) EXPECT_NE(f.chain[i].deviation, "missing-flips") << chain_text(f.chain);
+    if (f.chain[i].deviation == "missing-flips") EXPECT_LT(f.chain[i - 1].first_step, lost_at) << chain_text(f.chain);
   }
   EXPECT_EQ(names(f).count("terminal-midpoint"), 1u) << chain_text(f.chain);
   EXPECT_EQ(names(f).count("unknown"), 0u) << chain_text(f.chain);
+}
+
+// The mesh's name comes first among the names of the step the exact chain lost:
+// on a generated cloud (integer coordinates) the midpoint mesher without flips
+// leaves a Delaunay final mesh; the exact replay loses its first failing step (no
+// bad triangle there), and without flips that step is also a terminal midpoint.
+TEST(ProgramMesh, FallbackNameFirstAtItsStep) {
+  const MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/audit/tests/replay/inputs/cloud-no-flips.poly", 30,
+                           "--bug terminal-midpoint --bug no-flips");
+  ConformanceReport exact = check_conformance(r.input, r.trace, options(r.theta));
+  ASSERT_TRUE(exact.failure);
+  ConformanceFailure f = *exact.failure;
+  ASSERT_EQ(f.deviation, "unknown") << chain_text(f.chain);
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  ASSERT_GE(f.chain.size(), 2u) << chain_text(f.chain);
+  EXPECT_EQ(f.deviation, "missing-flips") << chain_text(f.chain);
+  EXPECT_EQ(f.chain[0].deviation, "missing-flips") << chain_text(f.chain);
+  EXPECT_EQ(f.chain[0].first_step, exact.failure->step + 1) << chain_text(f.chain);
+  EXPECT_EQ(f.chain[1].deviation, "terminal-midpoint") << chain_text(f.chain);
+  EXPECT_EQ(f.chain[1].first_step, f.chain[0].first_step) << chain_text(f.chain);
+  EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
 }
 
 // The fallback is kept only when it goes past the step the exact chain lost: the
@@ -148,6 +170,12 @@ TEST(ProgramMesh, ChainLostAtACocircularTieFollowedWithTiesKept) {
   EXPECT_EQ(f.chain.front().first_step, exact.failure->step + 1) << chain_text(f.chain);
   for (const char* arithmetic : {"unknown", "inexact-incircle", "missing-flips"})
     EXPECT_EQ(names(f).count(arithmetic), 0u) << arithmetic << ": " << chain_text(f.chain);
+  // finding.md says which mesh, and that the final mesh did not name it.
+  ConformanceReport followed = exact;
+  followed.failure = f;
+  const std::string md = diagnosis_markdown(conformance_diagnosis(followed, r.theta, false));
+  EXPECT_NE(md.find("(`ties-kept`), not the exact one: on the exact mesh the chain lost a step no rule fits"), std::string::npos) << md;
+  EXPECT_EQ(md.find("of the final mesh), not the exact one"), std::string::npos) << md;
   // Where the chain would have stopped, the same mesh draws the step (chain_end_failure).
   EXPECT_FALSE(chain_end_failure(r.input, r.trace, options(r.theta), f)) << "a complete chain has no end to draw";
 }

@@ -124,6 +124,9 @@ struct ConformanceFailure {
   // "float-points", "ties-kept" the program's, chosen by the arithmetic name of the
   // mesh, or tried where the exact chain lost a step (lepp/audit/judge/program_mesh.h).
   std::string mesh_reading;
+  // mesh_reading was tried where the exact chain lost a step no rule fits (the
+  // final mesh named no arithmetic), not read from the name of the final mesh.
+  bool mesh_reading_fallback = false;
   // Steps that took the quad centroid inside the other triangle where one
   // second-longest edge is constrained: the paper's Remark 10, which a
   // reversed program never does (the evidence for remark10-ignored).
