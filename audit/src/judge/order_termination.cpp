@@ -24,6 +24,10 @@ bool converges(const Pslg& pslg, Method method, double theta, QueueOrder order, 
 
 }  // namespace
 
+bool termination_comparable(RunStatus status) {
+  return status == RunStatus::Ok || status == RunStatus::TimedOut || status == RunStatus::Stopped;
+}
+
 std::optional<OrderTermination> compare_termination(const Pslg& pslg, const std::string& input, Method method, double theta,
                                                     bool engine_converged, double time_limit, int random_orders,
                                                     std::size_t tie_search_states) {

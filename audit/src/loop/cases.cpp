@@ -85,6 +85,7 @@ void compare_points(AuditSession& session, const AuditInput& input, const Case& 
 // A termination difference with lepp's default order: which lepp orders end there.
 void compare_orders(AuditSession& session, const AuditInput& input, const Case& c, CaseOutcome& out) {
   const AuditOptions& opt = session.options;
+  if (!termination_comparable(out.statuses.front())) return;
   const auto tc = Clock::now();
   out.order_termination = compare_termination(input.pslg, input.name, opt.method, c.theta,
                                               out.statuses.front() == RunStatus::Ok, opt.timeout_seconds, 10,

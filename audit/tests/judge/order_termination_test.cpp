@@ -37,6 +37,17 @@ TEST(OrderTermination, AnEngineThatLoopsWhereFifoEndsIsComparedWithEveryOrder) {
   EXPECT_EQ(to_json({*d})[0]["lepp_fifo_converged"], true);
 }
 
+// Only a run that converged or did not end is compared; one that ended badly (the
+// unreadable output of a program writing inf coordinates) is not "does not end".
+TEST(OrderTermination, ComparedOnlyForAStatusThatSaysHowTheRunEnded) {
+  EXPECT_TRUE(termination_comparable(RunStatus::Ok));
+  EXPECT_TRUE(termination_comparable(RunStatus::TimedOut));
+  EXPECT_TRUE(termination_comparable(RunStatus::Stopped));
+  EXPECT_FALSE(termination_comparable(RunStatus::UnreadableOutput));
+  EXPECT_FALSE(termination_comparable(RunStatus::Crashed));
+  EXPECT_FALSE(termination_comparable(RunStatus::ExitCode));
+}
+
 TEST(OrderTermination, NothingToSayWhenFifoAgrees) {
   EXPECT_FALSE(compare_termination(corner(), "corner", Method::Centroid, 33, true, 10).has_value());
   EXPECT_EQ(format_order_terminations({}, 20), "");

@@ -563,6 +563,10 @@ TEST_P(AuditCatches, BugInItsRowShrunk) {
   const AuditRun r = audit("bug-" + c.bug, mesher("--bug " + c.bug),
                            kOwnInputs + " --method centroid --max-findings 1 " + c.args);
   expect_caught(r, c.bug, c.row, c.detail, nullptr, c.strictly_smaller, c.deviation);
+  // A run that ended badly (unreadable output, a crash) did end: it is not listed
+  // as a termination difference with lepp's fifo ("the engine does not end").
+  if (c.bug == "garbage" || c.bug == "crash")
+    EXPECT_TRUE(r.report.value("order_termination", json::array()).empty()) << r.report.value("order_termination", json()).dump(2);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lepp/audit/engine.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
 
@@ -26,6 +27,12 @@ struct OrderTermination {
   std::vector<std::string> converging;   // lepp's named orders that converge
   int random_converged = 0, random_tried = 0;  // random orders, seeds 1..random_tried
 };
+
+// Whether an audited run's status says anything of its termination: it converged
+// (Ok), or it did not (TimedOut, Stopped). A run that ended otherwise (a crash, a
+// non-zero exit, an unreadable output) did end: its failure is its own row's, and
+// "does not end" would contradict the termination row.
+bool termination_comparable(RunStatus status);
 
 // lepp under every order on `pslg` (a validated input) when fifo's termination
 // differs from the engine's; nullopt when they agree. Each lepp run is bounded by
