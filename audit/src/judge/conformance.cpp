@@ -66,7 +66,9 @@ void follow_chain(Replay& replay, const std::vector<Point>& trace, std::size_t f
   std::size_t i = first;
   while (i < trace.size()) {
     if (!has_variant(named)) {
-      if (f.chain.size() == 1) return;  // the first step's name is no rule set: nothing to go on with
+      // The first failing step's name is no rule set either: nothing to go on with,
+      // and the chain stops there, with its reason as any other (its what is the failure's).
+      if (f.chain.size() == 1) named_what = f.deviation_what;
       f.chain_end = named == Deviation::Unknown
                         ? fmt::format("step {} is {}", i + 1, named_what)
                         : fmt::format("step {} is {}'s point, not a rule set the replay can go on with", i + 1, to_string(named));
@@ -366,7 +368,6 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
   std::size_t lost_at = 0;  // the exact chain's step no rule fits, 1-based
   if (fallback) {
     if (f.chain_end_reason == "no-rule") lost_at = f.chain_end_step;
-    else if (f.deviation == "unknown" && f.chain.size() <= 1) lost_at = f.step + 1;  // the first failing step itself
     else return;
     readings = {MeshReading::TiesKept, MeshReading::DoubleIncircle, MeshReading::NoFlips, MeshReading::NoFlipsButSplits};
   }
@@ -432,6 +433,9 @@ std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const
                                                     const ConformanceOptions& options, const ConformanceFailure& f) {
   if (f.chain_end_reason != "no-rule" && f.chain_end_reason != "program-mesh-lost") return std::nullopt;
   if (f.chain_end_step == 0 || f.chain_end_step > trace.size()) return std::nullopt;
+  // The failing step itself (a chain of one name, on the mesh the failure was found
+  // on): its picture is the finding's step.svg already.
+  if (f.chain_end_step == f.step + 1 && f.mesh_reading.empty()) return std::nullopt;
   ReplayRules rules = rules_of(options);
   for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints,
                         MeshReading::TiesKept})

@@ -32,7 +32,7 @@ MeshReading mesh_reading_for(const std::string& deviation);
 // program's mesh shows, to the trace's end or to a named reason
 // (chain_end_reason); f.mesh_reading says which mesh. When the name reads the
 // exact mesh and the exact chain lost a step no rule fits (chain_end_reason
-// "no-rule", or the first failing step itself unknown), the meshes a program
+// "no-rule", the first failing step itself included), the meshes a program
 // whose final mesh is Delaunay may still have had are tried (cocircular ties
 // kept as inserted, flips decided in double, no flips, no flips but after
 // splits): the one that follows farthest is kept when it goes past that step,
