@@ -2,6 +2,10 @@
 // The cold parts of the flat mesh: segment membership and conversion to Mesh.
 #include "tri_mesh.h"
 
+#include <fmt/format.h>
+
+#include "capacity.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -134,6 +138,20 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   });
   mesh.constrained_edges = std::move(edges);
   return mesh;
+}
+
+IdLimits& id_limits() {
+  static IdLimits limits;
+  return limits;
+}
+
+void check_capacity(std::int64_t vertices, std::int64_t triangles, std::int64_t steiner) {
+  const IdLimits limits = id_limits();
+  if (ids_fit(vertices, triangles, limits)) return;
+  throw CapacityError(fmt::format(
+      "the mesh outgrows the fast engine: {} vertices and {} triangles, where its ids number at most {} vertices "
+      "and {} triangles; a larger --max-area, or --max-steiner {} to stop before it (exit 3)",
+      vertices, triangles, limits.vertices, limits.triangles, steiner));
 }
 
 }  // namespace lepp::fast

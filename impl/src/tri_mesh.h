@@ -43,8 +43,11 @@ class FTri {
 
   int nbr[3];
 
+  // A vertex id's bits (capacity.h guards them).
+  static constexpr int kIdBits = 29;
+
  private:
-  static constexpr std::uint32_t kId = (std::uint32_t{1} << 29) - 1;
+  static constexpr std::uint32_t kId = (std::uint32_t{1} << kIdBits) - 1;
   static constexpr int kLongestShift = 29;  // longest + 1 in bits 29, 30 of w_[0]
   static constexpr std::uint32_t kConstrained = std::uint32_t{1} << 31;
   static std::uint32_t word(int v, std::int8_t s) { return static_cast<std::uint32_t>(v) | (s >= 0 ? kConstrained : 0); }
