@@ -106,7 +106,14 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   unsigned char* packed = reinterpret_cast<unsigned char*>(tris.data());
   std::vector<std::uint32_t> start(nv + 1, 0);
   std::vector<ConstrainedEdge> edges;
+  // Bucket counts and places are loads from anywhere in start (and the places'
+  // triangles anywhere in the output): both passes fetch them kAhead triangles early.
+  constexpr std::size_t kAhead = 16;
   for (std::size_t ti = 0; ti < nt; ++ti) {
+    if (ti + kAhead < nt) {
+      const FTri& g = tris[ti + kAhead];  // not yet overwritten: Tri ti ends before it
+      __builtin_prefetch(start.data() + std::min({g.v(0), g.v(1), g.v(2)}) + 1, 1);
+    }
     const FTri f = tris[ti];
     const Tri r = rotated(f);
     ++start[static_cast<std::size_t>(r[0]) + 1];
@@ -126,6 +133,14 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   mesh.triangles.resize(nt);
   for (std::size_t ti = 0; ti < nt; ++ti) {
     Tri r;
+    if (ti + 2 * kAhead < nt) {
+      std::memcpy(&r, packed + (ti + 2 * kAhead) * sizeof(Tri), sizeof r);
+      __builtin_prefetch(start.data() + r[0], 1);
+    }
+    if (ti + kAhead < nt) {
+      std::memcpy(&r, packed + (ti + kAhead) * sizeof(Tri), sizeof r);
+      __builtin_prefetch(mesh.triangles.data() + start[static_cast<std::size_t>(r[0])], 1);
+    }
     std::memcpy(&r, packed + ti * sizeof(Tri), sizeof r);
     mesh.triangles[start[static_cast<std::size_t>(r[0])]++] = r;
   }
