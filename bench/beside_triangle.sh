@@ -10,7 +10,10 @@
 # bench/lib/interleave.py); prints a markdown table and the ratios the issue asks for.
 # usage: TRIANGLE=path/to/triangle bench/beside_triangle.sh LEPP
 # environment: AREA=0.015 (about 10^6 triangles; 0.0015: 10^7), RUNS=5 (issue 40: at
-#   least 5 pairs at 10^6, 3 at 10^7), OUT=/tmp (the meshes, about 60 bytes a triangle).
+#   least 5 pairs at 10^6, 3 at 10^7), OUT=/tmp (the meshes, about 60 bytes a triangle),
+#   BEFORE=path to another lepp (an older build): its refine --threads 1 runs in each
+#   round too, after lepp's, and its ratio to Triangle is printed beside lepp's;
+#   CERTIFY=0 leaves out the certify runs (the mesher's ratios alone, item 2).
 # Triangle is never part of lepp: build it for benchmarks only (docs/BENCHMARKS.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,14 +29,20 @@ out_dir=$(mktemp -d "${OUT:-/tmp}/beside_triangle.XXXXXX")
 trap 'rm -rf "$out_dir"' EXIT
 cp corpus/paper/square400.poly "$out_dir/in.poly"
 
-certify_threads=0
-if "$lepp" certify --help 2>/dev/null | grep -q -- '--threads'; then certify_threads=1; fi
+certify_threads=0  # 1: certify has --threads (both counts run); none: no certify runs
+if [[ ${CERTIFY:-1} == 0 ]]; then
+  certify_threads=none
+elif "$lepp" certify --help 2>/dev/null | grep -q -- '--threads'; then
+  certify_threads=1
+fi
 
 # The loop and the medians: bench/lib/interleave.py (shared with certify_beside_refine.sh).
-PYTHONPATH=bench/lib python3 - "$lepp" "$triangle" "$out_dir" "$area" "$rounds" "$certify_threads" <<'PY'
+before=${BEFORE:+$(readlink -f "$BEFORE")}
+PYTHONPATH=bench/lib python3 - "$lepp" "$triangle" "$out_dir" "$area" "$rounds" "$certify_threads" "${before:-}" <<'PY'
 import os, sys
 from interleave import Step, first_count, markdown_table, medians, run_rounds
-lepp, triangle, out, area, rounds, certify_threads = sys.argv[1:4] + [sys.argv[4], int(sys.argv[5]), sys.argv[6] == "1"]
+lepp, triangle, out, area, rounds, certify_threads = sys.argv[1:4] + [sys.argv[4], int(sys.argv[5]), {"1": True, "0": False}.get(sys.argv[6], "none")]
+before = sys.argv[7]
 inp, mesh = f"{out}/in.poly", f"{out}/lepp"
 refine = [lepp, "refine", inp, "--min-angle", "30", "--max-area", area]
 certify = [lepp, "certify", inp, mesh, "--min-angle", "30", "--max-area", area]
@@ -46,15 +55,21 @@ def triangle_done():  # Triangle's count read, its files removed (the next round
 
 steps = [
     Step("lepp1", "lepp refine --threads 1", refine + ["--threads", "1", "-q", "-o", mesh], ok=(0, 3)),
+]
+if before:  # its mesh written apart: certify reads lepp's
+    steps.append(Step("before1", "before: lepp refine --threads 1",
+                      [before] + refine[1:] + ["--threads", "1", "-q", "-o", f"{out}/before"], ok=(0, 3)))
+steps += [
     Step("lepp2", "lepp refine --threads 2", refine + ["--threads", "2", "-q", "-o", mesh], ok=(0, 3)),
     Step("triangle", "Triangle -pq30", [triangle, "-pq30", f"-a{area}", "-Q", inp], then=triangle_done),
-    Step("certify1", "lepp certify --threads 1", certify + (["--threads", "1"] if certify_threads else []), ok=(0, 3)),
 ]
-if certify_threads:
+if certify_threads != "none":
+    steps.append(Step("certify1", "lepp certify --threads 1", certify + (["--threads", "1"] if certify_threads else []), ok=(0, 3)))
+if certify_threads is True:
     steps.append(Step("certify2", "lepp certify --threads 2", certify + ["--threads", "2"], ok=(0, 3)))
 med = medians(run_rounds(steps, rounds, "bench/beside_triangle.sh"))
 lepp_triangles = first_count(f"{mesh}.ele")
-count = lambda s: triangles["triangle"] if s.name == "triangle" else lepp_triangles
+count = lambda s: triangles["triangle"] if s.name == "triangle" else first_count(f"{out}/before.ele") if s.name == "before1" else lepp_triangles
 
 print(f"Square400, theta = 30, area bound {area}; medians of {rounds} interleaved rounds")
 print()
@@ -68,8 +83,11 @@ print(markdown_table(steps, med, [
 print()
 tr = med["triangle"]
 print(f"- Triangle's CPU over lepp's, one thread: **{tr['cpu'] / med['lepp1']['cpu']:.2f}x** (issue 40: at least 3.5)")
+if before:
+    print(f"- Triangle's CPU over the BEFORE build's, one thread: **{tr['cpu'] / med['before1']['cpu']:.2f}x**")
 print(f"- Triangle's wall over lepp's, two threads: **{tr['wall'] / med['lepp2']['wall']:.2f}x** (issue 40: at least 4.5)")
-print(f"- lepp certify over lepp refine, one thread, wall: **{med['certify1']['wall'] / med['lepp1']['wall']:.2f}** (issue 40: at most 1)")
+if "certify1" in med:
+    print(f"- lepp certify over lepp refine, one thread, wall: **{med['certify1']['wall'] / med['lepp1']['wall']:.2f}** (issue 40: at most 1)")
 if "certify2" in med:
     print(f"- lepp certify --threads 2 over lepp refine --threads 1, wall: **{med['certify2']['wall'] / med['lepp1']['wall']:.2f}** (issue 40: at most 0.6)")
 PY
