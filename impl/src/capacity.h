@@ -32,7 +32,9 @@ constexpr bool ids_fit(std::int64_t vertices, std::int64_t triangles, IdLimits l
 IdLimits& id_limits();
 
 // Throws CapacityError unless ids_fit(vertices, triangles, id_limits()); `steiner`
-// (the points inserted so far) names the budget that stops the run before, with exit 3.
+// (the points inserted so far) names the budget that stops the run before, with exit 3,
+// or is kInputOnly before the input's triangulation (no budget helps then).
+constexpr std::int64_t kInputOnly = -1;
 void check_capacity(std::int64_t vertices, std::int64_t triangles, std::int64_t steiner);
 
 }  // namespace lepp::fast

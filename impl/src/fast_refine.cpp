@@ -15,8 +15,8 @@
 
 #include "cdt_build.h"
 #include "bad_queue.h"
-#include "capacity.h"
 #include "batch_rounds.h"
+#include "capacity.h"
 #include "insertion.h"
 #include "lepp/angle.h"
 #include "lepp/fast.h"
@@ -88,7 +88,7 @@ class Refiner {
     const auto vertices_guess = static_cast<std::size_t>(std::min(expected, 4e8));
     std::int64_t initial_ties = 0;
     // A triangulation of n vertices has fewer than 2 n triangles.
-    check_capacity(static_cast<std::int64_t>(n), 2 * static_cast<std::int64_t>(n), 0);
+    check_capacity(static_cast<std::int64_t>(n), 2 * static_cast<std::int64_t>(n), kInputOnly);
     mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess, &initial_ties, opt_.region_area_bounds);
     if (opt_.region_area_bounds) {
       // Region bounds: the estimate from the initial triangles' areas over their bounds.

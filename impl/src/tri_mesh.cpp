@@ -163,6 +163,11 @@ IdLimits& id_limits() {
 void check_capacity(std::int64_t vertices, std::int64_t triangles, std::int64_t steiner) {
   const IdLimits limits = id_limits();
   if (ids_fit(vertices, triangles, limits)) return;
+  if (steiner == kInputOnly)
+    throw CapacityError(fmt::format(
+        "the input outgrows the fast engine: {} vertices, whose triangulation may need {} triangles, where its ids "
+        "number at most {} vertices and {} triangles; the reference engine (--engine reference) has no such limit",
+        vertices, triangles, limits.vertices, limits.triangles));
   throw CapacityError(fmt::format(
       "the mesh outgrows the fast engine: {} vertices and {} triangles, where its ids number at most {} vertices "
       "and {} triangles; a larger --max-area, or --max-steiner {} to stop before it (exit 3)",

@@ -60,6 +60,14 @@ TEST(Capacity, CheckThrowsCapacityErrorNamingTheCountsAndTheBudget) {
     EXPECT_EQ(what.find('\n'), std::string::npos) << "one line";
   }
   EXPECT_THROW(check_capacity(kTwo29 + 1, 4, 0), CapacityError);
+  try {
+    check_capacity(kTwo29 / 2 + 1, kTwo29 + 2, kInputOnly);
+    FAIL() << "no CapacityError";
+  } catch (const CapacityError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the input outgrows"), std::string::npos) << what;
+    EXPECT_EQ(what.find("--max-steiner"), std::string::npos) << "no budget helps an input: " << what;
+  }
 }
 
 // Lowered limits for one test, restored after it.
@@ -99,14 +107,16 @@ TEST(Capacity, RefinementStopsBeforeTheLimitAndNotAtIt) {
     Limits below(v, t - 1);
     EXPECT_THROW(refine(p, o), CapacityError);
   }
-  {
-    // Input vertices past the limit: refused before the initial triangulation.
-    Limits input(static_cast<std::int64_t>(p.vertices.size()) - 1, t);
+  // An input past the limit, or whose triangulation could be (2 n triangles): refused
+  // before the initial triangulation.
+  const auto n = static_cast<std::int64_t>(p.vertices.size());
+  for (const IdLimits limits : {IdLimits{n - 1, t}, IdLimits{n, 2 * n - 1}}) {
+    Limits input(limits.vertices, limits.triangles);
     try {
       refine(p, o);
-      FAIL() << "no CapacityError";
+      ADD_FAILURE() << "no CapacityError at limits " << limits.vertices << ", " << limits.triangles;
     } catch (const CapacityError& e) {
-      EXPECT_NE(std::string(e.what()).find("--max-steiner 0"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("the input outgrows"), std::string::npos) << e.what();
     }
   }
 }
