@@ -158,9 +158,13 @@ struct TriMesh {
     t(ti) = f;
     ++stamp[static_cast<std::size_t>(ti)];
   }
+  // One slot at a time: resize's general path (std::vector's _M_fill_insert and
+  // _M_default_append, not inlined) cost about 100 instructions an insertion.
   void grow(std::size_t k) {
-    tris.resize(tris.size() + k);
-    stamp.resize(tris.size(), 0);
+    for (std::size_t i = 0; i < k; ++i) {
+      tris.emplace_back();  // FTri() writes nothing: put() fills the slot
+      stamp.push_back(0);
+    }
   }
   // Slot `to` (just grown) lies in the region of slot `from`.
   void inherit_region(int from, int to) {
