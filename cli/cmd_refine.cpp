@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "message.h"
+#include "lepp/capacity_error.h"
 #include "lepp/engines/refine_files.h"
 #include "lepp/engines/refine_request.h"
 #include "lepp/engines/refine_summary.h"
@@ -39,7 +40,16 @@ int run_refine(const engines::RefineRequest& args) {
   if (!args.quiet && !args.json && isatty(STDERR_FILENO)) {
     options.on_progress = [](std::int64_t n) { message("\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
   }
-  RefineResult result = engines::refine(engines::refine_engine(args), input.pslg, options);
+  RefineResult result;
+  try {
+    result = engines::refine(engines::refine_engine(args), input.pslg, options);
+  } catch (const CapacityError& e) {
+    // A mesh larger than the engine can number: the request's to change (its size
+    // bound or budget), like bad input; no file is written.
+    if (options.on_progress) message("\r\033[K");
+    message("lepp refine: %s\n", e.what());
+    return 2;
+  }
   if (options.on_progress) message("\r\033[K");
   engines::RefineWritten written;
   try {
@@ -129,7 +139,7 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->footer(
       "Exit status: 0 converged; 3 stopped by a guard (budget, edge floor, time limit) or triangles left\n"
       "unimprovable by small input angles or at double precision (the mesh is still written, a valid CDT);\n"
-      "2 bad input; 1 internal error.");
+      "2 bad input, or a mesh past the fast engine's 2^29 vertices or triangles; 1 internal error.");
   cmd->callback([args, &status] { status = run_refine(*args); });
 }
 

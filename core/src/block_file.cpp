@@ -16,6 +16,7 @@ namespace {
 }  // namespace
 
 BlockFile::BlockFile(const std::string& path) : path_(path) {
+  buffer_.reserve(kBlock + kSlack);
   errno = 0;
   file_ = std::fopen(path.c_str(), "wb");
   if (!file_) fail(path_, "open for writing");

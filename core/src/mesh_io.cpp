@@ -192,8 +192,13 @@ void write_node_file(const std::string& prefix, const Mesh& mesh) {
   BlockFile out(prefix + ".node");
   out.print("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n");
   out.print("{} 2 0 1\n", mesh.vertices.size());
+  // A line: a 20-digit number, two doubles of at most 24 characters, a digit, 4 separators.
+  constexpr std::size_t kNodeLine = 128;
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
+    out.line(kNodeLine, [&](char* at) {
+      return fmt::format_to(at, FMT_COMPILE("{} {} {} {}\n"), i + 1, mesh.vertices[i].x, mesh.vertices[i].y,
+                            i < mesh.input_vertices ? 1 : 0);
+    });
   out.close();
 }
 
@@ -201,9 +206,10 @@ void write_ele_and_poly_files(const std::string& prefix, const Mesh& mesh) {
   {
     BlockFile out(prefix + ".ele");
     out.print("{} 3 0\n", mesh.triangles.size());
+    constexpr std::size_t kEleLine = 96;  // four numbers of at most 20 digits, 4 separators
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
       const Tri& t = mesh.triangles[i];
-      out.print(FMT_COMPILE("{} {} {} {}\n"), i + 1, t[0] + 1, t[1] + 1, t[2] + 1);
+      out.line(kEleLine, [&](char* at) { return fmt::format_to(at, FMT_COMPILE("{} {} {} {}\n"), i + 1, t[0] + 1, t[1] + 1, t[2] + 1); });
     }
     out.close();
   }

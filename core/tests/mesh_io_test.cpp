@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Writers round-trip through the readers: write_mesh then read_mesh gives the
 // same mesh with bit-identical coordinates; write_poly then read_poly the same
-// PSLG; and the mesh reader rejects a broken file.
+// PSLG; the .node and .ele are fmt's text across the writer's blocks; and the mesh
+// reader rejects a broken file.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,9 @@
 #include <iterator>
 #include <limits>
 #include <random>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "lepp/io.h"
 
@@ -77,6 +81,37 @@ std::string file_bytes(const std::string& path) {
 }
 
 // threads > 1 writes the .node on a second thread: the same three files, byte for byte.
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The .node's and .ele's lines are formatted straight into the writer's 1 MiB blocks:
+// over several blocks, with the longest doubles there are, the text is fmt's, line by line.
+TEST(MeshIo, NodeAndEleLinesAreFmtsTextAcrossBlocks) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(60000);  // about 3 MiB of .node
+  mesh.input_vertices = 1000;
+  std::mt19937 rng(40);
+  for (int i = 0; i < 150000; ++i)
+    mesh.triangles.push_back({static_cast<int>(rng() % 60000), static_cast<int>(rng() % 60000), static_cast<int>(rng() % 60000)});
+  std::string node = fmt::format("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n{} 2 0 1\n", mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    node += fmt::format("{} {} {} {}\n", i + 1, mesh.vertices[i].x, mesh.vertices[i].y, i < mesh.input_vertices ? 1 : 0);
+  std::string ele = fmt::format("{} 3 0\n", mesh.triangles.size());
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+    ele += fmt::format("{} {} {} {}\n", i + 1, mesh.triangles[i][0] + 1, mesh.triangles[i][1] + 1, mesh.triangles[i][2] + 1);
+  ASSERT_GT(node.size(), std::size_t{3} << 20);
+  ASSERT_GT(ele.size(), std::size_t{2} << 20);
+  for (int threads : {1, 2}) {
+    const std::string prefix = temp_prefix("blocks" + std::to_string(threads));
+    write_mesh(prefix, mesh, threads);
+    EXPECT_TRUE(file_text(prefix + ".node") == node) << threads << " thread(s)";
+    EXPECT_TRUE(file_text(prefix + ".ele") == ele) << threads << " thread(s)";
+    for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+  }
+}
+
 TEST(MeshIo, TwoThreadsWriteTheSameFiles) {
   Mesh mesh;
   mesh.vertices = awkward_points(3000);

@@ -16,6 +16,7 @@
 #include "cdt_build.h"
 #include "bad_queue.h"
 #include "batch_rounds.h"
+#include "capacity.h"
 #include "insertion.h"
 #include "lepp/angle.h"
 #include "lepp/fast.h"
@@ -86,6 +87,8 @@ class Refiner {
     expected = std::min(expected, static_cast<double>(n) + static_cast<double>(budget) + 1);
     const auto vertices_guess = static_cast<std::size_t>(std::min(expected, 4e8));
     std::int64_t initial_ties = 0;
+    // A triangulation of n vertices has fewer than 2 n triangles.
+    check_capacity(static_cast<std::int64_t>(n), 2 * static_cast<std::int64_t>(n), kInputOnly);
     mesh_ = build_initial_cdt(pslg_, mem_, 2 * vertices_guess, vertices_guess, &initial_ties, opt_.region_area_bounds);
     if (opt_.region_area_bounds) {
       // Region bounds: the estimate from the initial triangles' areas over their bounds.
@@ -326,7 +329,11 @@ class Refiner {
     } else if (steiner_ >= budget_) {
       outcome_ = Outcome::SteinerBudget;
     }
-    if (outcome_ == Outcome::Converged) return true;
+    if (outcome_ == Outcome::Converged) {
+      // An insertion adds one vertex and at most two triangle slots (tri_mesh.h's splits).
+      check_capacity(static_cast<std::int64_t>(mesh_.pts.size()) + 1, static_cast<std::int64_t>(mesh_.tris.size()) + 2, steiner_);
+      return true;
+    }
     result.stuck = describe(mesh_, item, lepp_);
     return false;
   }

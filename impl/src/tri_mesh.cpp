@@ -2,6 +2,10 @@
 // The cold parts of the flat mesh: segment membership and conversion to Mesh.
 #include "tri_mesh.h"
 
+#include <fmt/format.h>
+
+#include "capacity.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -102,7 +106,14 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   unsigned char* packed = reinterpret_cast<unsigned char*>(tris.data());
   std::vector<std::uint32_t> start(nv + 1, 0);
   std::vector<ConstrainedEdge> edges;
+  // Bucket counts and places are loads from anywhere in start (and the places'
+  // triangles anywhere in the output): both passes fetch them kAhead triangles early.
+  constexpr std::size_t kAhead = 16;
   for (std::size_t ti = 0; ti < nt; ++ti) {
+    if (ti + kAhead < nt) {
+      const FTri& g = tris[ti + kAhead];  // not yet overwritten: Tri ti ends before it
+      __builtin_prefetch(start.data() + std::min({g.v(0), g.v(1), g.v(2)}) + 1, 1);
+    }
     const FTri f = tris[ti];
     const Tri r = rotated(f);
     ++start[static_cast<std::size_t>(r[0]) + 1];
@@ -122,6 +133,14 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   mesh.triangles.resize(nt);
   for (std::size_t ti = 0; ti < nt; ++ti) {
     Tri r;
+    if (ti + 2 * kAhead < nt) {
+      std::memcpy(&r, packed + (ti + 2 * kAhead) * sizeof(Tri), sizeof r);
+      __builtin_prefetch(start.data() + r[0], 1);
+    }
+    if (ti + kAhead < nt) {
+      std::memcpy(&r, packed + (ti + kAhead) * sizeof(Tri), sizeof r);
+      __builtin_prefetch(mesh.triangles.data() + start[static_cast<std::size_t>(r[0])], 1);
+    }
     std::memcpy(&r, packed + ti * sizeof(Tri), sizeof r);
     mesh.triangles[start[static_cast<std::size_t>(r[0])]++] = r;
   }
@@ -134,6 +153,25 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
   });
   mesh.constrained_edges = std::move(edges);
   return mesh;
+}
+
+IdLimits& id_limits() {
+  static IdLimits limits;
+  return limits;
+}
+
+void check_capacity(std::int64_t vertices, std::int64_t triangles, std::int64_t steiner) {
+  const IdLimits limits = id_limits();
+  if (ids_fit(vertices, triangles, limits)) return;
+  if (steiner == kInputOnly)
+    throw CapacityError(fmt::format(
+        "the input outgrows the fast engine: {} vertices, whose triangulation may need {} triangles, where its ids "
+        "number at most {} vertices and {} triangles; the reference engine (--engine reference) has no such limit",
+        vertices, triangles, limits.vertices, limits.triangles));
+  throw CapacityError(fmt::format(
+      "the mesh outgrows the fast engine: {} vertices and {} triangles, where its ids number at most {} vertices "
+      "and {} triangles; a larger --max-area, or --max-steiner {} to stop before it (exit 3)",
+      vertices, triangles, limits.vertices, limits.triangles, steiner));
 }
 
 }  // namespace lepp::fast

@@ -43,8 +43,11 @@ class FTri {
 
   int nbr[3];
 
+  // A vertex id's bits (capacity.h guards them).
+  static constexpr int kIdBits = 29;
+
  private:
-  static constexpr std::uint32_t kId = (std::uint32_t{1} << 29) - 1;
+  static constexpr std::uint32_t kId = (std::uint32_t{1} << kIdBits) - 1;
   static constexpr int kLongestShift = 29;  // longest + 1 in bits 29, 30 of w_[0]
   static constexpr std::uint32_t kConstrained = std::uint32_t{1} << 31;
   static std::uint32_t word(int v, std::int8_t s) { return static_cast<std::uint32_t>(v) | (s >= 0 ? kConstrained : 0); }
@@ -155,9 +158,13 @@ struct TriMesh {
     t(ti) = f;
     ++stamp[static_cast<std::size_t>(ti)];
   }
+  // One slot at a time: resize's general path (std::vector's _M_fill_insert and
+  // _M_default_append, not inlined) cost about 100 instructions an insertion.
   void grow(std::size_t k) {
-    tris.resize(tris.size() + k);
-    stamp.resize(tris.size(), 0);
+    for (std::size_t i = 0; i < k; ++i) {
+      tris.emplace_back();  // FTri() writes nothing: put() fills the slot
+      stamp.push_back(0);
+    }
   }
   // Slot `to` (just grown) lies in the region of slot `from`.
   void inherit_region(int from, int to) {

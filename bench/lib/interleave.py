@@ -1,0 +1,90 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Interleaved whole-process timing for bench/'s side-by-side scripts.
+
+Each round runs every step once, in order, so that the programs compared share
+the machine's load; a step's wall time, CPU time (user + system, the child's own
+rusage from wait4, as GNU time reports it) and peak resident memory are kept, and
+the medians over the rounds are what the scripts print. Used by
+bench/beside_triangle.sh and bench/certify_beside_refine.sh (issue 40).
+"""
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+
+class Step:
+    """One program run per round: `name` keys the results, `label` is its table row.
+
+    ok: exit statuses that count as success (lepp refine's 3 is a guard's stop);
+    then: called after each successful run (e.g. to read and remove its output).
+    """
+
+    def __init__(self, name, label, argv, ok=(0,), then=None):
+        self.name, self.label, self.argv, self.ok, self.then = name, label, [str(a) for a in argv], tuple(ok), then
+
+
+def timed(argv):
+    """Runs argv with stdout discarded; returns (status, wall s, cpu s, peak bytes, stderr)."""
+    start = time.monotonic()
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    err = proc.stderr.read()
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.monotonic() - start
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    # ru_maxrss is in KiB on Linux.
+    return proc.returncode, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss * 1024, err
+
+
+def run_rounds(steps, rounds, progress=""):
+    """Every step once per round, `rounds` times; {name: [(wall, cpu, peak), ...]}.
+
+    Exits 1 with the program's stderr when a step fails."""
+    samples = {s.name: [] for s in steps}
+    tty = sys.stderr.isatty()
+    for r in range(rounds):
+        if tty and progress:
+            sys.stderr.write(f"\r{progress}: round {r + 1} of {rounds}")
+            sys.stderr.flush()
+        for s in steps:
+            status, wall, cpu, peak, err = timed(s.argv)
+            if status not in s.ok:
+                if tty and progress:
+                    sys.stderr.write("\r\033[K")
+                sys.stderr.write(f"{s.name} failed ({status}): {' '.join(s.argv)}\n")
+                sys.stderr.buffer.write(err)
+                sys.exit(1)
+            samples[s.name].append((wall, cpu, peak))
+            if s.then:
+                s.then()
+    if tty and progress:
+        sys.stderr.write("\r\033[K")
+    return samples
+
+
+def medians(samples):
+    """{name: {"wall": s, "cpu": s, "peak": bytes}}: each the median over the rounds."""
+    return {
+        name: {
+            "wall": statistics.median(x[0] for x in rows),
+            "cpu": statistics.median(x[1] for x in rows),
+            "peak": statistics.median(x[2] for x in rows),
+        }
+        for name, rows in samples.items()
+    }
+
+
+def markdown_table(steps, med, columns):
+    """A markdown table, a row per step: columns is a list of (header, function(step, medians) -> str)."""
+    lines = ["| program | " + " | ".join(h for h, _ in columns) + " |",
+             "|---|" + "|".join("---:" for _ in columns) + "|"]
+    for s in steps:
+        lines.append(f"| {s.label} | " + " | ".join(f(s, med[s.name]) for _, f in columns) + " |")
+    return "\n".join(lines)
+
+
+def first_count(path):
+    """The first number of a file's first line (a Triangle header's count)."""
+    with open(path) as f:
+        return int(f.readline().split()[0])
