@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include <fmt/format.h>
 
@@ -144,10 +145,17 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
             "echo 'warning: the audited program is not deterministic: this may not reproduce the finding' >&2\n";
     write_text(d / "reproduce.sh", sh + text.reproduce + "\n");
   }
+  // The program's files by their names here (out.node, ...: this run's are copied
+  // beside finding.md), not by the audit's run directory, gone when the audit ends
+  // (loop/session.cpp: TMPDIR/lepp-audit-XXXXXX/run-W-K/).
+  auto saved = [](const std::string& words) {
+    static const std::regex run_dir(R"([^\s'"(]*/lepp-audit-[A-Za-z0-9]{6}/run-[0-9]+-[0-9]+/)");
+    return std::regex_replace(words, run_dir, "");
+  };
   std::string md = fmt::format(
       "# {}: {}\n\n- engine: {}\n- method: {}, theta: {}\n- statement: {}\n- paper: {}\n- verdict: {}\n- run: {}{}\n",
       row_key(row), to_string(result.verdict), text.engine, to_string(text.method), text.theta, row_statement(row),
-      row_passage(row), result.detail, to_string(run.status), run.detail.empty() ? "" : " (" + run.detail + ")");
+      row_passage(row), saved(result.detail), to_string(run.status), run.detail.empty() ? "" : " (" + saved(run.detail) + ")");
   if (result.verdict == Verdict::InternalError)
     md += fmt::format("- **an internal error of lepp audit, not a failure of the program**: the audit's {} stopped on this run, "
                       "so the row is undecided. Please report it with this directory (input.poly and the program's output "
@@ -158,7 +166,7 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
   if (text.shrink_steps > 0) {
     md += fmt::format("- input: input.poly ({}), shrunk in {} steps from {} ({} vertices, {} segments, {} holes)\n", sizes,
                       text.shrink_steps, text.input_origin, text.original_vertices, text.original_segments, text.original_holes);
-    if (!text.original_detail.empty()) md += "- as found, before shrinking: " + text.original_detail + "\n";
+    if (!text.original_detail.empty()) md += "- as found, before shrinking: " + saved(text.original_detail) + "\n";
   } else {
     md += fmt::format("- input: input.poly ({}), as found: {} ({})\n", sizes, text.input_origin,
                       text.shrink_tried ? "no smaller input failed the same way" : "not shrunk: --no-shrink");
