@@ -342,7 +342,8 @@ CaseResult check_run(const Pslg& pslg, const EngineRequest& req, const EngineRun
         if (r.consistent_variant) r.detail += fmt::format(" (every step fits this one variant)");
         if (r.deviations.size() > 1) r.detail += "; every deviation: " + chain_text(r.deviations);
         if (!conf.failure->mesh_reading.empty())
-          r.detail += fmt::format(" (on the program's mesh as the replay rebuilds it: {}; {})", conf.failure->mesh_reading,
+          r.detail += fmt::format(" (on the program's mesh as the replay rebuilds it: {}{}; {})", conf.failure->mesh_reading,
+                                  conf.failure->mesh_reading_fallback ? ", tried where the exact mesh lost the chain" : "",
                                   conf.failure->chain_complete ? "to the trace's end"
                                                                : conf.failure->chain_end_reason + ": " + conf.failure->chain_end);
         if (const std::string note = remark10_ignored_note(*conf.failure); !note.empty()) r.detail += "; " + note;

@@ -287,6 +287,24 @@ TEST(AuditDeclaredReading, MissingFlipsFollowedOnTheProgramsMesh) {
   }
 }
 
+// Issue 42: a program that keeps an exactly cocircular quad's diagonal (its flips
+// decided by a strict in-circle test) is followed with ties kept through lepp audit:
+// no run of it ends unknown, and the finding says the mesh was a fallback.
+TEST(AuditDeclaredReading, CocircularTieKeptFollowedAsAFallback) {
+  const AuditRun r = audit("double-flips-ties", mesher("--bug double-flips --bug area-centroid --bug remark10-reversed"),
+                           " --inputs " + kSource + "/audit/tests/replay/inputs/cocircular-box-hole.poly" +
+                               " --method centroid --theta 30 --no-shrink");
+  ASSERT_FALSE(r.report.is_discarded()) << r.err;
+  const json& conf = row(r.report, "conformance");
+  ASSERT_EQ(conf.at("failed").get<std::size_t>(), 1u) << conf.dump(2);
+  EXPECT_EQ(conf.at("deviations").value("unknown", 0u), 0u) << conf.dump(2);
+  const json& cx = conf.at("counterexamples").at(0);
+  EXPECT_EQ(cx.value("mesh_reading", ""), "ties-kept") << cx.dump(2);
+  EXPECT_NE(cx.at("detail").get<std::string>().find("ties-kept, tried where the exact mesh lost the chain; to the trace's end"),
+            std::string::npos)
+      << cx.dump(2);
+}
+
 // Issue 42, item 2: a chain that stops at a step no rule fits gets the picture of
 // that step (chain-end.svg), its words in finding.md and its picture in the HTML
 // report; a chain that reaches the trace's end gets none. The Lepp along shortest
