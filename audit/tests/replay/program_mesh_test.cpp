@@ -8,6 +8,8 @@
 // the mesh (or none) does not get there.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -133,16 +135,21 @@ TEST(ProgramMesh, FallbackNameFirstAtItsStep) {
 // area-centroid, then a step no rule fits on the exact mesh and on every mesh of
 // the fallback: the exact chain stays, ending no-rule at that step.
 TEST(ProgramMesh, FallbackNotKeptWhereEveryMeshLosesTheStep) {
-  MesherRun r = mesh(inputs()[1], 30, "--bug area-centroid");
+  MesherRun r = mesh(inputs()[0], 30, "--bug area-centroid");
   ASSERT_GT(r.trace.size(), 6u);
   Point& last = r.trace.back();
-  last.x += 1e-3 * (1 + std::abs(last.x));
+  last.x += 1e-6 * (1 + std::abs(last.x));
+  last.y -= 2e-6 * (1 + std::abs(last.y));  // off in both: the Euclidean and the larger difference differ
   ConformanceReport exact = check_conformance(r.input, r.trace, options(r.theta));
   ASSERT_TRUE(exact.failure);
   ConformanceFailure f = *exact.failure;
   ASSERT_EQ(f.deviation, "area-centroid") << chain_text(f.chain);
   ASSERT_EQ(f.chain_end_reason, "no-rule") << chain_text(f.chain) << "; " << f.chain_end;
   ASSERT_EQ(f.chain_end_step, r.trace.size());
+  // The reason's nearest distance is the table's first (Euclidean), not another measure.
+  ASSERT_FALSE(exact.failure->candidates.empty());
+  const std::string first = fmt::format("nearest choice {:.3g} away;", exact.failure->candidates.front().euclidean);
+  EXPECT_NE(exact.failure->reason.find(first), std::string::npos) << exact.failure->reason << " / " << first;
   const std::vector<DeviationLink> before = f.chain;
   follow_program_mesh(r.input, r.trace, options(r.theta), f);
   EXPECT_TRUE(f.mesh_reading.empty()) << f.mesh_reading << ": " << chain_text(f.chain);
