@@ -116,5 +116,29 @@ TEST(ChainEmbedding, VerticesOnEdgesAsEveryPairFindsThem) {
   }
 }
 
+// A cluster: every vertex and edge in one cell of the grid but for one short edge far away
+// (a mesh refined around vertices ulps apart); the grid hands it to box
+// intersection (fuzz_refine's clean-certify-chain-grid-cluster input took 22 s
+// there): the same vertices on edges as every pair.
+TEST(ChainEmbedding, VerticesOnEdgesInAClusterAsEveryPairFindsThem) {
+  std::mt19937 rng(20261207);
+  std::uniform_int_distribution<int> coord(0, 30), step(-2, 2);
+  std::vector<Point> pts{{1e6, 1e6}, {1e6 + 1, 1e6}};  // a short edge far away: the grid's box is large
+  std::vector<std::array<int, 2>> edges{{0, 1}};
+  for (int i = 0; i < 300; ++i) pts.push_back({coord(rng) * 0x1p-40, coord(rng) * 0x1p-40});
+  for (int i = 0; i < 300; ++i) {
+    const int a = 2 + static_cast<int>(rng() % 300);
+    const Point& pa = pts[static_cast<std::size_t>(a)];
+    const Point far{pa.x + step(rng) * 0x1p-40, pa.y + step(rng) * 0x1p-40};
+    if (far == pa) continue;
+    pts.push_back(far);
+    edges.push_back({a, static_cast<int>(pts.size()) - 1});
+  }
+  std::vector<char> used(pts.size(), 1);
+  const auto expected = on_edges_by_every_pair(pts, edges, used);
+  EXPECT_GT(expected.size(), 20u);
+  EXPECT_EQ(on_edges(pts, edges, used), expected);
+}
+
 }  // namespace
 }  // namespace lepp::certify

@@ -56,6 +56,17 @@ bool vertices_on_edges_by_grid(const std::vector<Point>& points, const std::vect
   };
   for (const Box& b : edge_boxes) each_cell(b, [&](std::size_t c) { ++begin[c + 1]; });
   for (std::size_t c = 0; c < side * side; ++c) begin[c + 1] += begin[c];
+  // The pairs the grid would test: a cluster (many vertices and edges in one cell,
+  // the rest of the domain far away) makes them quadratic; box intersection's
+  // sweep, which reports only the pairs whose boxes meet, is the caller's then.
+  std::size_t pairs = 0;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    const Point& p = points[v];
+    if (!used[v] || !(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) continue;
+    const std::size_t c = cell(p.x, x0, fx) * side + cell(p.y, y0, fy);
+    pairs += static_cast<std::size_t>(begin[c + 1] - begin[c]);
+  }
+  if (pairs > 16 * (edge_boxes.size() + points.size())) return false;
   std::vector<int> next(begin.begin(), begin.end() - 1);
   // Positions in edge_boxes (box intersection may have reordered them; info() is the edge).
   for (std::size_t i = 0; i < edge_boxes.size(); ++i)
