@@ -94,6 +94,9 @@ TEST(ReferenceDoubleLengths, UndecidedCasesTrustOnlyExactDoubleSteps) {
   expect_compare({1, 0}, {-0x1p-60, 0}, {1, 0}, {0, 0}, 1);
   // A square rounded: (1 + 2^-30)^2 needs 61 bits.
   expect_compare({0, 0}, {1 + 0x1p-30, 0}, {0, 0}, {1 + 0x1p-30 - 0x1p-52, 0}, 1);
+  // The second square rounded, the first exact: (1 + 2^-51)^2 = 1 + 2^-50 + 2^-102
+  // rounds to 1 + 2^-50, which 1^2 + (2^-25)^2 is exactly: a tie in doubles, not in fact.
+  expect_compare({0, 0}, {0, 1 + 0x1p-51}, {0, 0}, {1, 0x1p-25}, 1);
   // A square below the doubles beside a length of 1: 2^-1200 vanishes and fma's
   // error term with it (the range guard), so 1 + 2^-1200 must not tie with 1.
   expect_compare({0, 0}, {1, 0x1p-600}, {0, 0}, {1, 0}, 1);
