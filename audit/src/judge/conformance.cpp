@@ -49,6 +49,16 @@ ReplayRules rules_of(const ConformanceOptions& options) {
   return rules;
 }
 
+// The rules on one of the program's meshes: a program that makes its own flips
+// (or none) breaks no cocircular tie by CGAL's perturbation, so on those meshes the
+// replay does not search other triangulations of cocircular cells.
+ReplayRules rules_on(const ConformanceOptions& options, MeshReading reading) {
+  ReplayRules rules = rules_of(options);
+  rules.mesh = reading;
+  if (reading != MeshReading::Exact && reading != MeshReading::FloatPoints) rules.follow_cocircular_flips = false;
+  return rules;
+}
+
 // A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
 bool remark10_centroid(const ReplayChoice& choice) {
   return choice.rule == Rule::CentroidInOther && choice.deviation == Deviation::Unknown;
@@ -385,13 +395,7 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
   std::optional<ConformanceFailure> best;
   std::size_t best_reached = 0;
   for (MeshReading r : readings) {
-    ReplayRules rules = rules_of(options);
-    rules.mesh = r;
-    // A program that makes its own flips (or none) breaks no cocircular tie by
-    // CGAL's perturbation: the replay does not search other triangulations of
-    // cocircular cells on its mesh.
-    if (r != MeshReading::FloatPoints) rules.follow_cocircular_flips = false;
-    Replay replay(validated, rules);
+    Replay replay(validated, rules_on(options, r));
     if (options.arithmetic_double)
       for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
     ConformanceFailure g = f;
@@ -440,12 +444,11 @@ std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const
   // The failing step itself (a chain of one name, on the mesh the failure was found
   // on): its picture is the finding's step.svg already.
   if (f.chain_end_step == f.step + 1 && f.mesh_reading.empty()) return std::nullopt;
-  ReplayRules rules = rules_of(options);
+  MeshReading reading = MeshReading::Exact;
   for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints,
                         MeshReading::TiesKept})
-    if (f.mesh_reading == to_string(r)) rules.mesh = r;
-  if (rules.mesh != MeshReading::Exact && rules.mesh != MeshReading::FloatPoints) rules.follow_cocircular_flips = false;
-  Replay replay(validated, rules);
+    if (f.mesh_reading == to_string(r)) reading = r;
+  Replay replay(validated, rules_on(options, reading));
   if (options.arithmetic_double)
     for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
   for (const DeviationLink& l : f.chain) replay.allow(deviation_named(l.deviation));
