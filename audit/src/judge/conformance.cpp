@@ -59,6 +59,16 @@ ReplayRules rules_on(const ConformanceOptions& options, MeshReading reading) {
   return rules;
 }
 
+// A replay on `reading`'s mesh with the options' rules; under --arithmetic double
+// it also accepts the paper's choices reached through double rounding. Every
+// replay of the trace is made here, so each reads the trace the same way.
+std::unique_ptr<Replay> replay_on(const Pslg& validated, const ConformanceOptions& options, MeshReading reading) {
+  auto replay = std::make_unique<Replay>(validated, rules_on(options, reading));
+  if (options.arithmetic_double)
+    for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay->allow(d);
+  return replay;
+}
+
 // A step that took Remark 10's centroid inside the other triangle (the paper's rule, not a variant's).
 bool remark10_centroid(const ReplayChoice& choice) {
   return choice.rule == Rule::CentroidInOther && choice.deviation == Deviation::Unknown;
@@ -238,8 +248,8 @@ std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2
 // The replay of the first `steps` points of the trace (each a choice, inserted
 // before): the mesh just before step `steps`.
 std::unique_ptr<Replay> replay_up_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
-                                                const ReplayRules& rules) {
-  auto replay = std::make_unique<Replay>(validated, rules);
+                                     const ConformanceOptions& options) {
+  auto replay = replay_on(validated, options, MeshReading::Exact);
   for (std::size_t i = 0; i < steps; ++i) {
     ReplayChoice choice;
     if (!replay->match(trace[i], choice)) break;  // cannot happen: the same replay matched it before
@@ -253,15 +263,13 @@ std::unique_ptr<Replay> replay_up_to(const Pslg& validated, const std::vector<Po
 ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
                                     const ConformanceOptions& options) {
   auto start = std::chrono::steady_clock::now();
-  const ReplayRules rules = rules_of(options);
-  Replay replay(validated, rules);
+  const std::unique_ptr<Replay> exact = replay_on(validated, options, MeshReading::Exact);
+  Replay& replay = *exact;
 
   ConformanceReport report;
   report.steps = trace.size();
   report.area_centroid = options.area_centroid;
   report.arithmetic_double = options.arithmetic_double;
-  if (options.arithmetic_double)
-    for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
   std::unique_ptr<Replay> before;  // the mesh before a step whose insertion failed
   std::size_t centroid_inside = 0;             // ConformanceFailure::remark10_centroid_inside_steps
   for (std::size_t i = 0; i < trace.size(); ++i) {
@@ -299,7 +307,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         // The insertion may have stopped half way (the point in, a triangle not
         // counter-clockwise, even flat: issue 30), so the report's mesh, choices and
         // deviation come from the trace replayed again up to this step.
-        before = replay_up_to(validated, trace, i, rules);
+        before = replay_up_to(validated, trace, i, options);
       }
     }
     Replay& at = before ? *before : replay;
@@ -393,18 +401,17 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
     readings.insert(readings.end(), {MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle});
   // The one that follows the trace farthest is kept (the first on a tie).
   std::optional<ConformanceFailure> best;
+  MeshReading best_reading = readings.front();
   std::size_t best_reached = 0;
   for (MeshReading r : readings) {
-    Replay replay(validated, rules_on(options, r));
-    if (options.arithmetic_double)
-      for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
+    const std::unique_ptr<Replay> replay = replay_on(validated, options, r);
     ConformanceFailure g = f;
     if (fallback) g.deviation.clear();  // the chain is named again, from the first step, on that mesh
     std::size_t centroid_inside = 0;
-    const std::size_t reached = follow_on_program_mesh(replay, trace, r, g, centroid_inside);
+    const std::size_t reached = follow_on_program_mesh(*replay, trace, r, g, centroid_inside);
     merge_remark10(g);
     g.remark10_centroid_inside_steps = centroid_inside;
-    if (!best || reached > best_reached) best = std::move(g), best_reached = reached;
+    if (!best || reached > best_reached) best = std::move(g), best_reading = r, best_reached = reached;
     if (best->chain_complete) break;
   }
   if (fallback) {
@@ -415,9 +422,9 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
     best->mesh_reading_fallback = true;
     // The mesh's arithmetic (flips decided in double, or missing) is the
     // program's: named where the exact mesh lost the chain.
-    const std::string name = best->mesh_reading == to_string(MeshReading::DoubleIncircle) ? kInexactIncircle
-                             : best->mesh_reading == to_string(MeshReading::TiesKept) ? ""
-                                                                                       : kMissingFlips;
+    const std::string name = best_reading == MeshReading::DoubleIncircle ? kInexactIncircle
+                             : best_reading == MeshReading::TiesKept      ? ""
+                                                                          : kMissingFlips;
     auto& chain = best->chain;
     if (!name.empty() && std::none_of(chain.begin(), chain.end(), [&](const DeviationLink& l) { return l.deviation == name; })) {
       chain.insert(std::find_if(chain.begin(), chain.end(), [&](const DeviationLink& l) { return l.first_step >= lost_at; }),
@@ -427,7 +434,7 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
         best->deviation_what = fmt::format(
             "step {} fits no rule on the exact mesh, and the paper's rules on the mesh {}: {} (its final mesh is Delaunay "
             "again: later insertions removed the difference)",
-            lost_at, mesh_words(name == kInexactIncircle ? MeshReading::DoubleIncircle : MeshReading::NoFlips),
+            lost_at, mesh_words(best_reading),
             name == kInexactIncircle ? "a quad cocircular within double rounding got the other diagonal"
                                      : "the program did not flip after its insertions");
         best->deviation_definition = name == kInexactIncircle ? inexact_definition(kInexactIncircle) : kMissingFlipsDefinition;
@@ -448,9 +455,8 @@ std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const
   for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints,
                         MeshReading::TiesKept})
     if (f.mesh_reading == to_string(r)) reading = r;
-  Replay replay(validated, rules_on(options, reading));
-  if (options.arithmetic_double)
-    for (Deviation d : {Deviation::InexactLength, Deviation::InexactThreshold}) replay.allow(d);
+  const std::unique_ptr<Replay> at_end = replay_on(validated, options, reading);
+  Replay& replay = *at_end;
   for (const DeviationLink& l : f.chain) replay.allow(deviation_named(l.deviation));
   const std::size_t end = f.chain_end_step - 1;
   try {
