@@ -167,10 +167,7 @@ int run_theorems(const TheoremsArgs& args) {
       decisions.push_back(prove::decide(id, opt));
       const auto& d = decisions.back();
       message("%s (%.1f s)\n", prove::name(d.outcome), d.seconds);
-      // A refutation its check function does not confirm is an internal error.
-      if (d.outcome == prove::Outcome::Refuted && !d.confirmed && d.method.rfind("Z3", 0) == 0 &&
-          d.note.find("no check function") == std::string::npos)
-        ok = false;
+      if (prove::unconfirmed_refutation(d)) ok = false;
     }
     if (!args.pictures.empty()) {
       std::string error;

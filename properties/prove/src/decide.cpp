@@ -15,6 +15,9 @@
 namespace lepp::prove {
 namespace {
 
+// The note of a Z3 refutation no check function could confirm (unconfirmed_refutation reads it).
+constexpr const char* kNoCheckFunction = "no check function takes this configuration";
+
 bool same(const theorems::GridPoint& a, const theorems::GridPoint& b) { return a.x == b.x && a.y == b.y; }
 
 double since(std::chrono::steady_clock::time_point t0) {
@@ -198,7 +201,7 @@ Decision decide_without(const std::string& statement, const std::string& dropped
   } else {
     d.note = row->check ? "the row's check function reads a configuration without this hypothesis as not "
                           "applicable; the point was re-checked exactly by Z3"
-                        : "no check function takes this configuration; the point was re-checked exactly by Z3";
+                        : std::string(kNoCheckFunction) + "; the point was re-checked exactly by Z3";
     d.confirmed = false;
   }
   d.seconds = since(t0);
@@ -206,6 +209,11 @@ Decision decide_without(const std::string& statement, const std::string& dropped
 }
 
 Decision decide(const std::string& statement, const Options& opt) { return decide_without(statement, "", opt); }
+
+bool unconfirmed_refutation(const Decision& d) {
+  return d.outcome == Outcome::Refuted && !d.confirmed && d.method.rfind("Z3", 0) == 0 &&
+         d.note.find(kNoCheckFunction) == std::string::npos;
+}
 
 std::vector<Decision> decide_all(const Options& opt, const std::function<void(const Decision&)>& progress) {
   std::vector<Decision> out;

@@ -137,6 +137,29 @@ TEST(ProveRefutes, StrongerConstantsAreRefuted) {
 }
 
 // Rows that are not first-order statements over the reals say why.
+// lepp theorems fails its run on a Z3 refutation the row's check function took and did
+// not confirm; a confirmed one, one no check function takes (re-checked by Z3), one
+// found otherwise (a sampled counterexample) or any other outcome does not.
+TEST(ProveRefutes, UnconfirmedRefutationFailsTheRun) {
+  Decision d;
+  d.outcome = Outcome::Refuted;
+  d.method = "Z3 nlsat";
+  d.note = "the row's check function reads a configuration without this hypothesis as not applicable";
+  EXPECT_TRUE(unconfirmed_refutation(d));
+  Decision confirmed = d;
+  confirmed.confirmed = true;
+  EXPECT_FALSE(unconfirmed_refutation(confirmed));
+  Decision no_check = d;
+  no_check.note = "no check function takes this configuration; the point was re-checked exactly by Z3";
+  EXPECT_FALSE(unconfirmed_refutation(no_check));
+  Decision sampled = d;
+  sampled.method = "sampled counterexample";
+  EXPECT_FALSE(unconfirmed_refutation(sampled));
+  Decision proved = d;
+  proved.outcome = Outcome::Proved;
+  EXPECT_FALSE(unconfirmed_refutation(proved));
+}
+
 TEST(ProveNotDecided, NamesTheReason) {
   Decision d = decide("Theorem1.FinitelyManySimilarityClasses", options());
   EXPECT_EQ(d.outcome, Outcome::NotDecided);

@@ -57,6 +57,10 @@ std::string row_kind(const std::string& statement);
 // Decide one row (by Suite.Name), or all; `progress` hears each row as it ends.
 Decision decide(const std::string& statement, const Options& opt);
 std::vector<Decision> decide_all(const Options& opt, const std::function<void(const Decision&)>& progress = {});
+// A refutation lepp theorems cannot stand behind (its run fails): Z3's counterexample,
+// not confirmed, where a check function took the configuration (decide re-checks a
+// point no check function takes exactly by Z3 and says so in the note).
+bool unconfirmed_refutation(const Decision& d);
 
 // --- The prover can say no: the row's obligation with one hypothesis dropped.
 // Returns the hypotheses a row has (by name) and decides the obligation without
