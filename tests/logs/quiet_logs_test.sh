@@ -46,6 +46,10 @@ run certify 0 certify "$paper/A.poly" "$dir/a" --min-angle 30
 run render 0 render "$dir/a" -o "$dir/a.svg" --highlight bad
 run theorems 0 theorems --only Lemma7.AcuteAlpha1AtLeast079Alpha0
 grep -q "Lemma 7 (I)(a)" "$dir/theorems.out" || fail "theorems: the statement did not run"
+# Each row's progress is one whole line: nothing (RapidCheck's note of its own
+# configuration) cuts into it between the row's name and its result.
+grep -qx 'Lemma7.AcuteAlpha1AtLeast079Alpha0  *holds (100 cases, [0-9.]* s)' "$dir/theorems.err" ||
+  { cat "$dir/theorems.err"; fail "theorems: the row's progress line is not whole"; }
 run audit 0 audit --engine fast --theta 25 --cases 2 --out "$dir/audit" --root "$src" -j 1 --no-cache
 mkdir -p "$dir/docs"
 run paper 0 paper --orders --orders-problems A --orders-angles 30 --orders-random 1 --orders-methods centroid \

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <sstream>
 
 #include "lepp/theorems/statements.h"
@@ -21,6 +22,24 @@ class QuietListener : public rc::detail::TestListener {
   void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
   void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
 };
+
+// RapidCheck loads its global configuration (RC_PARAMS) on first use and names it on
+// stderr with a random seed, which these runs do not use (their parameters fix the
+// seed). A command's progress line would be cut by it: it is loaded here once, that
+// line dropped and anything else it writes (a bad RC_PARAMS) passed on.
+void load_configuration_quietly() {
+  static const bool loaded = [] {
+    std::ostringstream said;
+    std::streambuf* const kept = std::cerr.rdbuf(said.rdbuf());
+    rc::detail::configuration();
+    std::cerr.rdbuf(kept);
+    std::istringstream lines(said.str());
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("Using configuration: ", 0) != 0) std::cerr << line << '\n';
+    return true;
+  }();
+  (void)loaded;
+}
 }  // namespace
 
 RunOutcome run_statement(const Statement& s, int cases, int inputs, std::uint64_t seed) {
@@ -33,6 +52,7 @@ RunOutcome run_statement(const Statement& s, int cases, int inputs, std::uint64_
     out.cases = inputs;
     out.applicable = inputs;
   } else {
+    load_configuration_quietly();
     rc::detail::TestParams params;
     params.seed = seed;
     params.maxSuccess = cases;
