@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// single-precision, printed-digits: what the numbers a program wrote say about its arithmetic.
+// single-precision, float-input, printed-digits: what the numbers a program wrote say about its arithmetic.
 #include "lepp/audit/judge/arithmetic.h"
 
 #include <cfloat>
@@ -12,15 +12,11 @@
 
 #include <fmt/format.h>
 
+#include "lepp/audit/replay.h"
+
 namespace lepp::audit {
 namespace {
 
-// The float nearest x, as a double. Through a volatile: GCC 12 (-O2) drops the
-// round trip when it vectorizes a point's two coordinates together.
-double nearest_float(double x) {
-  volatile float f = static_cast<float>(x);
-  return f;
-}
 bool is_float(double x) { return std::isfinite(x) && nearest_float(x) == x; }
 bool is_float(const Point& p) { return is_float(p.x) && is_float(p.y); }
 
@@ -99,16 +95,15 @@ ArithmeticEvidence mesh_arithmetic(const Pslg& input, const Mesh& mesh) {
       return e;
     }
   }
-  if (floats) {
-    ArithmeticEvidence e = moved_by(input, out, "single-precision", [](const Point& p) {
-      return Point{nearest_float(p.x), nearest_float(p.y)};
-    });
-    if (!e.name.empty()) {
-      e.what = "every output coordinate is a float, and " + e.what;
-      return e;
-    }
-  }
-  return {};
+  // Every coordinate a float: the program holds its points as floats. Only its
+  // input vertices at their float rounding: it reads its input as float and
+  // computes its own points in double.
+  ArithmeticEvidence e = moved_by(input, out, floats ? "single-precision" : "float-input", [](const Point& p) {
+    return Point{nearest_float(p.x), nearest_float(p.y)};
+  });
+  if (!e.name.empty())
+    e.what = (floats ? "every output coordinate is a float, and " : "the input vertices are floats, not the points it added: ") + e.what;
+  return e;
 }
 
 ArithmeticEvidence step_arithmetic(const ConformanceFailure& f) {
@@ -149,6 +144,9 @@ const char* arithmetic_definition(const std::string& name) {
   if (name == "single-precision")
     return "the program holds coordinates as float: its points (or the input vertices it wrote) sit at a float next to the "
            "exact value, beyond a double's rounding";
+  if (name == "float-input")
+    return "the program reads its input coordinates as float and computes in double: it meshes the input vertices at their "
+           "float rounding, a slightly different input, so its points are not the paper's choices on the input given";
   if (name == "printed-digits")
     return "the program writes coordinates with fewer significant digits than a double needs (a stream's default 6, say): "
            "the points read back are not the ones it computed";

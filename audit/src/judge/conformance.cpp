@@ -55,7 +55,9 @@ ReplayRules rules_of(const ConformanceOptions& options) {
 ReplayRules rules_on(const ConformanceOptions& options, MeshReading reading) {
   ReplayRules rules = rules_of(options);
   rules.mesh = reading;
-  if (reading != MeshReading::Exact && reading != MeshReading::FloatPoints) rules.follow_cocircular_flips = false;
+  // A program whose input or points are floats may still flip as CGAL does.
+  if (reading != MeshReading::Exact && reading != MeshReading::FloatPoints && reading != MeshReading::FloatInput)
+    rules.follow_cocircular_flips = false;
   return rules;
 }
 
@@ -160,6 +162,7 @@ const char* mesh_words(MeshReading reading) {
     case MeshReading::DoubleIncircle: return "with its flips decided in double";
     case MeshReading::FloatPoints: return "with its points at float rounding";
     case MeshReading::TiesKept: return "with every exactly cocircular quad's diagonal kept as its insertion made it";
+    case MeshReading::FloatInput: return "of its input vertices rounded to float";
     case MeshReading::Exact: break;
   }
   return "exactly";
@@ -372,6 +375,7 @@ MeshReading mesh_reading_for(const std::string& deviation) {
   if (deviation == kMissingFlips) return MeshReading::NoFlips;
   if (deviation == "inexact-incircle") return MeshReading::DoubleIncircle;
   if (deviation == "single-precision") return MeshReading::FloatPoints;
+  if (deviation == "float-input") return MeshReading::FloatInput;
   return MeshReading::Exact;
 }
 
@@ -404,7 +408,12 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
   MeshReading best_reading = readings.front();
   std::size_t best_reached = 0;
   for (MeshReading r : readings) {
-    const std::unique_ptr<Replay> replay = replay_on(validated, options, r);
+    std::unique_ptr<Replay> replay;
+    try {
+      replay = replay_on(validated, options, r);
+    } catch (const std::invalid_argument&) {
+      continue;  // no such mesh (two input vertices one at float rounding): the chain stays as it is
+    }
     ConformanceFailure g = f;
     if (fallback) g.deviation.clear();  // the chain is named again, from the first step, on that mesh
     std::size_t centroid_inside = 0;
@@ -414,6 +423,7 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
     if (!best || reached > best_reached) best = std::move(g), best_reading = r, best_reached = reached;
     if (best->chain_complete) break;
   }
+  if (!best) return;  // no reading could be built
   if (fallback) {
     // Lost there (or sooner) on those meshes too, or no step named on them (a
     // program the exact replay's search of cocircular cells did not follow; not
@@ -453,7 +463,7 @@ std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const
   if (f.chain_end_step == f.step + 1 && f.mesh_reading.empty()) return std::nullopt;
   MeshReading reading = MeshReading::Exact;
   for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints,
-                        MeshReading::TiesKept})
+                        MeshReading::TiesKept, MeshReading::FloatInput})
     if (f.mesh_reading == to_string(r)) reading = r;
   const std::unique_ptr<Replay> at_end = replay_on(validated, options, reading);
   Replay& replay = *at_end;

@@ -21,8 +21,16 @@ const char* to_string(MeshReading reading) {
     case MeshReading::DoubleIncircle: return "double-incircle";
     case MeshReading::FloatPoints: return "float-points";
     case MeshReading::TiesKept: return "ties-kept";
+    case MeshReading::FloatInput: return "float-input";
   }
   return "?";
+}
+
+double nearest_float(double x) {
+  // Through a volatile: GCC 12 (-O2) drops the round trip when it vectorizes a
+  // point's two coordinates together.
+  volatile float f = static_cast<float>(x);
+  return f;
 }
 
 Replay::Replay(const Pslg& pslg, const ReplayRules& rules) : impl_(std::make_unique<Impl>(pslg, rules)) {}

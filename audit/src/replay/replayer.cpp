@@ -9,6 +9,7 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <string>
 #include <set>
 #include <stdexcept>
 
@@ -16,8 +17,26 @@
 #include "lepp/angle.h"
 
 namespace lepp::audit::replay_detail {
+namespace {
 
-Replayer::Replayer(const Pslg& p, const ReplayRules& r) : pslg(p), rules(r) {
+// The input as a program that reads it as float holds it (MeshReading::FloatInput).
+Pslg at_float_rounding(const Pslg& p) {
+  Pslg rounded = p;
+  std::map<std::pair<double, double>, std::size_t> seen;
+  for (std::size_t i = 0; i < rounded.vertices.size(); ++i) {
+    Point& v = rounded.vertices[i];
+    v = {nearest_float(v.x), nearest_float(v.y)};
+    if (const auto [at, fresh] = seen.emplace(std::make_pair(v.x, v.y), i); !fresh)
+      throw std::invalid_argument("replay: rounded to float, input vertices " + std::to_string(at->second) + " and " +
+                                  std::to_string(i) + " are one point");
+  }
+  return rounded;
+}
+
+}  // namespace
+
+Replayer::Replayer(const Pslg& p, const ReplayRules& r)
+    : pslg(r.mesh == MeshReading::FloatInput ? at_float_rounding(p) : p), rules(r) {
   // Every rule below becomes an exact number: a NaN or an infinity would be
   // GMP's invalid operation (SIGFPE), so they are refused here.
   if (!(r.min_angle_deg > 0 && r.min_angle_deg < 60))

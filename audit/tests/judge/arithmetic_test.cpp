@@ -51,6 +51,22 @@ TEST(Arithmetic, MeshAtFloatsIsSinglePrecision) {
   EXPECT_EQ(e.rounded, 4u);
 }
 
+// The input vertices at their floats, the Steiner point a double no float holds: the
+// program read its input as float and computed in double. One coordinate of the
+// added point a double is enough to tell it from single-precision.
+TEST(Arithmetic, InputAtFloatsPointsInDoubleIsFloatInput) {
+  lepp::Mesh m = mesh_through(to_float);
+  m.vertices[4] = {0.7, to_float(0.9)};
+  const auto e = lepp::audit::mesh_arithmetic(square(), m);
+  EXPECT_EQ(e.name, "float-input") << e.what;
+  EXPECT_EQ(e.moved, 4u);
+  EXPECT_NE(e.what.find("the input vertices are floats, not the points it added"), std::string::npos) << e.what;
+  EXPECT_NE(std::string(lepp::audit::arithmetic_definition("float-input")), "");
+  // One input vertex kept where it is: nothing shows.
+  m.vertices[2] = square().vertices[2];
+  EXPECT_EQ(lepp::audit::mesh_arithmetic(square(), m).name, "");
+}
+
 TEST(Arithmetic, MeshWithSixDigitsIsPrintedDigits) {
   // 0.1 has one digit: the Steiner point's needs more than 6 for the rule to see digits at all.
   lepp::Pslg p = square();

@@ -22,6 +22,7 @@
 // remark10-reversed, remark10-ignored (= no-remark10), other-second-longest,
 // good-triangle; no-flips (named missing-flips); and the arithmetic ones,
 // single-precision (every coordinate written is the float nearest the computed
+// double), float-input (the input's coordinates read as float, the rest in
 // double), printed-digits (written with %g's 6 digits), inexact-length (edge
 // lengths compared as computed in double), inexact-threshold (theta compared with
 // a few ulps of slack: a triangle below theta by less than rounding stays) and
@@ -84,6 +85,7 @@ enum class Bug {
   // Arithmetic (docs/CONFORMANCE.md, "Arithmetic"): the coordinates it writes are
   // floats (its vertices held as float), or written with a stream's 6 digits.
   single_precision, printed_digits,
+  float_input,        // reads the input's coordinates as float, then computes and writes in double
   inexact_length,     // squared edge lengths compared as computed in double, not exactly
   inexact_threshold,  // the smallest angle, in double, compared with theta (1 - 16 DBL_EPSILON)
   inexact_incircle,   // near-cocircular quads flipped the other way by an in-circle test in double
@@ -118,6 +120,7 @@ Bug parse_bug(const std::string& s) {
       {"remark10-reversed", Bug::remark10_reversed}, {"other-second-longest", Bug::other_second_longest},
       {"good-triangle", Bug::good_triangle}, {"no-flips", Bug::no_flips},
       {"single-precision", Bug::single_precision}, {"printed-digits", Bug::printed_digits},
+      {"float-input", Bug::float_input},
       {"inexact-length", Bug::inexact_length}, {"inexact-threshold", Bug::inexact_threshold},
       {"inexact-incircle", Bug::inexact_incircle}, {"double-flips", Bug::double_flips}};
   auto it = names.find(s);
@@ -674,7 +677,10 @@ int main(int argc, char** argv) {
   lepp::Pslg pslg;
   try {
     std::vector<std::string> warnings;
-    pslg = lepp::validate(lepp::read_poly(opt.in), warnings);
+    lepp::Pslg read = lepp::read_poly(opt.in);
+    if (opt.has(Bug::float_input))
+      for (lepp::Point& v : read.vertices) v = {static_cast<float>(v.x), static_cast<float>(v.y)};
+    pslg = lepp::validate(read, warnings);
   } catch (const lepp::InputError& e) {
     std::fprintf(stderr, "lepp_test_mesher: %s\n", e.what());
     return 2;

@@ -83,6 +83,7 @@ TEST(ProgramMesh, ReadingChosenByTheArithmeticName) {
   EXPECT_EQ(mesh_reading_for("missing-flips"), MeshReading::NoFlips);
   EXPECT_EQ(mesh_reading_for("inexact-incircle"), MeshReading::DoubleIncircle);
   EXPECT_EQ(mesh_reading_for("single-precision"), MeshReading::FloatPoints);
+  EXPECT_EQ(mesh_reading_for("float-input"), MeshReading::FloatInput);
   for (const char* other : {"printed-digits", "area-centroid", "terminal-midpoint", "unknown", "inexact-length", ""})
     EXPECT_EQ(mesh_reading_for(other), MeshReading::Exact) << other;
   // A name that reads the exact mesh, its chain ended at a step no rule fits
@@ -290,6 +291,32 @@ TEST(ProgramMesh, SinglePrecisionFollowedAtFloatRounding) {
   EXPECT_GE(runs, 4);
 }
 
+// A program that reads its input as float meshes another input: on its rounding,
+// the chain of the float-input mesher reaches the trace's end with that one name.
+// Where the rounding makes two input vertices one, there is no such mesh: the
+// replay says so, and the chain stays as the exact replay found it.
+TEST(ProgramMesh, FloatInputFollowedOnTheInputAtFloatRounding) {
+  const MesherRun r = mesh(std::string(LEPP_SOURCE_DIR) + "/audit/tests/mesher/arithmetic/poly2tri-polygon-01.poly", 25,
+                           "--bug float-input");
+  ConformanceFailure f = named(r, "float-input");
+  EXPECT_FALSE(f.chain_complete) << chain_text(f.chain);  // the exact input's replay cannot follow it
+  follow_program_mesh(r.input, r.trace, options(r.theta), f);
+  EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
+  EXPECT_EQ(f.mesh_reading, "float-input");
+  EXPECT_EQ(names(f), std::set<std::string>{"float-input"}) << chain_text(f.chain);
+
+  Pslg merged = r.input;
+  merged.vertices.push_back({merged.vertices[0].x * (1 + 0x1p-40), merged.vertices[0].y});
+  ReplayRules rules;
+  rules.min_angle_deg = 25;
+  rules.mesh = MeshReading::FloatInput;
+  EXPECT_THROW(Replay(merged, rules), std::invalid_argument);
+  ConformanceFailure g = named(r, "float-input");
+  const std::string before = chain_text(g.chain);
+  follow_program_mesh(merged, r.trace, options(r.theta), g);
+  EXPECT_EQ(chain_text(g.chain), before);
+  EXPECT_EQ(g.mesh_reading, "");
+}
 
 // A double program's final mesh can be Delaunay again (later insertions flipped a
 // near tie back) and name nothing: on corpus/hostile/near-touching at 20 degrees

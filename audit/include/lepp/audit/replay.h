@@ -36,9 +36,16 @@ const char* to_string(CentroidReading reading);  // "vertex", "area"
 // TiesKept: Lawson flips decided exactly, but only strictly inside the circle:
 // an exactly cocircular quad keeps the diagonal its insertion made (a
 // constrained Delaunay mesh too, the tie broken as a plain Lawson program does).
-enum class MeshReading { Exact, NoFlips, NoFlipsButSplits, DoubleIncircle, FloatPoints, TiesKept };
-// "exact", "no-flips", "no-flips-but-splits", "double-incircle", "float-points", "ties-kept"
+// FloatInput: the exact mesh of the input with its vertices rounded to the
+// nearest float, as a program that reads its input as float and computes in
+// double has it (float-input); the constructor throws std::invalid_argument when
+// that rounding makes two input vertices one.
+enum class MeshReading { Exact, NoFlips, NoFlipsButSplits, DoubleIncircle, FloatPoints, TiesKept, FloatInput };
+// "exact", "no-flips", "no-flips-but-splits", "double-incircle", "float-points", "ties-kept", "float-input"
 const char* to_string(MeshReading reading);
+
+// The float nearest x, as a double (what a program holding x as float has).
+double nearest_float(double x);
 
 // What counts as the paper's choice (docs/AUDIT.md, "Conformance").
 struct ReplayRules {
