@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lepp/audit/run/parallel.h"
+#include "loop/scratch_names.h"
 
 namespace fs = std::filesystem;
 
@@ -20,7 +21,7 @@ std::string make_work_root(const std::string& wanted) {
     fs::create_directories(wanted);
     return wanted;
   }
-  std::string templ = (fs::temp_directory_path() / "lepp-audit-XXXXXX").string();
+  std::string templ = (fs::temp_directory_path() / kScratchRootTemplate).string();
   if (!mkdtemp(templ.data())) throw UsageError("cannot create a scratch directory in " + fs::temp_directory_path().string());
   return templ;
 }
@@ -34,7 +35,7 @@ std::string Scratch::fresh() {
     std::lock_guard<std::mutex> lock(mutex_);
     k = counters_[w]++;
   }
-  fs::path d = fs::path(root_) / fmt::format("run-{}-{}", w, k % 4);
+  fs::path d = fs::path(root_) / run_dir_name(w, k % 4);
   std::error_code ec;
   fs::remove_all(d, ec);
   fs::create_directories(d, ec);

@@ -14,6 +14,7 @@
 #include "lepp/certify_svg.h"
 #include "lepp/io.h"
 #include "lepp/render.h"
+#include "loop/scratch_names.h"
 #include "xml_escape.h"
 
 namespace fs = std::filesystem;
@@ -147,11 +148,8 @@ void save_finding(const std::string& dir, Row row, const Pslg& input, const Engi
   }
   // The program's files by their names here (out.node, ...: this run's are copied
   // beside finding.md), not by the audit's run directory, gone when the audit ends
-  // (loop/session.cpp: TMPDIR/lepp-audit-XXXXXX/run-W-K/).
-  auto saved = [](const std::string& words) {
-    static const std::regex run_dir(R"([^\s'"(]*/lepp-audit-[A-Za-z0-9]{6}/run-[0-9]+-[0-9]+/)");
-    return std::regex_replace(words, run_dir, "");
-  };
+  // (loop/scratch_names.h).
+  auto saved = [](const std::string& words) { return std::regex_replace(words, loop::run_dir_pattern(), ""); };
   std::string md = fmt::format(
       "# {}: {}\n\n- engine: {}\n- method: {}, theta: {}\n- statement: {}\n- paper: {}\n- verdict: {}\n- run: {}{}\n",
       row_key(row), to_string(result.verdict), text.engine, to_string(text.method), text.theta, row_statement(row),
