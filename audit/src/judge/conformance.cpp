@@ -261,6 +261,75 @@ std::unique_ptr<Replay> replay_up_to(const Pslg& validated, const std::vector<Po
   return replay;
 }
 
+// What a report shows of the failing step f.step at f.point on the replay `at`
+// just before it: that mesh, the nearest choices, why the point is none of them
+// (`reason` when the caller knows it already), and the catalogue's diagnosis.
+void describe_step(Replay& at, std::string reason, ConformanceFailure& f) {
+  const Point& p = f.point;
+  f.mesh = at.mesh();
+  f.candidates.clear();
+  std::vector<ReplayChoice> all = at.all_choices(p, 20, f.candidates_total);
+  for (const auto& c : all) f.candidates.push_back(candidate(c));
+  f.nearest_distance = all.empty() ? -1 : all.front().distance;
+  if (reason.empty()) {
+    bool vertex = false;
+    for (const Point& v : f.mesh.vertices) vertex = vertex || v == p;
+    if (vertex)
+      reason = "the point is already a vertex of the mesh";
+    else if (all.empty())
+      reason = "the mesh has no bad triangle: no point should be inserted";
+    else
+      // The same distance as the table of nearest choices (Euclidean); the tolerance
+      // bounds the larger coordinate difference, given beside it.
+      reason = fmt::format(
+          "not the paper's choice for any bad triangle's Lepp (nearest choice {:.3g} away; its larger coordinate "
+          "difference {:.3g}, tolerance {:.3g})",
+          all.front().euclidean, all.front().distance, all.front().tolerance);
+  }
+  f.reason = reason;
+  // The catalogue, on the same mesh with the same arithmetic and tolerance.
+  const DeviationMatch dm = at.diagnose(p);
+  f.deviation = to_string(dm.deviation);
+  f.deviation_what = dm.what;
+  f.deviation_definition = definition(dm.deviation);
+  f.deviation_at.reset();
+  f.deviation_paper.clear();
+  if (dm.deviation != Deviation::Unknown) {
+    f.deviation_at = candidate(dm.where);
+    for (const auto& c : dm.paper) f.deviation_paper.push_back(candidate(c));
+  }
+}
+
+// The failing step described again on `reading`'s mesh (describe_step), where it is
+// no allowed choice there either: the trace replayed up to it on that mesh, each
+// name of the chain allowed from its first step. The chain's names are kept.
+// Unchanged where that replay does not get there or the point is a choice there.
+void restate_step_on(const Pslg& validated, const std::vector<Point>& trace, const ConformanceOptions& options,
+                     MeshReading reading, ConformanceFailure& f) {
+  const std::unique_ptr<Replay> replay = replay_on(validated, options, reading);
+  try {
+    for (std::size_t i = 0; i < f.step; ++i) {
+      for (const DeviationLink& l : f.chain)
+        if (l.first_step <= i + 1) replay->allow(deviation_named(l.deviation));  // named at this step or before
+      ReplayChoice choice;
+      if (!replay->match(trace[i], choice)) return;
+      replay->insert(trace[i], choice);
+    }
+    ReplayChoice choice;
+    if (replay->match(trace[f.step], choice)) return;  // a choice on that mesh: nothing to show there
+  } catch (const std::runtime_error&) {
+    return;
+  }
+  ConformanceFailure g = f;
+  describe_step(*replay, "", g);
+  if (g.deviation != f.deviation) g.deviation_at.reset(), g.deviation_paper.clear();
+  g.deviation = f.deviation;
+  g.deviation_what = f.deviation_what;
+  g.deviation_definition = f.deviation_definition;
+  g.step_mesh_reading = to_string(reading);
+  f = std::move(g);
+}
+
 }  // namespace
 
 ConformanceReport check_conformance(const Pslg& validated, const std::vector<Point>& trace,
@@ -317,35 +386,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
     ConformanceFailure failure;
     failure.step = i;
     failure.point = p;
-    failure.mesh = at.mesh();
-    std::vector<ReplayChoice> all = at.all_choices(p, 20, failure.candidates_total);
-    for (const auto& c : all) failure.candidates.push_back(candidate(c));
-    if (!all.empty()) failure.nearest_distance = all.front().distance;
-    if (reason.empty()) {
-      bool vertex = false;
-      for (const Point& v : failure.mesh.vertices) vertex = vertex || v == p;
-      if (vertex)
-        reason = "the point is already a vertex of the mesh";
-      else if (all.empty())
-        reason = "the mesh has no bad triangle: no point should be inserted";
-      else
-        // The same distance as the table of nearest choices (Euclidean); the tolerance
-        // bounds the larger coordinate difference, given beside it.
-        reason = fmt::format(
-            "not the paper's choice for any bad triangle's Lepp (nearest choice {:.3g} away; its larger coordinate "
-            "difference {:.3g}, tolerance {:.3g})",
-            all.front().euclidean, all.front().distance, all.front().tolerance);
-    }
-    failure.reason = reason;
-    // The catalogue, on the same mesh with the same arithmetic and tolerance.
-    const DeviationMatch dm = at.diagnose(p);
-    failure.deviation = to_string(dm.deviation);
-    failure.deviation_what = dm.what;
-    failure.deviation_definition = definition(dm.deviation);
-    if (dm.deviation != Deviation::Unknown) {
-      failure.deviation_at = candidate(dm.where);
-      for (const auto& c : dm.paper) failure.deviation_paper.push_back(candidate(c));
-    }
+    describe_step(at, reason, failure);
     report.cocircular_search_exhausted = replay.cocircular_search_exhausted();
     report.conforms = false;
     report.failure = std::move(failure);
@@ -425,16 +466,19 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
   }
   if (!best) return;  // no reading could be built
   if (fallback) {
-    // Lost there (or sooner) on those meshes too, or no step named on them (a
-    // program the exact replay's search of cocircular cells did not follow; not
-    // met in the measurements of docs/CONFORMANCE.md): the exact chain stays.
-    if (best_reached < lost_at || best->chain.empty()) return;
-    best->mesh_reading_fallback = true;
     // The mesh's arithmetic (flips decided in double, or missing) is the
     // program's: named where the exact mesh lost the chain.
     const std::string name = best_reading == MeshReading::DoubleIncircle ? kInexactIncircle
                              : best_reading == MeshReading::TiesKept      ? ""
                                                                           : kMissingFlips;
+    // Lost there (or sooner) on those meshes too: the exact chain stays. So it does
+    // where every step is the paper's choice with cocircular ties kept (a program
+    // the exact replay's search of cocircular cells did not follow; not met in the
+    // measurements of docs/CONFORMANCE.md): no name says what the program did. With
+    // every step the paper's choice on a program's mesh that has a name (flips
+    // decided in double, none), that name alone is the chain.
+    if (best_reached < lost_at || (best->chain.empty() && name.empty())) return;
+    best->mesh_reading_fallback = true;
     auto& chain = best->chain;
     if (!name.empty() && std::none_of(chain.begin(), chain.end(), [&](const DeviationLink& l) { return l.deviation == name; })) {
       chain.insert(std::find_if(chain.begin(), chain.end(), [&](const DeviationLink& l) { return l.first_step >= lost_at; }),
@@ -450,6 +494,9 @@ void follow_program_mesh(const Pslg& validated, const std::vector<Point>& trace,
         best->deviation_definition = name == kInexactIncircle ? inexact_definition(kInexactIncircle) : kMissingFlipsDefinition;
       }
     }
+    // The step's picture and table on the mesh followed, where its chain starts at
+    // the failing step: the choices the deviation's words speak of.
+    if (best->chain.front().first_step == best->step + 1) restate_step_on(validated, trace, options, best_reading, *best);
   }
   f = std::move(*best);
 }

@@ -117,7 +117,11 @@ std::string diagnosis_markdown(const StepDiagnosis& d) {
           "differ from the replay's, and missing Delaunay flips after an insertion are the likely cause; the steps after "
           "the first such flip are judged on a mesh the program did not have.\n";
   if (!f.candidates.empty()) {
-    md += fmt::format("\nThe nearest of the paper's {} choices at this step (Euclidean distances):\n\n", f.candidates_total);
+    // Which mesh the choices are of, where the chain was followed on another one.
+    const std::string on = !f.step_mesh_reading.empty()
+                               ? fmt::format(" on the program's mesh as the replay rebuilds it (`{}`)", f.step_mesh_reading)
+                           : !f.mesh_reading.empty() ? std::string(" on the exact mesh") : std::string();
+    md += fmt::format("\nThe nearest of the paper's {} choices at this step{} (Euclidean distances):\n\n", f.candidates_total, on);
     md += "| choice | rule | distance | bad triangle | Lepp | terminal edge |\n|---|---|---:|---|---|---|\n";
     for (std::size_t i = 0; i < f.candidates.size() && i < 8; ++i) {
       const ConformanceCandidate& c = f.candidates[i];

@@ -129,6 +129,9 @@ TEST(ProgramMesh, FallbackNameFirstAtItsStep) {
   EXPECT_EQ(f.chain[1].deviation, "terminal-midpoint") << chain_text(f.chain);
   EXPECT_EQ(f.chain[1].first_step, f.chain[0].first_step) << chain_text(f.chain);
   EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
+  // That step is no choice without flips either (a terminal midpoint): the finding
+  // shows its picture and choices on the mesh followed.
+  EXPECT_EQ(f.step_mesh_reading, f.mesh_reading);
 }
 
 // The fallback is kept only when it goes past the step the exact chain lost: the
@@ -184,6 +187,18 @@ TEST(ProgramMesh, ChainLostAtACocircularTieFollowedWithTiesKept) {
   const std::string md = diagnosis_markdown(conformance_diagnosis(followed, r.theta, false));
   EXPECT_NE(md.find("(`ties-kept`), not the exact one: on the exact mesh the chain lost a step no rule fits"), std::string::npos) << md;
   EXPECT_EQ(md.find("of the final mesh), not the exact one"), std::string::npos) << md;
+  // The step's table and picture are of that mesh too, where its deviation is: the
+  // program's point is the area centroid of a quad whose vertex centroid is the
+  // nearest choice listed; the exact mesh's table listed other choices.
+  EXPECT_EQ(f.step_mesh_reading, "ties-kept");
+  ASSERT_TRUE(f.deviation_at) << f.deviation_what;
+  ASSERT_FALSE(f.candidates.empty());
+  ASSERT_FALSE(f.deviation_paper.empty());
+  EXPECT_EQ(f.candidates.front().point, f.deviation_paper.front().point);
+  EXPECT_NE(f.candidates.front().point, exact.failure->candidates.front().point);
+  EXPECT_EQ(f.mesh.vertices.size(), exact.failure->mesh.vertices.size());
+  EXPECT_NE(f.reason.find(fmt::format("nearest choice {:.3g} away", f.candidates.front().euclidean)), std::string::npos) << f.reason;
+  EXPECT_NE(md.find("choices at this step on the program's mesh as the replay rebuilds it (`ties-kept`)"), std::string::npos) << md;
   // Where the chain would have stopped, the same mesh draws the step (chain_end_failure).
   EXPECT_FALSE(chain_end_failure(r.input, r.trace, options(r.theta), f)) << "a complete chain has no end to draw";
 }
@@ -304,6 +319,14 @@ TEST(ProgramMesh, FloatInputFollowedOnTheInputAtFloatRounding) {
   EXPECT_TRUE(f.chain_complete) << chain_text(f.chain) << "; " << f.chain_end;
   EXPECT_EQ(f.mesh_reading, "float-input");
   EXPECT_EQ(names(f), std::set<std::string>{"float-input"}) << chain_text(f.chain);
+  // The step's table stays the exact input's (how far the float rounding put the
+  // point from the paper's choice there), and says so.
+  EXPECT_EQ(f.step_mesh_reading, "");
+  ConformanceReport followed;
+  followed.steps = r.trace.size();
+  followed.failure = f;
+  const std::string md = diagnosis_markdown(conformance_diagnosis(followed, r.theta, false));
+  EXPECT_NE(md.find("choices at this step on the exact mesh (Euclidean distances)"), std::string::npos) << md;
 
   Pslg merged = r.input;
   merged.vertices.push_back({merged.vertices[0].x * (1 + 0x1p-40), merged.vertices[0].y});
@@ -337,6 +360,22 @@ TEST(ProgramMesh, ChainLostOnTheExactMeshFollowedWithFlipsDecidedInDouble) {
   EXPECT_EQ(names(f), (std::set<std::string>{"inexact-incircle", "remark10-reversed", "area-centroid"})) << chain_text(f.chain);
   for (const DeviationLink& l : f.chain)
     if (l.deviation == "inexact-incircle") EXPECT_EQ(l.first_step, exact.failure->chain_end_step);
+  // The mesher with flips decided in double alone: every step is the paper's choice
+  // on the mesh with flips decided in double, and its chain is that mesh's name
+  // alone, from the step the exact mesh lost; that step's picture and choices stay
+  // the exact mesh's, where it is none.
+  const MesherRun alone = mesh(std::string(LEPP_SOURCE_DIR) + "/corpus/hostile/near-touching.poly", 20, "--bug double-flips");
+  ConformanceReport exact_alone = check_conformance(alone.input, alone.trace, options(alone.theta));
+  ASSERT_TRUE(exact_alone.failure);
+  ConformanceFailure g = *exact_alone.failure;
+  follow_program_mesh(alone.input, alone.trace, options(alone.theta), g);
+  EXPECT_TRUE(g.mesh_reading_fallback) << g.mesh_reading << ": " << chain_text(g.chain);
+  EXPECT_EQ(g.deviation, "inexact-incircle") << chain_text(g.chain);
+  EXPECT_EQ(names(g), std::set<std::string>{"inexact-incircle"}) << chain_text(g.chain);
+  EXPECT_EQ(g.chain.front().first_step, exact_alone.failure->step + 1) << chain_text(g.chain);
+  EXPECT_TRUE(g.chain_complete) << chain_text(g.chain) << "; " << g.chain_end;
+  EXPECT_EQ(g.step_mesh_reading, "") << chain_text(g.chain);
+  EXPECT_EQ(g.reason, exact_alone.failure->reason);
 }
 
 }  // namespace

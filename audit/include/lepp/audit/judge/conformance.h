@@ -127,6 +127,10 @@ struct ConformanceFailure {
   // mesh_reading was tried where the exact chain lost a step no rule fits (the
   // final mesh named no arithmetic), not read from the name of the final mesh.
   bool mesh_reading_fallback = false;
+  // The mesh the step's picture and table of choices (mesh, candidates) are of: ""
+  // the exact one; mesh_reading's name where the fallback's chain starts at the
+  // failing step, so that they show the choices its deviation speaks of.
+  std::string step_mesh_reading;
   // Steps that took the quad centroid inside the other triangle where one
   // second-longest edge is constrained: the paper's Remark 10, which a
   // reversed program never does (the evidence for remark10-ignored).
