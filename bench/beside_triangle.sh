@@ -3,7 +3,8 @@
 # lepp beside Triangle, in one measurement (issue 40): every ratio against Triangle is
 # computed from runs of both programs made here, interleaved, never from a time of
 # another day. Square400 at theta = 30 degrees and --max-area A, whole processes writing
-# their files. Each round runs, in turn: lepp refine --threads 1, lepp refine --threads 2
+# their files, each into new files (the last round's removed first, untimed, for every
+# program alike). Each round runs, in turn: lepp refine --threads 1, lepp refine --threads 2
 # (fifo; the output beside the refinement), Triangle -pq30 -aA, lepp certify of lepp's
 # mesh with --threads 1 and --threads 2 (when certify has the option). Medians of wall
 # time, CPU time (user + system) and peak resident memory (the child's rusage:

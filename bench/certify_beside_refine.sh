@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # lepp certify beside lepp refine, in one measurement (issue 40 item 3: the checker at
 # least as fast as the mesher): Square400 at theta = 30 degrees and --max-area A. Each
-# round runs, in turn: lepp refine --threads 1 (writing the mesh), lepp certify of that
+# round runs, in turn: lepp refine --threads 1 (writing the mesh into new files: the last
+# round's are removed first, untimed), lepp certify of that
 # mesh with --threads 1 and --threads 2, and, when BEFORE names another lepp binary
 # (an older build), its certify with --threads 1 and 2 too. Whole processes; medians of
 # wall time, CPU time (user + system) and peak resident memory (the child's rusage:
