@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # lepp certify beside lepp refine, in one measurement (issue 40 item 3: the checker at
 # least as fast as the mesher): Square400 at theta = 30 degrees and --max-area A. Each
-# round runs, in turn: lepp refine --threads 1 (writing the mesh), lepp certify of that
+# round runs, in turn: lepp refine --threads 1 (writing the mesh into new files: the last
+# round's are removed first, untimed), lepp certify of that
 # mesh with --threads 1 and --threads 2, and, when BEFORE names another lepp binary
 # (an older build), its certify with --threads 1 and 2 too. Whole processes; medians of
 # wall time, CPU time (user + system) and peak resident memory (the child's rusage:
@@ -24,7 +25,7 @@ cp corpus/paper/square400.poly "$out_dir/in.poly"
 # The loop and the medians: bench/lib/interleave.py (shared with beside_triangle.sh).
 PYTHONPATH=bench/lib python3 - "$lepp" "${before:-}" "$out_dir" "$area" "$rounds" <<'PY'
 import sys
-from interleave import Step, first_count, markdown_table, medians, run_rounds
+from interleave import Step, first_count, markdown_table, medians, remove_outputs, run_rounds
 lepp, before, out, area, rounds = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5])
 inp, mesh = f"{out}/in.poly", f"{out}/mesh"
 
@@ -33,7 +34,8 @@ def certify(name, label, binary, threads):
 
 steps = [
     Step("refine1", "lepp refine --threads 1",
-         [lepp, "refine", inp, "--min-angle", "30", "--max-area", area, "--threads", "1", "-q", "-o", mesh]),
+         [lepp, "refine", inp, "--min-angle", "30", "--max-area", area, "--threads", "1", "-q", "-o", mesh],
+         first=remove_outputs(mesh)),  # new files each round, not the last round's truncated
     certify("certify1", "lepp certify --threads 1", lepp, 1),
     certify("certify2", "lepp certify --threads 2", lepp, 2),
 ]

@@ -18,11 +18,25 @@ class Step:
     """One program run per round: `name` keys the results, `label` is its table row.
 
     ok: exit statuses that count as success (lepp refine's 3 is a guard's stop);
-    then: called after each successful run (e.g. to read and remove its output).
+    then: called after each successful run (e.g. to read and remove its output);
+    first: called before each run, untimed (e.g. to remove the files it writes, so
+    that no program is charged for truncating the previous round's).
     """
 
-    def __init__(self, name, label, argv, ok=(0,), then=None):
+    def __init__(self, name, label, argv, ok=(0,), then=None, first=None):
         self.name, self.label, self.argv, self.ok, self.then = name, label, [str(a) for a in argv], tuple(ok), then
+        self.first = first
+
+
+def remove_outputs(prefix, extensions=("node", "ele", "poly", "unimprovable")):
+    """A function removing PREFIX.EXT for each extension that exists (a Step's first)."""
+    def remove():
+        for ext in extensions:
+            try:
+                os.remove(f"{prefix}.{ext}")
+            except FileNotFoundError:
+                pass
+    return remove
 
 
 def timed(argv):
@@ -48,6 +62,8 @@ def run_rounds(steps, rounds, progress=""):
             sys.stderr.write(f"\r{progress}: round {r + 1} of {rounds}")
             sys.stderr.flush()
         for s in steps:
+            if s.first:
+                s.first()
             status, wall, cpu, peak, err = timed(s.argv)
             if status not in s.ok:
                 if tty and progress:

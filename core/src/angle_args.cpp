@@ -3,50 +3,17 @@
 // two arguments it gives atan2, and the order of two such angles decided without atan2.
 #include "lepp/angle_args.h"
 
+#include "angle_args_inline.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
 namespace lepp {
 namespace {
 
-// 2^k for a k of a normal double (-1022 to 1023), built from its bits.
-double power_of_two(int k) {
-  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
-  double d;
-  std::memcpy(&d, &bits, sizeof d);
-  return d;
-}
-
-// ilogb(m) for a normal m, read from its bits.
-int exponent_of(double m) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &m, sizeof bits);
-  return static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-}
-
-// p - o scaled by a power of two so that its larger component is in [1, 2): the
-// direction is kept and neither the difference nor the products after it over- or
-// underflow. A difference that overflows is taken of the halves (exact at that size).
-Point scaled_direction(const Point& o, const Point& p) {
-  double dx = p.x - o.x, dy = p.y - o.y;
-  if (!std::isfinite(dx) || !std::isfinite(dy)) dx = p.x / 2 - o.x / 2, dy = p.y / 2 - o.y / 2;
-  const double m = std::max(std::abs(dx), std::abs(dy));
-  if (!(m > 0) || !std::isfinite(m)) return {dx, dy};
-  if (m >= 0x1p-1000 && m < 0x1p1000) {
-    // A product by an exact power of two is rounded once, as ldexp rounds: the same
-    // doubles without the library calls (the statistics make three per triangle).
-    const double scale = power_of_two(-exponent_of(m));
-    return {dx * scale, dy * scale};
-  }
-  const int e = std::ilogb(m);
-  return {std::ldexp(dx, -e), std::ldexp(dy, -e)};
-}
-
-AngleArgs args_of(const Point& u, const Point& v) { return {u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y}; }
-
-Point negated(const Point& u) { return {-u.x, -u.y}; }
+using detail::args_of;
+using detail::negated;
+using detail::scaled_direction;
 
 // A scaled direction of a side of positive, finite length: one component in [1, 2).
 bool usable(const Point& u) { return std::max(std::abs(u.x), std::abs(u.y)) >= 1 && std::isfinite(u.x) && std::isfinite(u.y); }
@@ -65,16 +32,9 @@ std::array<AngleArgs, 3> triangle_angle_args(const Point& a, const Point& b, con
   return {args_of(ab, negated(ca)), args_of(bc, negated(ab)), args_of(ca, negated(bc))};
 }
 
-AngleArgs corner_angle_args(const Point& a, const Point& b, const Point& c, int k) {
-  // The two sides at corner k, as triangle_angle_args scales them.
-  switch (k) {
-    case 0: return args_of(scaled_direction(a, b), negated(scaled_direction(c, a)));
-    case 1: return args_of(scaled_direction(b, c), negated(scaled_direction(a, b)));
-    default: return args_of(scaled_direction(c, a), negated(scaled_direction(b, c)));
-  }
-}
+AngleArgs corner_angle_args(const Point& a, const Point& b, const Point& c, int k) { return detail::corner_args(a, b, c, k); }
 
-double signed_degrees(const AngleArgs& a) { return std::atan2(a.cross, a.dot) * 180.0 / M_PI; }
+double signed_degrees(const AngleArgs& a) { return detail::degrees_of(a); }
 
 bool clearly_smaller(const AngleArgs& a, const AngleArgs& b) {
   // With y = |cross| and x = dot, an angle is atan2(y, x) in [0, pi], and

@@ -6,6 +6,8 @@
 #include "lepp/angle_args.h"
 #include "lepp/refine.h"
 
+#include "angle_args_inline.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,19 +53,23 @@ double signed_angle_deg(const Point& o, const Point& p, const Point& q) { return
 
 double angle_deg(const Point& o, const Point& p, const Point& q) { return std::abs(signed_angle_deg(o, p, q)); }
 
-double min_angle_deg(const Point& a, const Point& b, const Point& c) {
+namespace {
+// The shortcut's margins (smallest_angle below).
+constexpr double kShorter = 1 - 0x1p-10, kNotThin = 0x1p-20;
+
+// min_angle_deg from the triangle's squared sides ab = |a - b|^2, bc, ca, as
+// squared_length computes them.
+inline double smallest_angle(const Point& a, const Point& b, const Point& c, double ab, double bc, double ca) {
   // The side clearly shortest (its square below the others' by 2^-10) and the angle
   // opposite it not thin (sine at least about 2^-20): that angle is then smaller than
   // the other two by more than about 2^-31 radians (law of sines), far beyond the ulps
   // of the computed degrees, so it is the minimum of the three bit for bit, from two
   // scaled sides, no comparisons (issue 40: most triangles of a mesh).
-  constexpr double kShorter = 1 - 0x1p-10, kNotThin = 0x1p-20;
-  const double ab = squared_length(a, b), bc = squared_length(b, c), ca = squared_length(c, a);
   if (safe_square(ab) && safe_square(bc) && safe_square(ca)) {
     const int k = bc < kShorter * std::min(ab, ca) ? 0 : ca < kShorter * std::min(ab, bc) ? 1 : ab < kShorter * std::min(bc, ca) ? 2 : -1;
     if (k >= 0) {
-      const AngleArgs at = corner_angle_args(a, b, c, k);
-      if (std::abs(at.cross) >= kNotThin * (std::abs(at.dot) + std::abs(at.cross))) return std::abs(signed_degrees(at));
+      const AngleArgs at = detail::corner_args(a, b, c, k);
+      if (std::abs(at.cross) >= kNotThin * (std::abs(at.dot) + std::abs(at.cross))) return std::abs(detail::degrees_of(at));
     }
   }
   const std::array<AngleArgs, 3> at = triangle_angle_args(a, b, c);
@@ -75,6 +81,37 @@ double min_angle_deg(const Point& a, const Point& b, const Point& c) {
   if (clearly_smaller(at[k], at[(k + 1) % 3]) && clearly_smaller(at[k], at[(k + 2) % 3]))
     return std::abs(signed_degrees(at[k]));
   return std::min({std::abs(signed_degrees(at[0])), std::abs(signed_degrees(at[1])), std::abs(signed_degrees(at[2]))});
+}
+
+// smallest_angle of triangle abc in mesh_stats' loop, from its sides' vectors
+// dab = b - a, dbc = c - b, dca = a - c (scaled_direction's differences; their
+// squares, in either direction, are squared_length's). Where the three squares are
+// safe_square, each side's larger component m lies in [2^-451, 2^451): a smaller m
+// would make the square below 2^-900, a larger one above 2^900 (rounding is
+// monotonic). scaled_direction then takes its power-of-two branch, which alone is
+// computed here; anything else goes to smallest_angle.
+inline Point scaled_safe_side(const Point& d) {
+  const double scale = detail::power_of_two(-detail::exponent_of(std::max(std::abs(d.x), std::abs(d.y))));
+  return {d.x * scale, d.y * scale};
+}
+inline double smallest_angle_of_sides(const Point& a, const Point& b, const Point& c, const Point& dab, const Point& dbc,
+                                      const Point& dca, double ab, double bc, double ca) {
+  if (safe_square(ab) && safe_square(bc) && safe_square(ca)) {
+    const int k = bc < kShorter * std::min(ab, ca) ? 0 : ca < kShorter * std::min(ab, bc) ? 1 : ab < kShorter * std::min(bc, ca) ? 2 : -1;
+    if (k >= 0) {
+      // corner_args: corner 0 from ab and -ca, 1 from bc and -ab, 2 from ca and -bc.
+      const Point& from = k == 0 ? dab : k == 1 ? dbc : dca;
+      const Point& to = k == 0 ? dca : k == 1 ? dab : dbc;
+      const AngleArgs at = detail::args_of(scaled_safe_side(from), detail::negated(scaled_safe_side(to)));
+      if (std::abs(at.cross) >= kNotThin * (std::abs(at.dot) + std::abs(at.cross))) return std::abs(detail::degrees_of(at));
+    }
+  }
+  return smallest_angle(a, b, c, ab, bc, ca);
+}
+}  // namespace
+
+double min_angle_deg(const Point& a, const Point& b, const Point& c) {
+  return smallest_angle(a, b, c, squared_length(a, b), squared_length(b, c), squared_length(c, a));
 }
 
 double max_angle_deg(const Point& a, const Point& b, const Point& c) {
@@ -121,10 +158,11 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
     const Tri& t = mesh.triangles[i];
     const Point &a = mesh.vertices[static_cast<std::size_t>(t[0])], &b = mesh.vertices[static_cast<std::size_t>(t[1])],
                 &c = mesh.vertices[static_cast<std::size_t>(t[2])];
-    double m = min_angle_deg(a, b, c);
+    const Point dab{b.x - a.x, b.y - a.y}, dbc{c.x - b.x, c.y - b.y}, dca{a.x - c.x, a.y - c.y};
+    const double ab = dab.x * dab.x + dab.y * dab.y, bc = dbc.x * dbc.x + dbc.y * dbc.y, ca = dca.x * dca.x + dca.y * dca.y;
+    const double m = smallest_angle_of_sides(a, b, c, dab, dbc, dca, ab, bc, ca);
     min_angle = std::min(min_angle, m);
     sum += m;
-    const double ab = squared_length(a, b), bc = squared_length(b, c), ca = squared_length(c, a);
     const bool well_scaled = safe_square(ab) && safe_square(bc) && safe_square(ca);  // false for a NaN too
     const double lo = std::min({ab, bc, ca}), hi = std::max({ab, bc, ca});
     if (!(well_scaled && lo > shortest_bound)) {

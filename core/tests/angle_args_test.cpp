@@ -152,14 +152,17 @@ std::vector<std::array<Point, 3>> boundary_triangles() {
   return all;
 }
 
-TEST(SmallestAngle, IsTheMinimumOfTheThreeAnglesBitForBit) {
-  for (const auto& t : boundary_triangles())
-    EXPECT_TRUE(same_bits(min_angle_deg(t[0], t[1], t[2]), min_angle_by_definition(t[0], t[1], t[2])))
-        << std::hexfloat << t[0].x << "," << t[0].y << " " << t[1].x << "," << t[1].y << " " << t[2].x << "," << t[2].y;
-  // Random triangles, and near-isosceles ones (two angles within an ulp or so).
+// Random triangles and near-isosceles ones (two angles within an ulp or so); around
+// min_angle_deg's shortcut (the shortest side's square 2^-10 below the others', the
+// angle opposite it of sine 2^-20): two sides in a ratio near that margin, apex angles
+// from needles to wide; needles with two tiny angles, their sides in a ratio just past
+// the margin (the two angles' rounding, of a cross product of nearly parallel sides, is
+// then as large as their difference). n of each kind, every corner first in turn.
+std::vector<std::array<Point, 3>> random_and_margin_triangles(int n) {
+  std::vector<std::array<Point, 3>> all;
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int i = 0; i < 200000; ++i) {
+  for (int i = 0; i < n; ++i) {
     const Point a{u(rng), u(rng)};
     Point b{u(rng), u(rng)}, c{u(rng), u(rng)};
     if (i % 2) {
@@ -167,38 +170,70 @@ TEST(SmallestAngle, IsTheMinimumOfTheThreeAnglesBitForBit) {
       b = {a.x + std::cos(turn), a.y + std::sin(turn)};
       c = {a.x + std::cos(turn + apex), a.y + std::sin(turn + apex)};
     }
-    ASSERT_TRUE(same_bits(min_angle_deg(a, b, c), min_angle_by_definition(a, b, c))) << i;
+    all.push_back({a, b, c});
   }
-  // Around min_angle_deg's shortcut (the shortest side's square 2^-10 below the
-  // others', the angle opposite it of sine 2^-20): two sides in a ratio near that
-  // margin, apex angles from needles to wide, every corner first.
-  for (int i = 0; i < 200000; ++i) {
+  auto rotated = [](const std::array<Point, 3>& t, int r) {
+    return std::array<Point, 3>{t[static_cast<std::size_t>(r)], t[static_cast<std::size_t>((r + 1) % 3)],
+                                t[static_cast<std::size_t>((r + 2) % 3)]};
+  };
+  for (int i = 0; i < n; ++i) {
     const double apex = std::ldexp(0.5 + u(rng), -static_cast<int>(u(rng) * 40));  // 2^-40 to 1.5 radians
     const double ratio = 1 - std::ldexp(u(rng), -static_cast<int>(4 + u(rng) * 12));  // 1 - 2^-4 to 1 - 2^-16
     const double turn = u(rng) * 6.283;
     const Point o{u(rng), u(rng)};
     const Point p{o.x + std::cos(turn), o.y + std::sin(turn)};
     const Point q{o.x + ratio * std::cos(turn + apex), o.y + ratio * std::sin(turn + apex)};
-    const std::array<Point, 3> t{o, p, q};
-    const int r = i % 3;
-    const Point &a = t[r], &b = t[(r + 1) % 3], &c = t[(r + 2) % 3];
-    ASSERT_TRUE(same_bits(min_angle_deg(a, b, c), min_angle_by_definition(a, b, c)))
-        << i << std::hexfloat << " " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y;
+    all.push_back(rotated({o, p, q}, i % 3));
   }
-  // Needles with two tiny angles, their sides in a ratio just past the margin: the
-  // two angles' rounding (of a cross product of nearly parallel sides) is then as
-  // large as their difference.
-  for (int i = 0; i < 200000; ++i) {
+  for (int i = 0; i < n; ++i) {
     const double off = std::ldexp(0.5 + u(rng), -static_cast<int>(10 + u(rng) * 6));
     const double height = std::ldexp(0.5 + u(rng), -static_cast<int>(10 + u(rng) * 40));
     const double cs = std::cos(u(rng) * 6.283), sn = std::sqrt(1 - cs * cs);  // turned off the axes
     const Point o{u(rng), u(rng)};
     auto turned = [&](double x, double y) { return Point{o.x + cs * x - sn * y, o.y + sn * x + cs * y}; };
-    const std::array<Point, 3> t{o, turned(1, 0), turned(0.5 - off, height)};
-    const int r = i % 3;
-    const Point &a = t[r], &b = t[(r + 1) % 3], &c = t[(r + 2) % 3];
+    all.push_back(rotated({o, turned(1, 0), turned(0.5 - off, height)}, i % 3));
+  }
+  return all;
+}
+
+TEST(SmallestAngle, IsTheMinimumOfTheThreeAnglesBitForBit) {
+  for (const auto& t : boundary_triangles())
+    EXPECT_TRUE(same_bits(min_angle_deg(t[0], t[1], t[2]), min_angle_by_definition(t[0], t[1], t[2])))
+        << std::hexfloat << t[0].x << "," << t[0].y << " " << t[1].x << "," << t[1].y << " " << t[2].x << "," << t[2].y;
+  const std::vector<std::array<Point, 3>> random = random_and_margin_triangles(200000);
+  for (std::size_t i = 0; i < random.size(); ++i) {
+    const Point &a = random[i][0], &b = random[i][1], &c = random[i][2];
     ASSERT_TRUE(same_bits(min_angle_deg(a, b, c), min_angle_by_definition(a, b, c)))
         << i << std::hexfloat << " " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y;
+  }
+}
+
+// mesh_stats takes each triangle's smallest angle from its side vectors inline
+// (stats.cpp, issue 40), not through min_angle_deg: each triangle alone as a mesh,
+// its smallest and average angle are the definition's, bit for bit, on the same
+// triangles, and near the squares' bounds of that path (sides about 2^-450 and 2^450,
+// squares about 2^-900 and 2^900).
+TEST(MeshStatistics, EachTrianglesSmallestAngleIsItsDefinitionBitForBit) {
+  std::vector<std::array<Point, 3>> all = boundary_triangles();
+  const std::vector<std::array<Point, 3>> random = random_and_margin_triangles(50000);
+  all.insert(all.end(), random.begin(), random.end());
+  for (double scale : {0x1p-451, 0x1p-450, 0x1p-449, 0x1p449, 0x1p450, 0x1p451})
+    for (std::size_t i = 0; i < random.size(); i += 97) {
+      std::array<Point, 3> t = random[i];
+      for (Point& p : t) p = {p.x * scale, p.y * scale};
+      all.push_back(t);
+    }
+  const Pslg none;
+  Mesh one;
+  one.triangles = {{0, 1, 2}};
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Point &a = all[i][0], &b = all[i][1], &c = all[i][2];
+    one.vertices = {a, b, c};
+    const MeshStats s = mesh_stats(one, none);
+    const double expected = min_angle_by_definition(a, b, c);
+    ASSERT_TRUE(same_bits(s.min_angle_deg, std::min(180.0, expected)) && same_bits(s.avg_min_angle_deg, expected))
+        << i << std::hexfloat << " " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y << ": "
+        << s.min_angle_deg << " " << s.avg_min_angle_deg << " against " << expected;
   }
 }
 
