@@ -180,6 +180,7 @@ class Refiner {
     inserter_.record_creation = opt_.order == QueueOrder::Flip;
     queue.push(initial, true);
     Choice choice;
+    Located at;  // where settle found choice's point, if it did
     while (outcome_ == Outcome::Converged && (!queue.empty() || requeue_stopped(queue))) {
       const Item item = queue.pop();
       bool first = true;
@@ -188,8 +189,8 @@ class Refiner {
         if (!guards_pass(item, result)) break;
         prefetch_around(lepp_);
         choice = select_point(mesh_, lepp_, opt_.method);
-        if (!settle(item, choice, result)) break;
-        const bool go_on = insert_choice(item, choice, first, result);
+        if (!settle(item, choice, result, &at)) break;
+        const bool go_on = insert_choice(item, choice, first, result, at);
         first = false;
         queue.push(fresh_, false);
         if (!go_on) break;
@@ -340,8 +341,9 @@ class Refiner {
 
   // Select Point's choice for lepp_, as inserted (section 8b): false when no
   // resolution of it can be inserted (the precision stop leaves the triangle).
-  bool settle(const Item& item, Choice& choice, RefineResult& result) {
-    if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_)) return true;
+  // *at: where the formula's point lies, when settle_choice found it there.
+  bool settle(const Item& item, Choice& choice, RefineResult& result, Located* at = nullptr) {
+    if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_, at)) return true;
     if (!other_tie_resolution(mesh_, item.tri, opt_.method, opt_.tie_search_states, lepp_, choice, obstacles_)) {
       ++result.precision_stops;
       stopped_.push_back({item, choice.rule, choice.point});
@@ -354,7 +356,7 @@ class Refiner {
   // Inserts the settled choice for item, as every order does: statistics, trace,
   // the new point's batch of processed bad triangles (fresh_), the edge floor.
   // False when an edge below the floor ends the run.
-  bool insert_choice(const Item& item, const Choice& choice, bool first, RefineResult& result) {
+  bool insert_choice(const Item& item, const Choice& choice, bool first, RefineResult& result, Located at = {}) {
     ++result.lepp_searches;
     result.lepp_triangles += static_cast<std::int64_t>(lepp_.path.size());
     if (first && sized_ && quality_.too_big(mesh_, item.tri)) ++result.area_refined;
@@ -362,7 +364,7 @@ class Refiner {
     if (opt_.trace) step = trace_step(item, lepp_, choice);
     int split_segment = -1;
     const int p = static_cast<int>(mesh_.pts.size());
-    around_ = inserter_.insert(mesh_, mem_, choice, split_segment);
+    around_ = inserter_.insert(mesh_, mem_, choice, split_segment, at);
     if (split_segment >= 0) obstacles_.on_split(mesh_, split_segment, p);
     ++steiner_;
     if (opt_.trace) {
@@ -375,10 +377,9 @@ class Refiner {
     bool below_floor = false;
     fresh_.clear();
     mesh_.for_each_in_star(around_, [&](int ti) {
-      const FTri& f = mesh_.t(ti);
-      if (floor_ > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v(1)), floor_) || sqlen_below(mesh_.p(p), mesh_.p(f.v(2)), floor_)))
-        below_floor = true;
-      if (quality_.processed(mesh_, ti)) fresh_.push_back(keyed(mesh_, ti));
+      bool below = false;  // a spoke of ti (p at v[0]) below the floor
+      if (quality_.processed_made(mesh_, ti, floor_, &below)) fresh_.push_back(keyed(mesh_, ti));
+      below_floor = below_floor || below;
     });
     if (inserter_.record_creation) set_creation_ranks(fresh_);
     // A split off its line may keep a triangle beside its sliver: its edge ab is

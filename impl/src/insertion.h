@@ -22,7 +22,8 @@ class Inserter {
 
   // Inserts choice.point as vertex id pts.size(); returns a triangle with the new
   // vertex at v[0] (its star is walked from there) and the segment it split, or -1.
-  int insert(TriMesh& m, SegmentMembership& mem, const Choice& choice, int& split_segment) {
+  // `at`: where the point lies, when the precision stop's test found it (else located here).
+  int insert(TriMesh& m, SegmentMembership& mem, const Choice& choice, int& split_segment, Located at = {}) {
     const int p = static_cast<int>(m.pts.size());
     int made[4], count = 0;
     split_segment = -1;
@@ -35,7 +36,9 @@ class Inserter {
                         : m.split_edge_keeping(choice.tri, choice.edge, p, keep > 0, made, kept_);
     } else {
       int where = choice.tri, edge = -1;
-      if (!locate_in(m, where, choice.point, edge) && edge == -2 && choice.other >= 0) {
+      if (at.tri >= 0) {
+        where = at.tri, edge = at.edge;
+      } else if (!locate_in(m, where, choice.point, edge) && edge == -2 && choice.other >= 0) {
         where = choice.other;
         locate_in(m, where, choice.point, edge);
       }

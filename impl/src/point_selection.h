@@ -18,6 +18,13 @@ struct Choice {
   int tri = -1, edge = -1, other = -1;
 };
 
+// Where a point inside the terminal quad lies, as the precision stop's test found
+// it (precision_stop.h): triangle `tri` (-1: not known, the insertion locates the
+// point itself) and its edge there (-1: strictly inside).
+struct Located {
+  int tri = -1, edge = -1;
+};
+
 inline Point midpoint(const Point& a, const Point& b) { return {(a.x + b.x) * 0.5, (a.y + b.y) * 0.5}; }
 inline Point centroid(const Point& a, const Point& b, const Point& c, const Point& d) {
   return {((a.x + b.x) + (c.x + d.x)) * 0.25, ((a.y + b.y) + (c.y + d.y)) * 0.25};

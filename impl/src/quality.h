@@ -20,6 +20,7 @@ class Quality {
 
   struct Verdict {
     bool skinny = false, too_big = false;
+    bool below_floor = false;  // judge_made's spokes only
   };
 
   // Region area bounds (ALGORITHM.md section 4): twice the bound in force in
@@ -53,7 +54,28 @@ class Quality {
   // angle, i.e. the two longest edges: their product of squared lengths is the
   // largest of the three products, so no edge ranking is needed unless the
   // filter cannot decide. Caches the longest edge for the Lepp search.
-  Verdict judge(TriMesh& m, int ti) const {
+  Verdict judge(TriMesh& m, int ti) const { return judge_impl<false>(m, ti, 0); }
+
+  // judge() of a triangle (p, u, w) an insertion made (p at v[0], as the star
+  // walks them), and whether a spoke pu or pw is shorter than `floor` (> 0) as
+  // sqlen_below says: from the squared lengths judge computes (the same doubles
+  // as sqlen(p, u) and sqlen(p, w)), not computed twice (issue 40).
+  Verdict judge_made(TriMesh& m, int ti, double floor) const { return judge_impl<true>(m, ti, floor); }
+
+  int shortest_edge(const TriMesh& m, int ti) const { return EdgeOrder(m, ti).rank().shortest; }
+
+  // Bad, and not left alone by the unimprovable rule.
+  bool processed(TriMesh& m, int ti) const { return bad_and_improvable(m, ti, judge(m, ti)); }
+  // The same for a triangle an insertion made, with judge_made's floor test in *below_floor.
+  bool processed_made(TriMesh& m, int ti, double floor, bool* below_floor) const {
+    const Verdict v = judge_made(m, ti, floor);
+    *below_floor = v.below_floor;
+    return bad_and_improvable(m, ti, v);
+  }
+
+ private:
+  template <bool kSpokes>
+  Verdict judge_impl(TriMesh& m, int ti, double floor) const {
     FTri& f = m.t(ti);
     const Point &a = m.p(f.v(0)), &b = m.p(f.v(1)), &c = m.p(f.v(2));
     const double e0x = c.x - b.x, e0y = c.y - b.y, e1x = a.x - c.x, e1y = a.y - c.y, e2x = b.x - a.x, e2y = b.y - a.y;
@@ -83,18 +105,23 @@ class Quality {
       double lw = w == 0 ? l0 : l1;
       f.set_longest(longer(w, lw, 2, l2) ? w : 2);
     }
+    if (kSpokes && floor > 0) {
+      // l2 = |u - p|^2 and l1 = |p - w|^2 (a sign apart from w - p: the same
+      // square). The shorter decided by the filter decides both: the other is no
+      // shorter in doubles, so the filter's margin, which covers its rounding too,
+      // leaves it above the floor when the shorter is.
+      const double fl = floor * floor, l = std::min(l1, l2);
+      const int s = detail::filtered_sign(fl - l, fl + l, 4);
+      v.below_floor = s == 2 ? sqlen_below(a, b, floor) || sqlen_below(a, c, floor) : s > 0;
+    }
     return v;
   }
-
-  int shortest_edge(const TriMesh& m, int ti) const { return EdgeOrder(m, ti).rank().shortest; }
-
-  // Bad, and not left alone by the unimprovable rule.
-  bool processed(TriMesh& m, int ti) const {
-    Verdict v = judge(m, ti);
+  bool bad_and_improvable(TriMesh& m, int ti, const Verdict& v) const {
     if (v.too_big) return true;
     return v.skinny && !unimprovable(m, ti, shortest_edge(m, ti), nullptr);
   }
 
+ public:
   // The rule of section 8 for a skinny triangle with shortest edge `shortest`;
   // fills *out with the smallest qualifying segment pair (s1 < s2).
   bool unimprovable(const TriMesh& m, int ti, int shortest, UnimprovableTriangle* out) const {
