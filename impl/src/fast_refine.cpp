@@ -332,7 +332,11 @@ class Refiner {
     }
     if (outcome_ == Outcome::Converged) {
       // An insertion adds one vertex and at most two triangle slots (tri_mesh.h's splits).
-      check_capacity(static_cast<std::int64_t>(mesh_.pts.size()) + 1, static_cast<std::int64_t>(mesh_.tris.size()) + 2, steiner_);
+      // Within the limits read as the run began (id_limits(): a test lowers them
+      // before, never during, a run), check_capacity would pass: no call.
+      const std::int64_t vertices = static_cast<std::int64_t>(mesh_.pts.size()) + 1,
+                         triangles = static_cast<std::int64_t>(mesh_.tris.size()) + 2;
+      if (!ids_fit(vertices, triangles, limits_)) check_capacity(vertices, triangles, steiner_);
       return true;
     }
     result.stuck = describe(mesh_, item, lepp_);
@@ -477,6 +481,7 @@ class Refiner {
   double floor_ = 0;
   Clock::time_point start_;
   bool sized_ = false;
+  const IdLimits limits_ = id_limits();
   Lepp lepp_;
   std::vector<Keyed> fresh_;  // the last insertion's batch
   int around_ = -1;           // a triangle of the last insertion's star

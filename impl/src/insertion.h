@@ -57,7 +57,13 @@ class Inserter {
     mem.add_steiner(split_segment);
     // Legalization order (ALGORITHM.md section 7, "creation order"): the initial
     // triangles (p, u, w) by increasing id of u, each legalized depth first.
-    std::sort(made, made + count, [&](int x, int y) { return m.t(x).v(1) < m.t(y).v(1); });
+    // (At most four, with distinct u: an insertion sort in place of std::sort's calls.)
+    for (int i = 1; i < count; ++i) {
+      const int x = made[i], u = m.t(x).v(1);
+      int j = i;
+      for (; j > 0 && m.t(made[j - 1]).v(1) > u; --j) made[j] = made[j - 1];
+      made[j] = x;
+    }
     created_.clear();
     for (int k = count; k-- > 0;) {
       stack_.push_back(made[k]);
