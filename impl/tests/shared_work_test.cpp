@@ -2,17 +2,22 @@
 // The fast engine's shortcuts of issue 40, item 2 (work one step had done and the
 // next did again), each against the long way it replaces, at its boundary: the
 // edge floor from the squared lengths judge computed, the precision floor's quick
-// answer taken once for the terminal pair, and the insertion placed where the
-// precision stop's test found the point.
+// answer taken once for the terminal pair, the insertion placed where the
+// precision stop's test found the point, the second-longest edge from two
+// lengths, and the output's buckets sorted by insertion.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
 
+#include "edge_order.h"
 #include "insertion.h"
+#include "lepp/fast.h"
+#include "lepp/mesh.h"
 #include "lepp/angle.h"
 #include "lepp_search.h"
 #include "point_selection.h"
@@ -177,6 +182,55 @@ TEST(SharedWork, InsertionWhereTheTestFoundThePointIsTheLocatedOne) {
   EXPECT_GT(on_edge, 0);
   EXPECT_GT(in_first, 0);
   EXPECT_GT(in_other, 0);
+}
+
+// middle_edge (the two edges other than the longest compared alone) is the edge
+// order's middle: triangles on a small integer grid, where exact length ties
+// (isosceles triangles, decided by the vertex ids) are common, with shuffled ids.
+TEST(SharedWork, MiddleEdgeFromTwoLengthsIsTheEdgeOrdersMiddle) {
+  std::mt19937 rng(4005);
+  int ties = 0;
+  for (int round = 0; round < 3000; ++round) {
+    std::vector<Point> pts(6);
+    for (Point& q : pts) q = {static_cast<double>(rng() % 5), static_cast<double>(rng() % 5)};
+    int a = static_cast<int>(rng() % 6), b = static_cast<int>(rng() % 6), c = static_cast<int>(rng() % 6);
+    if (a == b || b == c || a == c || orient(pts[a], pts[b], pts[c]) == 0) continue;
+    if (orient(pts[a], pts[b], pts[c]) < 0) std::swap(b, c);
+    TriMesh m = mesh_of(pts, {{a, b, c}});
+    const EdgeRank r = EdgeOrder(m, 0).rank();
+    EXPECT_EQ(middle_edge(m, 0), r.middle) << round;
+    const int i = next3(r.longest), j = prev3(r.longest);
+    ties += EdgeOrder(m, 0).same_length(i, j);
+  }
+  EXPECT_GT(ties, 50);
+}
+
+// take_canonical_mesh's buckets (an insertion sort, std::sort past 16 triangles)
+// give canonicalize's order: a refined mesh, and a fan whose centre, vertex 0, is
+// the smallest id of all its 40 triangles (no Steiner point: the CDT itself).
+TEST(SharedWork, CanonicalBucketsAreCanonicalizesOrder) {
+  Pslg fan;
+  fan.vertices.push_back({0, 0});
+  const int n = 40;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n;
+    fan.vertices.push_back({std::cos(t), std::sin(t)});
+    fan.segments.push_back({1 + k, 1 + (k + 1) % n});
+  }
+  for (double max_area : {0.0, 0.01}) {
+    RefineOptions o;
+    o.max_area = max_area;
+    o.min_angle_deg = max_area > 0 ? 30 : 0;
+    o.max_steiner = max_area > 0 ? -1 : 0;
+    const RefineResult r = fast::refine(fan, o);
+    Mesh again = r.mesh;
+    std::reverse(again.triangles.begin(), again.triangles.end());
+    canonicalize(again);
+    EXPECT_EQ(again.triangles, r.mesh.triangles) << max_area;
+    int at_centre = 0;
+    for (const Tri& t : r.mesh.triangles) at_centre += t[0] == 0;
+    if (max_area == 0) EXPECT_EQ(at_centre, n);
+  }
 }
 
 }  // namespace
