@@ -179,7 +179,6 @@ class Refiner {
     BadQueue queue(opt_.order, opt_.order_seed, mesh_);
     inserter_.record_creation = opt_.order == QueueOrder::Flip;
     queue.push(initial, true);
-    Choice choice;
     Located at;  // where settle found choice's point, if it did
     while (outcome_ == Outcome::Converged && (!queue.empty() || requeue_stopped(queue))) {
       const Item item = queue.pop();
@@ -188,7 +187,7 @@ class Refiner {
         lepp_search(mesh_, item.tri, lepp_);
         if (!guards_pass(item, result)) break;
         prefetch_around(lepp_);
-        choice = select_point(mesh_, lepp_, opt_.method);
+        Choice choice = select_point(mesh_, lepp_, opt_.method);  // made in place: no copy (point_selection.h)
         if (!settle(item, choice, result, &at)) break;
         const bool go_on = insert_choice(item, choice, first, result, at);
         first = false;
@@ -382,7 +381,7 @@ class Refiner {
     fresh_.clear();
     mesh_.for_each_in_star(around_, [&](int ti) {
       bool below = false;  // a spoke of ti (p at v[0]) below the floor
-      if (quality_.processed_made(mesh_, ti, floor_, &below)) fresh_.push_back(keyed(mesh_, ti));
+      if (quality_.processed_made(mesh_, ti, floor_, &below)) append_keyed(fresh_, mesh_, ti);
       below_floor = below_floor || below;
     });
     if (inserter_.record_creation) set_creation_ranks(fresh_);
@@ -446,6 +445,7 @@ class Refiner {
   void prefetch_around(const Lepp& lepp) const {
     for (int t : {lepp.t1, lepp.t2}) {
       if (t < 0) continue;
+      __builtin_prefetch(&mesh_.stamp[static_cast<std::size_t>(t)], 1);  // the split bumps it
       const FTri& f = mesh_.t(t);
       for (int i = 0; i < 3; ++i)
         if (f.nbr[i] >= 0) __builtin_prefetch(&mesh_.t(nbr_tri(f.nbr[i])));

@@ -134,6 +134,9 @@ class Inserter {
       const FTri& f = m.t(ti);
       if (f.seg(0) >= 0 || f.nbr[0] < 0) continue;  // never flip a constrained edge
       const FTri& g = m.t(nbr_tri(f.nbr[0]));
+      // A flip rewrites the neighbour and bumps its stamp, cold in cache: fetch it
+      // while the in-circle test runs (issue 40: a third of flip_edge0's time).
+      __builtin_prefetch(&m.stamp[static_cast<std::size_t>(nbr_tri(f.nbr[0]))], 1);
       int s = incircle(m.p(f.v(0)), m.p(f.v(1)), m.p(f.v(2)), m.p(g.v(nbr_edge(f.nbr[0]))));
       if (s > 0) {
         int ni = m.flip_edge0(ti);  // ti = (p, u, d), then ni = (p, d, w): ti is legalized first

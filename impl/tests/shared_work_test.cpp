@@ -60,7 +60,7 @@ Pslg pslg_of(const std::vector<Point>& pts) {
 // at scales from 2^-500 to 2^500 (the floor test's filter undecided, then decided).
 TEST(SharedWork, EdgeFloorFromJudgesLengthsIsSqlenBelowOfBothSpokes) {
   std::mt19937 rng(4002);
-  int below = 0, undecided = 0, cases = 0;
+  int below = 0, undecided = 0, cases = 0, skinnies = 0, too_big = 0;
   for (int scale : {-500, -60, -1, 0, 7, 300, 500}) {
     const double unit = std::ldexp(1.0, scale);
     for (int round = 0; round < 400; ++round) {
@@ -84,6 +84,12 @@ TEST(SharedWork, EdgeFloorFromJudgesLengthsIsSqlenBelowOfBothSpokes) {
       EXPECT_EQ(made.below_floor, expected) << scale << " " << round << " " << k1 << " " << k2;
       EXPECT_EQ(made.skinny, plain.skinny);
       EXPECT_EQ(made.too_big, plain.too_big);
+      // Both against the predicates themselves (the verdict travels as bits).
+      const int sh = EdgeOrder(b, 0).rank().shortest;
+      const bool skinny = skinny_at(b.p(b.t(0).v(sh)), b.p(b.t(0).v(next3(sh))), b.p(b.t(0).v(prev3(sh))), engine_sin2_threshold(30));
+      EXPECT_EQ(plain.skinny, skinny) << scale << " " << round;
+      EXPECT_EQ(plain.too_big, q.too_big(b, 0)) << scale << " " << round;
+      skinnies += skinny, too_big += plain.too_big;
       EXPECT_EQ(a.t(0).longest(), b.t(0).longest());
       bool processed_below = !expected;
       EXPECT_EQ(q.processed_made(a, 0, floor, &processed_below), q.processed(b, 0));
@@ -98,6 +104,10 @@ TEST(SharedWork, EdgeFloorFromJudgesLengthsIsSqlenBelowOfBothSpokes) {
   EXPECT_GT(below, cases / 5);
   EXPECT_LT(below, cases - cases / 5);
   EXPECT_GT(undecided, 50);
+  EXPECT_GT(skinnies, cases / 10);
+  EXPECT_LT(skinnies, cases - cases / 10);
+  EXPECT_GT(too_big, cases / 10);
+  EXPECT_LT(too_big, cases / 2);
 }
 
 // near_pair_vertex's quick answer (one largest magnitude for the terminal pair's
