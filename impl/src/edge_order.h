@@ -66,9 +66,14 @@ inline int longest_edge(TriMesh& m, int ti) {
   return l;
 }
 
-// The second-longest edge of ti.
+// The second-longest edge of ti: the other two edges' lengths alone (EdgeOrder
+// computes all three), the edge order's ids only for an exact tie.
 inline int middle_edge(TriMesh& m, int ti) {
   const int l = longest_edge(m, ti), i = next3(l), j = prev3(l);
+  const FTri& f = m.t(ti);
+  const Point &ai = m.p(f.v(next3(i))), &bi = m.p(f.v(prev3(i))), &aj = m.p(f.v(next3(j))), &bj = m.p(f.v(prev3(j)));
+  const int s = compare_sqlen(ai, bi, sqlen(ai, bi), aj, bj, sqlen(aj, bj));
+  if (s != 0) return s > 0 ? i : j;
   return EdgeOrder(m, ti).longer(i, j) ? i : j;
 }
 

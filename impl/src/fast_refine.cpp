@@ -179,7 +179,7 @@ class Refiner {
     BadQueue queue(opt_.order, opt_.order_seed, mesh_);
     inserter_.record_creation = opt_.order == QueueOrder::Flip;
     queue.push(initial, true);
-    Choice choice;
+    Located at;  // where settle found choice's point, if it did
     while (outcome_ == Outcome::Converged && (!queue.empty() || requeue_stopped(queue))) {
       const Item item = queue.pop();
       bool first = true;
@@ -187,9 +187,9 @@ class Refiner {
         lepp_search(mesh_, item.tri, lepp_);
         if (!guards_pass(item, result)) break;
         prefetch_around(lepp_);
-        choice = select_point(mesh_, lepp_, opt_.method);
-        if (!settle(item, choice, result)) break;
-        const bool go_on = insert_choice(item, choice, first, result);
+        Choice choice = select_point(mesh_, lepp_, opt_.method);  // made in place: no copy (point_selection.h)
+        if (!settle(item, choice, result, &at)) break;
+        const bool go_on = insert_choice(item, choice, first, result, at);
         first = false;
         queue.push(fresh_, false);
         if (!go_on) break;
@@ -331,7 +331,11 @@ class Refiner {
     }
     if (outcome_ == Outcome::Converged) {
       // An insertion adds one vertex and at most two triangle slots (tri_mesh.h's splits).
-      check_capacity(static_cast<std::int64_t>(mesh_.pts.size()) + 1, static_cast<std::int64_t>(mesh_.tris.size()) + 2, steiner_);
+      // Within the limits read as the run began (id_limits(): a test lowers them
+      // before, never during, a run), check_capacity would pass: no call.
+      const std::int64_t vertices = static_cast<std::int64_t>(mesh_.pts.size()) + 1,
+                         triangles = static_cast<std::int64_t>(mesh_.tris.size()) + 2;
+      if (!ids_fit(vertices, triangles, limits_)) check_capacity(vertices, triangles, steiner_);
       return true;
     }
     result.stuck = describe(mesh_, item, lepp_);
@@ -340,8 +344,9 @@ class Refiner {
 
   // Select Point's choice for lepp_, as inserted (section 8b): false when no
   // resolution of it can be inserted (the precision stop leaves the triangle).
-  bool settle(const Item& item, Choice& choice, RefineResult& result) {
-    if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_)) return true;
+  // *at: where the formula's point lies, when settle_choice found it there.
+  bool settle(const Item& item, Choice& choice, RefineResult& result, Located* at = nullptr) {
+    if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_, at)) return true;
     if (!other_tie_resolution(mesh_, item.tri, opt_.method, opt_.tie_search_states, lepp_, choice, obstacles_)) {
       ++result.precision_stops;
       stopped_.push_back({item, choice.rule, choice.point});
@@ -354,7 +359,7 @@ class Refiner {
   // Inserts the settled choice for item, as every order does: statistics, trace,
   // the new point's batch of processed bad triangles (fresh_), the edge floor.
   // False when an edge below the floor ends the run.
-  bool insert_choice(const Item& item, const Choice& choice, bool first, RefineResult& result) {
+  bool insert_choice(const Item& item, const Choice& choice, bool first, RefineResult& result, Located at = {}) {
     ++result.lepp_searches;
     result.lepp_triangles += static_cast<std::int64_t>(lepp_.path.size());
     if (first && sized_ && quality_.too_big(mesh_, item.tri)) ++result.area_refined;
@@ -362,7 +367,7 @@ class Refiner {
     if (opt_.trace) step = trace_step(item, lepp_, choice);
     int split_segment = -1;
     const int p = static_cast<int>(mesh_.pts.size());
-    around_ = inserter_.insert(mesh_, mem_, choice, split_segment);
+    around_ = inserter_.insert(mesh_, mem_, choice, split_segment, at);
     if (split_segment >= 0) obstacles_.on_split(mesh_, split_segment, p);
     ++steiner_;
     if (opt_.trace) {
@@ -375,10 +380,9 @@ class Refiner {
     bool below_floor = false;
     fresh_.clear();
     mesh_.for_each_in_star(around_, [&](int ti) {
-      const FTri& f = mesh_.t(ti);
-      if (floor_ > 0 && (sqlen_below(mesh_.p(p), mesh_.p(f.v(1)), floor_) || sqlen_below(mesh_.p(p), mesh_.p(f.v(2)), floor_)))
-        below_floor = true;
-      if (quality_.processed(mesh_, ti)) fresh_.push_back(keyed(mesh_, ti));
+      bool below = false;  // a spoke of ti (p at v[0]) below the floor
+      if (quality_.processed_made(mesh_, ti, floor_, &below)) append_keyed(fresh_, mesh_, ti);
+      below_floor = below_floor || below;
     });
     if (inserter_.record_creation) set_creation_ranks(fresh_);
     // A split off its line may keep a triangle beside its sliver: its edge ab is
@@ -441,6 +445,7 @@ class Refiner {
   void prefetch_around(const Lepp& lepp) const {
     for (int t : {lepp.t1, lepp.t2}) {
       if (t < 0) continue;
+      __builtin_prefetch(&mesh_.stamp[static_cast<std::size_t>(t)], 1);  // the split bumps it
       const FTri& f = mesh_.t(t);
       for (int i = 0; i < 3; ++i)
         if (f.nbr[i] >= 0) __builtin_prefetch(&mesh_.t(nbr_tri(f.nbr[i])));
@@ -476,6 +481,7 @@ class Refiner {
   double floor_ = 0;
   Clock::time_point start_;
   bool sized_ = false;
+  const IdLimits limits_ = id_limits();
   Lepp lepp_;
   std::vector<Keyed> fresh_;  // the last insertion's batch
   int around_ = -1;           // a triangle of the last insertion's star

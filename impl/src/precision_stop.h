@@ -3,6 +3,10 @@
 // rounded to doubles, be inserted where its insertion needs it? If not, the
 // bad triangle is left (listed as unimprovable at double precision).
 #pragma once
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
 #include "lepp/refine.h"
 #include "lepp_search.h"
 #include "point_selection.h"
@@ -35,6 +39,21 @@ inline bool split_insertable(const TriMesh& m, int ti, int i, const Point& p, Sl
 
 // p within the precision floor (a few ulps) of a vertex of the terminal pair.
 inline bool near_pair_vertex(const TriMesh& m, const Lepp& lepp, const Point& p) {
+  // below_precision_floor's quick answer once for the four vertices (t1's and t2's
+  // apex): a difference of at least M * 2^-50, M the largest magnitude of all five
+  // points, is at least 4 ulps of each pair's own largest magnitude (issue 40).
+  if (lepp.t1 >= 0 && (lepp.t2 < 0 || lepp.e2 >= 0)) {
+    const FTri& f = m.t(lepp.t1);
+    const Point* v[4] = {&m.p(f.v(0)), &m.p(f.v(1)), &m.p(f.v(2)), nullptr};
+    const int n = lepp.t2 >= 0 ? 4 : 3;
+    if (n == 4) v[3] = &m.p(m.t(lepp.t2).v(lepp.e2));
+    double big = std::max(std::fabs(p.x), std::fabs(p.y));
+    for (int k = 0; k < n; ++k) big = std::max(big, std::max(std::fabs(v[k]->x), std::fabs(v[k]->y)));
+    const double far = big * 0x1p-50;
+    bool apart = far >= DBL_MIN;
+    for (int k = 0; k < n; ++k) apart = apart && (std::fabs(p.x - v[k]->x) >= far || std::fabs(p.y - v[k]->y) >= far);
+    if (apart) return false;
+  }
   for (int t : {lepp.t1, lepp.t2}) {
     if (t < 0) continue;
     for (int i = 0; i < 3; ++i)
@@ -45,27 +64,35 @@ inline bool near_pair_vertex(const TriMesh& m, const Lepp& lepp, const Point& p)
 
 // Where p lies in the closed triangle ti: 1 strictly inside, 2 on the interior
 // of an unconstrained edge, 0 outside, -1 on a vertex or on a constrained edge.
-inline int place_in(const TriMesh& m, int ti, const Point& p) {
+// With `at`, where a point that can be inserted there lies (1 or 2).
+inline int place_in(const TriMesh& m, int ti, const Point& p, Located* at = nullptr) {
   const FTri& f = m.t(ti);
   int o[3];
   for (int i = 0; i < 3; ++i) o[i] = orient(m.p(f.v(next3(i))), m.p(f.v(prev3(i))), p);
   if (o[0] < 0 || o[1] < 0 || o[2] < 0) return 0;
   const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
-  if (zeros == 0) return 1;
+  if (zeros == 0) {
+    if (at) *at = Located{ti, -1};
+    return 1;
+  }
   if (zeros >= 2) return -1;
   const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
-  return f.seg(e) >= 0 || f.nbr[e] < 0 ? -1 : 2;
+  if (f.seg(e) >= 0 || f.nbr[e] < 0) return -1;
+  if (at) *at = Located{ti, e};
+  return 2;
 }
 
 // A point for a CDT insertion: in the closed terminal quad (t1, else t2),
 // off its vertices and off constrained edges, and farther than the precision
-// floor from the vertices of the pair.
-inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c, SliverObstacles& obstacles) {
+// floor from the vertices of the pair. With `at`, where such a point lies (the
+// insertion then need not locate it again); left as it was otherwise.
+inline bool choice_insertable(const TriMesh& m, const Lepp& lepp, const Choice& c, SliverObstacles& obstacles,
+                              Located* at = nullptr) {
   if (c.edge >= 0) return split_insertable(m, c.tri, c.edge, c.point, obstacles);
   if (near_pair_vertex(m, lepp, c.point)) return false;
-  const int in_first = place_in(m, c.tri, c.point);
+  const int in_first = place_in(m, c.tri, c.point, at);
   if (in_first != 0 || c.other < 0) return in_first > 0;
-  return place_in(m, c.other, c.point) > 0;
+  return place_in(m, c.other, c.point, at) > 0;
 }
 
 // When choice's point cannot be inserted: the doubles around the exact point
@@ -92,8 +119,11 @@ bool other_constrained_edge(TriMesh& m, const Lepp& lepp, Choice& c, SliverObsta
 // this order): the formula's double, its other roundings, Remark 10's other branch,
 // the other constrained second-longest edge. True iff one can be inserted (then c
 // holds it; else c is unchanged).
-inline bool settle_choice(TriMesh& m, const Lepp& lepp, Method method, Choice& c, SliverObstacles& obstacles) {
-  return choice_insertable(m, lepp, c, obstacles) || round_otherwise(m, lepp, c, obstacles) ||
+// With `at`, where the formula's double lies when it is the one (else not known).
+inline bool settle_choice(TriMesh& m, const Lepp& lepp, Method method, Choice& c, SliverObstacles& obstacles,
+                          Located* at = nullptr) {
+  if (at) *at = Located{};
+  return choice_insertable(m, lepp, c, obstacles, at) || round_otherwise(m, lepp, c, obstacles) ||
          other_branch(m, lepp, method, c, obstacles) || other_constrained_edge(m, lepp, c, obstacles);
 }
 

@@ -22,6 +22,7 @@ class RingQueue {
   std::size_t size() const { return size_; }
   const T& operator[](std::size_t i) const {
     const std::size_t at = head_ + i;
+    if (at < kBlock) return blocks_.front()[at];  // the front block: no deque index (the queue's prefetch)
     return blocks_[at / kBlock][at % kBlock];
   }
   const T& front() const { return blocks_.front()[head_]; }
@@ -34,9 +35,11 @@ class RingQueue {
     }
   }
   void push_back(const T& x) {
+    // No block lies past the one holding slot `at`: a new one is needed only at a
+    // block's start, and otherwise `at` is in the back block (no deque index).
     const std::size_t at = head_ + size_;
-    if (at / kBlock == blocks_.size()) blocks_.push_back(fresh());
-    blocks_[at / kBlock][at % kBlock] = x;
+    if (at % kBlock == 0 && at / kBlock == blocks_.size()) blocks_.push_back(fresh());
+    blocks_.back()[at % kBlock] = x;
     ++size_;
   }
   void push_front(const T& x) {

@@ -145,8 +145,24 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership) {
     mesh.triangles[start[static_cast<std::size_t>(r[0])]++] = r;
   }
   tris = {};
-  for (std::size_t v = 0; v < nv; ++v)
-    std::sort(mesh.triangles.begin() + (v ? start[v - 1] : 0), mesh.triangles.begin() + start[v]);
+  // A bucket holds about two triangles (a mesh has twice as many triangles as
+  // vertices), all with the same first id: an insertion sort on the other two in
+  // place of std::sort's calls for each; std::sort for a large one (a vertex of
+  // high degree, as in a fan left unrefined).
+  for (std::size_t v = 0; v < nv; ++v) {
+    Tri* const first = mesh.triangles.data() + (v ? start[v - 1] : 0);
+    Tri* const last = mesh.triangles.data() + start[v];
+    if (last - first > 16) {
+      std::sort(first, last);
+      continue;
+    }
+    for (Tri* i = first + (first != last); i < last; ++i) {
+      const Tri t = *i;
+      Tri* j = i;
+      for (; j > first && (t[1] < (j - 1)[0][1] || (t[1] == (j - 1)[0][1] && t[2] < (j - 1)[0][2])); --j) *j = *(j - 1);
+      *j = t;
+    }
+  }
   // Constrained edges: few; a plain sort in canonicalize's order.
   std::sort(edges.begin(), edges.end(), [](const ConstrainedEdge& x, const ConstrainedEdge& y) {
     return std::tie(x.a, x.b, x.segment) < std::tie(y.a, y.b, y.segment);
