@@ -55,6 +55,11 @@ LineReader::LineReader(std::string path, std::size_t block) : path_(std::move(pa
   buf_[0] = '\0';
   // A pipe is read whole at once: its lines cannot be counted apart (lines_left).
   seekable_ = std::filesystem::is_regular_file(path_, ec);
+  if (seekable_) {
+    const auto size = std::filesystem::file_size(path_, ec);
+    seekable_ = !ec;
+    size_ = static_cast<std::size_t>(size);
+  }
   if (!seekable_) read_all();
 }
 
@@ -85,6 +90,7 @@ std::size_t LineReader::refill(std::size_t i) {
   // buffer is filled, until a newline comes (the buffer doubled for a longer line) or the file ends.
   const std::size_t keep = i < end_ ? end_ - i : 0;
   std::memmove(buf_.get(), buf_.get() + i, keep);
+  base_ += end_ - keep;
   end_ = keep;
   whole_until_ = 0;
   while (whole_until_ == 0) {
@@ -121,6 +127,7 @@ void LineReader::read_all() {
   }
   eof_ = true;
   buf_[end_] = '\0';
+  size_ = end_;
 }
 
 namespace {
@@ -231,14 +238,25 @@ void LineReader::expect_item(std::vector<std::string_view>& tokens, const char* 
   if (!next(tokens)) fail(fmt::format("unexpected end of file: expected {} {} of {}", item, i, n));
 }
 
-std::size_t LineReader::lines_left() {
-  // The newlines in the buffer from here, then in the rest of the file, read through a
-  // small buffer of its own and the file's place restored: the tokens stay valid.
-  const bool buffered = pos_ < end_;
-  std::size_t lines = buffered ? count_newlines(buf_.get() + pos_, buf_.get() + end_) : 0;
+std::size_t LineReader::lines_left() const { return lines_from(base_ + pos_); }
+
+std::size_t LineReader::bytes_left() const {
+  const std::size_t at = base_ + pos_;
+  return at < size_ ? size_ - at : 0;
+}
+
+std::size_t LineReader::lines_from(std::size_t offset) const {
+  // The newlines in the buffer from offset, then in the rest of the file, read through a
+  // small buffer of its own and the file's place restored: the tokens stay valid. (An
+  // offset before the buffer: the file from there.)
+  const bool in_buffer = offset >= base_;
+  const bool buffered = in_buffer && offset - base_ < end_;
+  std::size_t lines = buffered ? count_newlines(buf_.get() + (offset - base_), buf_.get() + end_) : 0;
   bool more = false;
-  if (!eof_) {
+  if (!eof_ || !in_buffer) {
     const long at = std::ftell(file_);
+    if (!in_buffer && std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0)
+      throw InputError(path_, line_, "cannot read the file again (seek)");
     std::vector<char> block(std::size_t{1} << 16);
     for (std::size_t got; (got = std::fread(block.data(), 1, block.size(), file_)) > 0;) {
       lines += count_newlines(block.data(), block.data() + got);
@@ -250,8 +268,34 @@ std::size_t LineReader::lines_left() {
   return buffered || more ? lines + 1 : 0;
 }
 
-void LineReader::fail(const std::string& what) const { throw InputError(path_, line_, what); }
-void LineReader::fail_at(int line, const std::string& what) const { throw InputError(path_, line, what); }
+void LineReader::count_later(std::size_t n, const char* what) {
+  pending_n_ = 0;
+  // More items than bytes left (a line is at least one): certainly too many, counted now.
+  if (n > bytes_left() + 1) {
+    const std::size_t left = lines_left();
+    if (n > left) fail(fmt::format("{} is {} but the file has only {} more lines", what, n, left));
+  }
+  pending_n_ = n;
+  pending_line_ = line_;
+  pending_offset_ = base_ + pos_;
+  pending_what_ = what;
+}
+
+void LineReader::check_pending_count() const {
+  if (pending_n_ == 0) return;
+  const std::size_t left = lines_from(pending_offset_);
+  if (pending_n_ > left)
+    throw InputError(path_, pending_line_, fmt::format("{} is {} but the file has only {} more lines", pending_what_, pending_n_, left));
+}
+
+void LineReader::fail(const std::string& what) const {
+  check_pending_count();
+  throw InputError(path_, line_, what);
+}
+void LineReader::fail_at(int line, const std::string& what) const {
+  check_pending_count();
+  throw InputError(path_, line, what);
+}
 
 double LineReader::real(std::string_view token, const char* what) const {
   // Fast path: a plain finite decimal std::from_chars reads whole gives the value strtod

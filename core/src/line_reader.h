@@ -46,9 +46,19 @@ class LineReader {
   // Lines left to read, an upper bound on how many items a header may promise. Counts
   // the rest of the file (read again through a small buffer of its own, the reader's
   // place and tokens untouched).
-  std::size_t lines_left();
+  std::size_t lines_left() const;
+  // A header's count of items, n, one line each: an error unless n <= lines_left(), the
+  // message of header_count's (read_poly.cpp's count's) check. When the file's size
+  // allows n lines, the lines are not counted now (that read the whole file once more,
+  // issue 40) but only if an error comes before the n items are read: fail() then reports
+  // this header's error instead when the count is too large, as the check at the header did.
+  void count_later(std::size_t n, const char* what);
+  // The items were read: the count was right (n items took n lines at least).
+  void count_kept() { pending_n_ = 0; }
+  // An upper bound on the bytes left, from the file's size (no reading).
+  std::size_t bytes_left() const;
 
-  [[noreturn]] void fail(const std::string& what) const;
+  [[noreturn]] void fail(const std::string& what) const;  // the line's, or a count_later header's
   [[noreturn]] void fail_at(int line, const std::string& what) const;  // an earlier line
   double real(std::string_view token, const char* what) const;          // finite double
   std::int64_t integer(std::string_view token, const char* what) const;
@@ -64,6 +74,10 @@ class LineReader {
   void grow();  // doubles the buffer, its bytes kept
   // Reads the rest of the file into the buffer (a pipe, whose lines cannot be counted apart).
   void read_all();
+  // The lines of the file from byte `offset` on (lines_left's count).
+  std::size_t lines_from(std::size_t offset) const;
+  // Throws the count_later header's error if its count is too large.
+  void check_pending_count() const;
 
   std::string path_;
   std::FILE* file_ = nullptr;
@@ -79,6 +93,13 @@ class LineReader {
   bool eof_ = false;
   std::size_t pos_ = 0;
   int line_ = 0;
+  std::size_t base_ = 0;  // the file's offset of buf_[0]
+  std::size_t size_ = 0;  // the file's size (a pipe: its bytes, read whole)
+  // count_later's header: n (0: none), its line, the file's offset after it, what it counts.
+  std::size_t pending_n_ = 0;
+  int pending_line_ = 0;
+  std::size_t pending_offset_ = 0;
+  const char* pending_what_ = "";
 };
 
 }  // namespace lepp::detail

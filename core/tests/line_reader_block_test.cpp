@@ -172,6 +172,51 @@ TEST_F(LineReaderBlock, LargeFilesReadPastManyBlocks) {
   }
 }
 
+// A header's count larger than the lines left, checked only when reading fails
+// (LineReader::count_later): the header's error whatever comes first after it, as when the
+// count was checked at the header; a count that is right keeps the error of the line.
+TEST_F(LineReaderBlock, CountsCheckedLateReportTheHeader) {
+  const std::string node = "4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n";
+  const std::string prefix = (dir_ / "m").string();
+  auto mesh_error = [&](const std::string& n, const std::string& e) {
+    write("m.node", n);
+    write("m.ele", e);
+    std::string errors[2];
+    for (int threads : {1, 2})
+      try {
+        read_mesh(prefix, threads);
+      } catch (const InputError& error) {
+        errors[threads - 1] = std::string(error.what()).substr(prefix.size());
+      }
+    EXPECT_EQ(errors[0], errors[1]);  // the same on any thread count
+    return errors[0];
+  };
+  const std::string tri = "1 1 2 3\n2 2 4 3\n";
+  // 3 promised, 2 lines and the empty one after the last newline: 3 lines, no error at the
+  // header; the end of the file is the error.
+  EXPECT_EQ(mesh_error(node, "3 3 0\n" + tri), ".ele:3: unexpected end of file: expected triangle 3 of 3");
+  // 4 promised, 3 lines: the header's error, not the end of the file's, nor a bad line's.
+  EXPECT_EQ(mesh_error(node, "4 3 0\n" + tri), ".ele:1: triangle count is 4 but the file has only 3 more lines");
+  EXPECT_EQ(mesh_error(node, "4 3 0\n1 1 2 3\n2 2 4 9\n"), ".ele:1: triangle count is 4 but the file has only 3 more lines");
+  EXPECT_EQ(mesh_error(node, "4 3 0\n1 1 2 x\n2 2 4 3\n"), ".ele:1: triangle count is 4 but the file has only 3 more lines");
+  EXPECT_EQ(mesh_error(node, "4 4 0\n" + tri), ".ele:1: triangle count is 4 but the file has only 3 more lines");  // the header's next field
+  // Right counts: the line's own error.
+  EXPECT_EQ(mesh_error(node, "2 3 0\n1 1 2 3\n2 2 4 9\n"), ".ele:3: vertex id 9 out of range (1 to 4)");
+  EXPECT_EQ(mesh_error(node, "2 4 0\n" + tri), ".ele:1: nodes per triangle must be 3 or 6");
+  EXPECT_EQ(mesh_error(node, "-1 3 0\n" + tri), ".ele:1: triangle count is -1 but the file has only 3 more lines");
+  EXPECT_EQ(mesh_error(node, "2 3 0\n" + tri), "");
+  // The .node: its vertex count, and then the .ele is not read.
+  EXPECT_EQ(mesh_error("6 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n", "2 3 0\n" + tri),
+            ".node:1: vertex count is 6 but the file has only 5 more lines");
+  EXPECT_EQ(mesh_error("6 2 0 0\n1 0 0\n2 1 0\n3 0 1\n5 1 1\n", "2 3 0\n" + tri),
+            ".node:1: vertex count is 6 but the file has only 5 more lines");
+  EXPECT_EQ(mesh_error("6 3 0 0\n1 0 0\n2 1 0\n3 0 1\n5 1 1\n", "2 3 0\n" + tri),
+            ".node:1: vertex count is 6 but the file has only 5 more lines");
+  EXPECT_EQ(mesh_error("4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n5 1 1\n", "2 3 0\n" + tri),
+            ".node:5: vertex number 5 out of order (expected 4)");
+  EXPECT_EQ(mesh_error("-4 2 0 0\n1 0 0\n", "2 3 0\n" + tri), ".node:1: vertex count is negative (-4)");
+}
+
 // A pipe cannot be read twice: it is read whole, and its lines counted there.
 TEST_F(LineReaderBlock, PipeIsReadWhole) {
   const std::string fifo = (dir_ / "p.node").string();
