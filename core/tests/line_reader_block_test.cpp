@@ -200,6 +200,9 @@ TEST_F(LineReaderBlock, CountsCheckedLateReportTheHeader) {
   EXPECT_EQ(mesh_error(node, "4 3 0\n1 1 2 3\n2 2 4 9\n"), ".ele:1: triangle count is 4 but the file has only 3 more lines");
   EXPECT_EQ(mesh_error(node, "4 3 0\n1 1 2 x\n2 2 4 3\n"), ".ele:1: triangle count is 4 but the file has only 3 more lines");
   EXPECT_EQ(mesh_error(node, "4 4 0\n" + tri), ".ele:1: triangle count is 4 but the file has only 3 more lines");  // the header's next field
+  // A blank line right after the header is one of the lines left.
+  EXPECT_EQ(mesh_error(node, "4 3 0\n\n" + tri), ".ele:4: unexpected end of file: expected triangle 3 of 4");
+  EXPECT_EQ(mesh_error(node, "5 3 0\n\n" + tri), ".ele:1: triangle count is 5 but the file has only 4 more lines");
   // Right counts: the line's own error.
   EXPECT_EQ(mesh_error(node, "2 3 0\n1 1 2 3\n2 2 4 9\n"), ".ele:3: vertex id 9 out of range (1 to 4)");
   EXPECT_EQ(mesh_error(node, "2 4 0\n" + tri), ".ele:1: nodes per triangle must be 3 or 6");
