@@ -47,9 +47,9 @@ LineReader::LineReader(std::string path, std::size_t block) : path_(std::move(pa
   // A directory opens as an empty stream on Linux: name it rather than report an empty file.
   std::error_code ec;
   if (std::filesystem::is_directory(path_, ec)) throw InputError(path_, 0, "is a directory, not a file");
-  file_ = std::fopen(path_.c_str(), "rb");
+  file_.reset(std::fopen(path_.c_str(), "rb"));
   if (!file_) throw InputError(path_, 0, "cannot open file");
-  std::setvbuf(file_, nullptr, _IONBF, 0);  // the reads go straight into buf_, not through stdio's buffer
+  std::setvbuf(file_.get(), nullptr, _IONBF, 0);  // the reads go straight into buf_, not through stdio's buffer
   capacity_ = block_;
   buf_.reset(new char[capacity_ + 1]);
   buf_[0] = '\0';
@@ -61,10 +61,6 @@ LineReader::LineReader(std::string path, std::size_t block) : path_(std::move(pa
     size_ = static_cast<std::size_t>(size);
   }
   if (!seekable_) read_all();
-}
-
-LineReader::~LineReader() {
-  if (file_) std::fclose(file_);
 }
 
 namespace {
@@ -96,7 +92,7 @@ std::size_t LineReader::refill(std::size_t i) {
   while (whole_until_ == 0) {
     if (end_ == capacity_) grow();
     const std::size_t from = end_;
-    end_ += std::fread(buf_.get() + end_, 1, capacity_ - end_, file_);
+    end_ += std::fread(buf_.get() + end_, 1, capacity_ - end_, file_.get());
     if (end_ == from) {  // the end of the file (a read error too, as a short file, as before)
       eof_ = true;
       break;
@@ -121,7 +117,7 @@ void LineReader::grow() {
 void LineReader::read_all() {
   for (;;) {
     if (end_ == capacity_) grow();
-    const std::size_t got = std::fread(buf_.get() + end_, 1, capacity_ - end_, file_);
+    const std::size_t got = std::fread(buf_.get() + end_, 1, capacity_ - end_, file_.get());
     if (got == 0) break;
     end_ += got;
   }
@@ -254,16 +250,16 @@ std::size_t LineReader::lines_from(std::size_t offset) const {
   std::size_t lines = buffered ? count_newlines(buf_.get() + (offset - base_), buf_.get() + end_) : 0;
   bool more = false;
   if (!eof_ || !in_buffer) {
-    const long at = std::ftell(file_);
-    if (!in_buffer && std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0)
+    const long at = std::ftell(file_.get());
+    if (!in_buffer && std::fseek(file_.get(), static_cast<long>(offset), SEEK_SET) != 0)
       throw InputError(path_, line_, "cannot read the file again (seek)");
     std::vector<char> block(std::size_t{1} << 16);
-    for (std::size_t got; (got = std::fread(block.data(), 1, block.size(), file_)) > 0;) {
+    for (std::size_t got; (got = std::fread(block.data(), 1, block.size(), file_.get())) > 0;) {
       lines += count_newlines(block.data(), block.data() + got);
       more = true;
     }
-    std::clearerr(file_);
-    if (at < 0 || std::fseek(file_, at, SEEK_SET) != 0) throw InputError(path_, line_, "cannot read the file again (seek)");
+    std::clearerr(file_.get());
+    if (at < 0 || std::fseek(file_.get(), at, SEEK_SET) != 0) throw InputError(path_, line_, "cannot read the file again (seek)");
   }
   return buffered || more ? lines + 1 : 0;
 }

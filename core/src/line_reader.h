@@ -21,9 +21,6 @@ class LineReader {
   // Throws InputError if the file cannot be opened. `block`: the buffer's size (the tests
   // make it a few bytes, so that numbers and lines are split across reads).
   explicit LineReader(std::string path, std::size_t block = kBlock);
-  LineReader(const LineReader&) = delete;
-  LineReader& operator=(const LineReader&) = delete;
-  ~LineReader();
 
   // Next non-blank line's tokens; false at end of file. The tokens view the buffer: they
   // stay valid until the next call of next(), expect(), expect_item() or plain().
@@ -80,7 +77,10 @@ class LineReader {
   void check_pending_count() const;
 
   std::string path_;
-  std::FILE* file_ = nullptr;
+  struct Close {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<std::FILE, Close> file_;  // closed however the reader ends (a throwing constructor too)
   bool seekable_ = false;
   std::size_t block_;
   // buf_[0, end_) holds the file's bytes not yet consumed from pos_ on (and some before),
