@@ -12,7 +12,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -42,24 +43,87 @@ constexpr bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 
 }  // namespace
 
-LineReader::LineReader(std::string path) : path_(std::move(path)) {
+LineReader::LineReader(std::string path, std::size_t block) : path_(std::move(path)), block_(std::max<std::size_t>(block, 1)) {
   // A directory opens as an empty stream on Linux: name it rather than report an empty file.
   std::error_code ec;
   if (std::filesystem::is_directory(path_, ec)) throw InputError(path_, 0, "is a directory, not a file");
-  std::ifstream in(path_, std::ios::binary);
-  if (!in) throw InputError(path_, 0, "cannot open file");
-  // Read in one piece where the size is known (a regular file), else through a buffer (a pipe).
-  const auto size = std::filesystem::file_size(path_, ec);
-  if (!ec) {
-    text_.resize(static_cast<std::size_t>(size));
-    in.read(text_.data(), static_cast<std::streamsize>(size));
-    text_.resize(static_cast<std::size_t>(in.gcount()));
-    if (in.gcount() == static_cast<std::streamsize>(size) && in.peek() == std::ifstream::traits_type::eof()) return;
-    in.clear();  // the file grew while read: take the rest too
+  file_.reset(std::fopen(path_.c_str(), "rb"));
+  if (!file_) throw InputError(path_, 0, "cannot open file");
+  std::setvbuf(file_.get(), nullptr, _IONBF, 0);  // the reads go straight into buf_, not through stdio's buffer
+  capacity_ = block_;
+  buf_.reset(new char[capacity_ + 1]);
+  buf_[0] = '\0';
+  // A pipe is read whole at once: its lines cannot be counted apart (lines_left).
+  seekable_ = std::filesystem::is_regular_file(path_, ec);
+  if (seekable_) {
+    const auto size = std::filesystem::file_size(path_, ec);
+    seekable_ = !ec;
+    size_ = static_cast<std::size_t>(size);
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  text_ += buffer.str();
+  if (!seekable_) read_all();
+}
+
+namespace {
+
+// The newlines in [at, end), counted 64 bytes at a time in a byte counter, a loop the
+// compiler turns into vector compares (memchr stopped at every line: a header's check
+// read the file at a few instructions a byte).
+std::size_t count_newlines(const char* at, const char* const end) {
+  std::size_t lines = 0;
+  for (; end - at >= 64; at += 64) {
+    unsigned char block = 0;
+    for (int k = 0; k < 64; ++k) block = static_cast<unsigned char>(block + (at[k] == '\n'));
+    lines += block;
+  }
+  for (; at != end; ++at) lines += *at == '\n';
+  return lines;
+}
+
+}  // namespace
+
+std::size_t LineReader::refill(std::size_t i) {
+  // The line from i has no newline in the buffer: it moves to the front, the rest of the
+  // buffer is filled, until a newline comes (the buffer doubled for a longer line) or the file ends.
+  const std::size_t keep = i < end_ ? end_ - i : 0;
+  std::memmove(buf_.get(), buf_.get() + i, keep);
+  base_ += end_ - keep;
+  end_ = keep;
+  whole_until_ = 0;
+  while (whole_until_ == 0) {
+    if (end_ == capacity_) grow();
+    const std::size_t from = end_;
+    end_ += std::fread(buf_.get() + end_, 1, capacity_ - end_, file_.get());
+    if (end_ == from) {  // the end of the file (a read error too, as a short file, as before)
+      eof_ = true;
+      break;
+    }
+    for (std::size_t k = end_; k > from; --k)
+      if (buf_[k - 1] == '\n') {
+        whole_until_ = k;
+        break;
+      }
+  }
+  buf_[end_] = '\0';
+  return 0;
+}
+
+void LineReader::grow() {
+  std::unique_ptr<char[]> bigger(new char[2 * capacity_ + 1]);
+  std::memcpy(bigger.get(), buf_.get(), end_);
+  buf_ = std::move(bigger);
+  capacity_ *= 2;
+}
+
+void LineReader::read_all() {
+  for (;;) {
+    if (end_ == capacity_) grow();
+    const std::size_t got = std::fread(buf_.get() + end_, 1, capacity_ - end_, file_.get());
+    if (got == 0) break;
+    end_ += got;
+  }
+  eof_ = true;
+  buf_[end_] = '\0';
+  size_ = end_;
 }
 
 namespace {
@@ -85,12 +149,15 @@ bool LineReader::next(std::vector<std::string_view>& tokens) {
   tokens.clear();
   // One pass over each line: tokens end at a space (a newline is one), a '#' ends the
   // line's content. (A search for the newline, then for '#', then the split, each went
-  // over the line: reading a mesh is mostly this loop.)
-  const char* const text = text_.c_str();
-  const std::size_t size = text_.size();
-  auto cls = [text](std::size_t i) { return kByteClasses.of[static_cast<unsigned char>(text[i])]; };
+  // over the line: reading a mesh is mostly this loop.) Each line is whole in the
+  // buffer before it is split: the loops below stop at its newline or the file's end.
   std::size_t i = pos_;
-  while (i < size) {
+  for (;;) {
+    i = whole_line(i);
+    const char* const text = buf_.get();
+    const std::size_t size = end_;
+    if (i >= size) break;  // the end of the file
+    auto cls = [text](std::size_t k) { return kByteClasses.of[static_cast<unsigned char>(text[k])]; };
     ++line_;
     for (;;) {
       while (cls(i) == kSpace) ++i;
@@ -118,8 +185,9 @@ bool LineReader::next(std::vector<std::string_view>& tokens) {
 }
 
 bool LineReader::plain(const char* kinds, std::int64_t* ints, double* reals) {
-  const char* const text = text_.c_str();
-  const std::size_t size = text_.size();
+  pos_ = whole_line(pos_);  // the same place in the file, the line whole in the buffer
+  const char* const text = buf_.get();
+  const std::size_t size = end_;
   if (pos_ >= size) return false;
   auto cls = [text](std::size_t i) { return kByteClasses.of[static_cast<unsigned char>(text[i])]; };
   // A field ends at a space, the newline or the end of the text (not at a '#' or a NUL
@@ -166,24 +234,64 @@ void LineReader::expect_item(std::vector<std::string_view>& tokens, const char* 
   if (!next(tokens)) fail(fmt::format("unexpected end of file: expected {} {} of {}", item, i, n));
 }
 
-std::size_t LineReader::lines_left() const {
-  if (pos_ >= text_.size()) return 0;
-  // The newlines counted 64 bytes at a time in a byte counter, a loop the compiler turns
-  // into vector compares (memchr stopped at every line: a header's check read the file
-  // at a few instructions a byte).
-  std::size_t lines = 1;
-  const char *at = text_.data() + pos_, *const end = text_.data() + text_.size();
-  for (; end - at >= 64; at += 64) {
-    unsigned char block = 0;
-    for (int k = 0; k < 64; ++k) block = static_cast<unsigned char>(block + (at[k] == '\n'));
-    lines += block;
-  }
-  for (; at != end; ++at) lines += *at == '\n';
-  return lines;
+std::size_t LineReader::lines_left() const { return lines_from(base_ + pos_); }
+
+std::size_t LineReader::bytes_left() const {
+  const std::size_t at = base_ + pos_;
+  return at < size_ ? size_ - at : 0;
 }
 
-void LineReader::fail(const std::string& what) const { throw InputError(path_, line_, what); }
-void LineReader::fail_at(int line, const std::string& what) const { throw InputError(path_, line, what); }
+std::size_t LineReader::lines_from(std::size_t offset) const {
+  // The newlines in the buffer from offset, then in the rest of the file, read through a
+  // small buffer of its own and the file's place restored: the tokens stay valid. (An
+  // offset before the buffer: the file from there.)
+  const bool in_buffer = offset >= base_;
+  const bool buffered = in_buffer && offset - base_ < end_;
+  std::size_t lines = buffered ? count_newlines(buf_.get() + (offset - base_), buf_.get() + end_) : 0;
+  bool more = false;
+  if (!eof_ || !in_buffer) {
+    const long at = std::ftell(file_.get());
+    if (!in_buffer && std::fseek(file_.get(), static_cast<long>(offset), SEEK_SET) != 0)
+      throw InputError(path_, line_, "cannot read the file again (seek)");
+    std::vector<char> block(std::size_t{1} << 16);
+    for (std::size_t got; (got = std::fread(block.data(), 1, block.size(), file_.get())) > 0;) {
+      lines += count_newlines(block.data(), block.data() + got);
+      more = true;
+    }
+    std::clearerr(file_.get());
+    if (at < 0 || std::fseek(file_.get(), at, SEEK_SET) != 0) throw InputError(path_, line_, "cannot read the file again (seek)");
+  }
+  return buffered || more ? lines + 1 : 0;
+}
+
+void LineReader::count_later(std::size_t n, const char* what) {
+  pending_n_ = 0;
+  // More items than bytes left (a line is at least one): certainly too many, counted now.
+  if (n > bytes_left() + 1) {
+    const std::size_t left = lines_left();
+    if (n > left) fail(fmt::format("{} is {} but the file has only {} more lines", what, n, left));
+  }
+  pending_n_ = n;
+  pending_line_ = line_;
+  pending_offset_ = base_ + pos_;
+  pending_what_ = what;
+}
+
+void LineReader::check_pending_count() const {
+  if (pending_n_ == 0) return;
+  const std::size_t left = lines_from(pending_offset_);
+  if (pending_n_ > left)
+    throw InputError(path_, pending_line_, fmt::format("{} is {} but the file has only {} more lines", pending_what_, pending_n_, left));
+}
+
+void LineReader::fail(const std::string& what) const {
+  check_pending_count();
+  throw InputError(path_, line_, what);
+}
+void LineReader::fail_at(int line, const std::string& what) const {
+  check_pending_count();
+  throw InputError(path_, line, what);
+}
 
 double LineReader::real(std::string_view token, const char* what) const {
   // Fast path: a plain finite decimal std::from_chars reads whole gives the value strtod

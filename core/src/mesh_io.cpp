@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // PREFIX.node/.ele/.poly (and .unimprovable) in and out, as Triangle writes them.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -30,6 +31,15 @@ std::size_t header_count(LineReader& in, std::string_view token, const char* wha
   std::int64_t n = in.integer(token, what);
   if (n < 0 || static_cast<std::size_t>(n) > in.lines_left())
     in.fail(fmt::format("{} is {} but the file has only {} more lines", what, n, in.lines_left()));
+  return static_cast<std::size_t>(n);
+}
+
+// header_count for a section of n item lines read one by one: checked against the lines
+// left only if an error comes first (LineReader::count_later), with the same message.
+std::size_t header_count_later(LineReader& in, std::string_view token, const char* what) {
+  std::int64_t n = in.integer(token, what);
+  if (n < 0) in.fail(fmt::format("{} is {} but the file has only {} more lines", what, n, in.lines_left()));
+  in.count_later(static_cast<std::size_t>(n), what);
   return static_cast<std::size_t>(n);
 }
 
@@ -75,7 +85,7 @@ std::vector<Tri> read_ele(const std::string& path, VertexId&& vertex) {
   Tokens t;
   in.expect(t, "triangle header (count, nodes per triangle, attributes)");
   in.fields(t, 1, 3, "triangle header (count, nodes per triangle, attributes)");
-  std::size_t nt = header_count(in, t[0], "triangle count");
+  std::size_t nt = header_count_later(in, t[0], "triangle count");
   std::int64_t corners = t.size() >= 2 ? in.integer(t[1], "nodes per triangle") : 3;
   if (corners != 3 && corners != 6) in.fail("nodes per triangle must be 3 or 6");
   std::int64_t attributes = t.size() >= 3 ? in.integer(t[2], "attribute count") : 0;
@@ -86,7 +96,7 @@ std::vector<Tri> read_ele(const std::string& path, VertexId&& vertex) {
   std::int64_t corner[3];
   Tri tri;
   std::vector<Tri> triangles;
-  triangles.reserve(nt);
+  triangles.reserve(std::min(nt, in.bytes_left() / 4 + 1));  // a line is 8 bytes at least: nt unless the count is wrong
   for (std::size_t i = 0; i < nt; ++i) {
     if (in.plain(kinds.c_str(), corner, nullptr)) {
       for (std::size_t k = 0; k < 3; ++k) tri[k] = vertex(in, corner[k]);
@@ -98,6 +108,7 @@ std::vector<Tri> read_ele(const std::string& path, VertexId&& vertex) {
     }
     triangles.push_back(tri);
   }
+  in.count_kept();
   return triangles;
 }
 

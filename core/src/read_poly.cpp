@@ -107,16 +107,21 @@ void header(LineReader& in, Leniency& lenient, const Tokens& t, std::size_t need
 // Reads the vertex section: header already in `header`. Sets first index (0 or 1).
 void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& pslg, int& first) {
   header(in, lenient, head, 1, 4, "vertex header (count, dimension, attributes, markers)");
-  std::size_t n = count(in, head[0], "vertex count");
+  // count()'s check, made only if an error comes before the n lines are read (LineReader::count_later).
+  const std::int64_t count_read = in.integer(head[0], "vertex count");
+  if (count_read < 0) in.fail(fmt::format("vertex count is negative ({})", count_read));
+  const std::size_t n = static_cast<std::size_t>(count_read);
+  in.count_later(n, "vertex count");
   if (head.size() >= 2 && in.integer(head[1], "dimension") != 2) in.fail("dimension must be 2");
   std::int64_t attributes = head.size() >= 3 ? in.integer(head[2], "attribute count") : 0;
   if (attributes < 0 || attributes > 1000) in.fail(fmt::format("attribute count {} is out of range", attributes));
   std::int64_t markers = head.size() >= 4 ? in.integer(head[3], "boundary marker count") : 0;
   if (markers != 0 && markers != 1) in.fail("boundary marker count must be 0 or 1");
   const std::size_t fields = 3 + static_cast<std::size_t>(attributes) + static_cast<std::size_t>(markers);
-  pslg.vertices.reserve(n);
-  pslg.vertex_lines.reserve(n);
-  if (markers) pslg.vertex_markers.reserve(n);
+  const std::size_t room = std::min(n, in.bytes_left() / 4 + 1);  // a line is 6 bytes at least: n unless the count is wrong
+  pslg.vertices.reserve(room);
+  pslg.vertex_lines.reserve(room);
+  if (markers) pslg.vertex_markers.reserve(room);
   Section section(in, lenient, 3, fields, "vertex line (number, x, y, attributes, marker)");
   // The plain line's kinds: the number, x, y, the attributes, the marker.
   const std::string kinds = "irr" + std::string(static_cast<std::size_t>(attributes), 'r') + (markers ? "i" : "");
@@ -150,6 +155,7 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
     }
     pslg.vertex_lines.push_back(in.line());
   }
+  in.count_kept();
   section.done();
 }
 
