@@ -19,9 +19,18 @@ constexpr char kPairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-// The significand's digits written right to left so that the last ends just before
-// `end`; returns the first digit's place.
-char* digits_before(char* end, std::uint64_t v) {
+// The digits of v < 10^8, exactly 8 of them (leading zeros kept), ending just before `end`.
+void eight_digits_before(char* end, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) {
+    end -= 2;
+    std::memcpy(end, kPairs + 2 * (v % 100), 2);
+    v /= 100;
+  }
+}
+
+// The digits of v < 10^9 without leading zeros, ending just before `end`; returns the
+// first digit's place.
+char* digits_before(char* end, std::uint32_t v) {
   while (v >= 100) {
     end -= 2;
     std::memcpy(end, kPairs + 2 * (v % 100), 2);
@@ -34,6 +43,14 @@ char* digits_before(char* end, std::uint64_t v) {
     *--end = static_cast<char>('0' + v);
   }
   return end;
+}
+
+// The significand's digits (at most 17) ending just before `end`; returns the first
+// digit's place. Its low 8 digits split off once, the rest in 32-bit arithmetic.
+char* digits_before(char* end, std::uint64_t v) {
+  if (v < 100000000) return digits_before(end, static_cast<std::uint32_t>(v));
+  eight_digits_before(end, static_cast<std::uint32_t>(v % 100000000));
+  return digits_before(end - 8, static_cast<std::uint32_t>(v / 100000000));
 }
 
 }  // namespace
