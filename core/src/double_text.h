@@ -8,7 +8,7 @@ namespace lepp::detail {
 
 // Writes at `at` exactly what fmt::format("{}", x) gives (at most 24 characters) and
 // returns the end. Normal doubles that fmt 9 writes in fixed notation (decimal exponent
-// from -5 to 15) are laid out here; zero, subnormals, infinities, NaN and exponent
+// from -4 to 15) are laid out here; zero, subnormals, infinities, NaN and exponent
 // notation are handed to fmt.
 char* write_double(char* at, double x);
 
