@@ -17,6 +17,7 @@
 #include "lepp/io.h"
 #include "lepp/mesh_read.h"
 #include "block_file.h"
+#include "double_text.h"
 #include "line_reader.h"
 #include "node_reader.h"
 
@@ -207,8 +208,15 @@ void write_node_file(const std::string& prefix, const Mesh& mesh) {
   constexpr std::size_t kNodeLine = 128;
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
     out.line(kNodeLine, [&](char* at) {
-      return fmt::format_to(at, FMT_COMPILE("{} {} {} {}\n"), i + 1, mesh.vertices[i].x, mesh.vertices[i].y,
-                            i < mesh.input_vertices ? 1 : 0);
+      // The coordinates as fmt's "{}" writes them, by a cheaper layout (double_text.h).
+      at = fmt::format_to(at, FMT_COMPILE("{} "), i + 1);
+      at = detail::write_double(at, mesh.vertices[i].x);
+      *at++ = ' ';
+      at = detail::write_double(at, mesh.vertices[i].y);
+      *at++ = ' ';
+      *at++ = i < mesh.input_vertices ? '1' : '0';
+      *at++ = '\n';
+      return at;
     });
   out.close();
 }
