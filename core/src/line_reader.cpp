@@ -43,24 +43,24 @@ constexpr bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 
 }  // namespace
 
-LineReader::LineReader(std::string path, std::size_t block) : path_(std::move(path)), block_(std::max<std::size_t>(block, 1)) {
+LineReader::LineReader(std::string path, std::size_t block)
+    : path_(std::move(path)), capacity_(std::max<std::size_t>(block, 1)) {
   // A directory opens as an empty stream on Linux: name it rather than report an empty file.
   std::error_code ec;
   if (std::filesystem::is_directory(path_, ec)) throw InputError(path_, 0, "is a directory, not a file");
   file_.reset(std::fopen(path_.c_str(), "rb"));
   if (!file_) throw InputError(path_, 0, "cannot open file");
   std::setvbuf(file_.get(), nullptr, _IONBF, 0);  // the reads go straight into buf_, not through stdio's buffer
-  capacity_ = block_;
   buf_.reset(new char[capacity_ + 1]);
   buf_[0] = '\0';
   // A pipe is read whole at once: its lines cannot be counted apart (lines_left).
-  seekable_ = std::filesystem::is_regular_file(path_, ec);
-  if (seekable_) {
+  bool seekable = std::filesystem::is_regular_file(path_, ec);
+  if (seekable) {
     const auto size = std::filesystem::file_size(path_, ec);
-    seekable_ = !ec;
+    seekable = !ec;
     size_ = static_cast<std::size_t>(size);
   }
-  if (!seekable_) read_all();
+  if (!seekable) read_all();
 }
 
 namespace {

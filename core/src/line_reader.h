@@ -81,8 +81,6 @@ class LineReader {
     void operator()(std::FILE* f) const { std::fclose(f); }
   };
   std::unique_ptr<std::FILE, Close> file_;  // closed however the reader ends (a throwing constructor too)
-  bool seekable_ = false;
-  std::size_t block_;
   // buf_[0, end_) holds the file's bytes not yet consumed from pos_ on (and some before),
   // then a NUL (a sentinel the loops stop at); whole_until_ is one past the last '\n' in
   // it (0: none), so a line that starts before it is whole.

@@ -20,10 +20,6 @@ double average_lepp_size(const RefineResult& result) {
 
 namespace {
 double len(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-double squared_length(const Point& a, const Point& b) {
-  const double dx = a.x - b.x, dy = a.y - b.y;
-  return dx * dx + dy * dy;
-}
 // Twice the area of abc: one expression for every measure, so they see the same double.
 double doubled_area(const Point& a, const Point& b, const Point& c) {
   return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
@@ -57,18 +53,46 @@ namespace {
 // The shortcut's margins (smallest_angle below).
 constexpr double kShorter = 1 - 0x1p-10, kNotThin = 0x1p-20;
 
-// min_angle_deg from the triangle's squared sides ab = |a - b|^2, bc, ca, as
-// squared_length computes them.
-inline double smallest_angle(const Point& a, const Point& b, const Point& c, double ab, double bc, double ca) {
+// The sides of triangle abc as vectors, dab = b - a, dbc = c - b, dca = a - c
+// (scaled_direction's differences), and their squares ab, bc, ca (|a - b|^2 ...: a
+// difference's sign does not change its square).
+struct Sides {
+  Point dab, dbc, dca;
+  double ab = 0, bc = 0, ca = 0;
+};
+inline Sides sides_of(const Point& a, const Point& b, const Point& c) {
+  Sides s{{b.x - a.x, b.y - a.y}, {c.x - b.x, c.y - b.y}, {a.x - c.x, a.y - c.y}};
+  s.ab = s.dab.x * s.dab.x + s.dab.y * s.dab.y;
+  s.bc = s.dbc.x * s.dbc.x + s.dbc.y * s.dbc.y;
+  s.ca = s.dca.x * s.dca.x + s.dca.y * s.dca.y;
+  return s;
+}
+
+// A side's vector as scaled_direction scales it, where the three squares are
+// safe_square: each side's larger component m then lies in [2^-451, 2^451) (a smaller
+// m would make the square below 2^-900, a larger one above 2^900; rounding is
+// monotonic), where scaled_direction takes its power-of-two branch, computed here alone.
+inline Point scaled_safe_side(const Point& d) {
+  const double scale = detail::power_of_two(-detail::exponent_of(std::max(std::abs(d.x), std::abs(d.y))));
+  return {d.x * scale, d.y * scale};
+}
+
+// min_angle_deg of triangle abc from its sides (sides_of).
+inline double smallest_angle(const Point& a, const Point& b, const Point& c, const Sides& s) {
   // The side clearly shortest (its square below the others' by 2^-10) and the angle
   // opposite it not thin (sine at least about 2^-20): that angle is then smaller than
   // the other two by more than about 2^-31 radians (law of sines), far beyond the ulps
   // of the computed degrees, so it is the minimum of the three bit for bit, from two
-  // scaled sides, no comparisons (issue 40: most triangles of a mesh).
-  if (safe_square(ab) && safe_square(bc) && safe_square(ca)) {
+  // scaled sides, no comparisons (issue 40: most triangles of a mesh). The sides'
+  // vectors are inline what corner_angle_args computes (the same doubles).
+  if (safe_square(s.ab) && safe_square(s.bc) && safe_square(s.ca)) {
+    const double ab = s.ab, bc = s.bc, ca = s.ca;
     const int k = bc < kShorter * std::min(ab, ca) ? 0 : ca < kShorter * std::min(ab, bc) ? 1 : ab < kShorter * std::min(bc, ca) ? 2 : -1;
     if (k >= 0) {
-      const AngleArgs at = detail::corner_args(a, b, c, k);
+      // corner_args: corner 0 from ab and -ca, 1 from bc and -ab, 2 from ca and -bc.
+      const Point& from = k == 0 ? s.dab : k == 1 ? s.dbc : s.dca;
+      const Point& to = k == 0 ? s.dca : k == 1 ? s.dab : s.dbc;
+      const AngleArgs at = detail::args_of(scaled_safe_side(from), detail::negated(scaled_safe_side(to)));
       if (std::abs(at.cross) >= kNotThin * (std::abs(at.dot) + std::abs(at.cross))) return std::abs(detail::degrees_of(at));
     }
   }
@@ -82,37 +106,9 @@ inline double smallest_angle(const Point& a, const Point& b, const Point& c, dou
     return std::abs(signed_degrees(at[k]));
   return std::min({std::abs(signed_degrees(at[0])), std::abs(signed_degrees(at[1])), std::abs(signed_degrees(at[2]))});
 }
-
-// smallest_angle of triangle abc in mesh_stats' loop, from its sides' vectors
-// dab = b - a, dbc = c - b, dca = a - c (scaled_direction's differences; their
-// squares, in either direction, are squared_length's). Where the three squares are
-// safe_square, each side's larger component m lies in [2^-451, 2^451): a smaller m
-// would make the square below 2^-900, a larger one above 2^900 (rounding is
-// monotonic). scaled_direction then takes its power-of-two branch, which alone is
-// computed here; anything else goes to smallest_angle.
-inline Point scaled_safe_side(const Point& d) {
-  const double scale = detail::power_of_two(-detail::exponent_of(std::max(std::abs(d.x), std::abs(d.y))));
-  return {d.x * scale, d.y * scale};
-}
-inline double smallest_angle_of_sides(const Point& a, const Point& b, const Point& c, const Point& dab, const Point& dbc,
-                                      const Point& dca, double ab, double bc, double ca) {
-  if (safe_square(ab) && safe_square(bc) && safe_square(ca)) {
-    const int k = bc < kShorter * std::min(ab, ca) ? 0 : ca < kShorter * std::min(ab, bc) ? 1 : ab < kShorter * std::min(bc, ca) ? 2 : -1;
-    if (k >= 0) {
-      // corner_args: corner 0 from ab and -ca, 1 from bc and -ab, 2 from ca and -bc.
-      const Point& from = k == 0 ? dab : k == 1 ? dbc : dca;
-      const Point& to = k == 0 ? dca : k == 1 ? dab : dbc;
-      const AngleArgs at = detail::args_of(scaled_safe_side(from), detail::negated(scaled_safe_side(to)));
-      if (std::abs(at.cross) >= kNotThin * (std::abs(at.dot) + std::abs(at.cross))) return std::abs(detail::degrees_of(at));
-    }
-  }
-  return smallest_angle(a, b, c, ab, bc, ca);
-}
 }  // namespace
 
-double min_angle_deg(const Point& a, const Point& b, const Point& c) {
-  return smallest_angle(a, b, c, squared_length(a, b), squared_length(b, c), squared_length(c, a));
-}
+double min_angle_deg(const Point& a, const Point& b, const Point& c) { return smallest_angle(a, b, c, sides_of(a, b, c)); }
 
 double max_angle_deg(const Point& a, const Point& b, const Point& c) {
   return std::max({angle_deg(a, b, c), angle_deg(b, c, a), angle_deg(c, a, b)});
@@ -158,9 +154,9 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
     const Tri& t = mesh.triangles[i];
     const Point &a = mesh.vertices[static_cast<std::size_t>(t[0])], &b = mesh.vertices[static_cast<std::size_t>(t[1])],
                 &c = mesh.vertices[static_cast<std::size_t>(t[2])];
-    const Point dab{b.x - a.x, b.y - a.y}, dbc{c.x - b.x, c.y - b.y}, dca{a.x - c.x, a.y - c.y};
-    const double ab = dab.x * dab.x + dab.y * dab.y, bc = dbc.x * dbc.x + dbc.y * dbc.y, ca = dca.x * dca.x + dca.y * dca.y;
-    const double m = smallest_angle_of_sides(a, b, c, dab, dbc, dca, ab, bc, ca);
+    const Sides sides = sides_of(a, b, c);
+    const double m = smallest_angle(a, b, c, sides);
+    const double ab = sides.ab, bc = sides.bc, ca = sides.ca;
     min_angle = std::min(min_angle, m);
     sum += m;
     const bool well_scaled = safe_square(ab) && safe_square(bc) && safe_square(ca);  // false for a NaN too
