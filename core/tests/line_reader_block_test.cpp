@@ -17,6 +17,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "scratch_files.h"
+
 #include "../src/line_reader.h"
 #include "lepp/io.h"
 #include "lepp/mesh_read.h"
@@ -28,21 +30,7 @@ namespace {
 
 using detail::LineReader;
 
-class LineReaderBlock : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lepp-line-reader-block-" + std::to_string(getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-  fs::path dir_;
-};
+using LineReaderBlock = ScratchFiles;
 
 // Everything a reader with `block` bytes of buffer gives for the file, step by step: the
 // lines left before each step, then a plain 4-field line ("irri") where one is, else the

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_files.h"
+
 #include "lepp/input.h"
 #include "lepp/io.h"
 #include "lepp/mesh_read.h"
@@ -23,19 +25,8 @@ namespace fs = std::filesystem;
 namespace lepp {
 namespace {
 
-class PlainLines : public ::testing::Test {
+class PlainLines : public ScratchFiles {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lepp-plain-lines-" + std::to_string(getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
   // The error read_node gives (its message without the path), or "" if none.
   std::string node_error(const std::string& text) {
     const std::string path = write("e.node", text);
@@ -58,7 +49,6 @@ class PlainLines : public ::testing::Test {
     }
     return "";
   }
-  fs::path dir_;
 };
 
 // The same four vertices, plain and in forms the plain path leaves to the general one:

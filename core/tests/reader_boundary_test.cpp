@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_files.h"
+
 #include "lepp/input.h"
 #include "lepp/io.h"
 
@@ -19,21 +21,7 @@ namespace fs = std::filesystem;
 namespace lepp {
 namespace {
 
-class ReaderBoundary : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lepp-reader-boundary-" + std::to_string(getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path) << text;
-    return path;
-  }
-  fs::path dir_;
-};
+using ReaderBoundary = ScratchFiles;
 
 // Kills core-node-beside-poly-one-based: the segments of a .poly with no
 // vertices are numbered like the .node beside it, here from 0.
