@@ -236,6 +236,10 @@ void LineReader::expect_item(std::vector<std::string_view>& tokens, const char* 
 
 std::size_t LineReader::lines_left() const { return lines_from(base_ + pos_); }
 
+std::string LineReader::too_many(const char* what, std::int64_t n, std::size_t left) {
+  return fmt::format("{} is {} but the file has only {} more lines", what, n, left);
+}
+
 std::size_t LineReader::bytes_left() const {
   const std::size_t at = base_ + pos_;
   return at < size_ ? size_ - at : 0;
@@ -269,7 +273,7 @@ void LineReader::count_later(std::size_t n, const char* what) {
   // More items than bytes left (a line is at least one): certainly too many, counted now.
   if (n > bytes_left() + 1) {
     const std::size_t left = lines_left();
-    if (n > left) fail(fmt::format("{} is {} but the file has only {} more lines", what, n, left));
+    if (n > left) fail(too_many(what, static_cast<std::int64_t>(n), left));
   }
   pending_n_ = n;
   pending_line_ = line_;
@@ -281,7 +285,7 @@ void LineReader::check_pending_count() const {
   if (pending_n_ == 0) return;
   const std::size_t left = lines_from(pending_offset_);
   if (pending_n_ > left)
-    throw InputError(path_, pending_line_, fmt::format("{} is {} but the file has only {} more lines", pending_what_, pending_n_, left));
+    throw InputError(path_, pending_line_, too_many(pending_what_, static_cast<std::int64_t>(pending_n_), left));
 }
 
 void LineReader::fail(const std::string& what) const {

@@ -44,6 +44,9 @@ class LineReader {
   // the rest of the file (read again through a small buffer of its own, the reader's
   // place and tokens untouched).
   std::size_t lines_left() const;
+  // The error of a header that promises n items, `what`, with only `left` lines left:
+  // one message for every reader and for count_later's check.
+  static std::string too_many(const char* what, std::int64_t n, std::size_t left);
   // A header's count of items, n, one line each: an error unless n <= lines_left(), the
   // message of header_count's (read_poly.cpp's count's) check. When the file's size
   // allows n lines, the lines are not counted now (that read the whole file once more,

@@ -31,7 +31,7 @@ using Tokens = std::vector<std::string_view>;
 std::size_t header_count(LineReader& in, std::string_view token, const char* what) {
   std::int64_t n = in.integer(token, what);
   if (n < 0 || static_cast<std::size_t>(n) > in.lines_left())
-    in.fail(fmt::format("{} is {} but the file has only {} more lines", what, n, in.lines_left()));
+    in.fail(LineReader::too_many(what, n, in.lines_left()));
   return static_cast<std::size_t>(n);
 }
 
@@ -39,7 +39,7 @@ std::size_t header_count(LineReader& in, std::string_view token, const char* wha
 // left only if an error comes first (LineReader::count_later), with the same message.
 std::size_t header_count_later(LineReader& in, std::string_view token, const char* what) {
   std::int64_t n = in.integer(token, what);
-  if (n < 0) in.fail(fmt::format("{} is {} but the file has only {} more lines", what, n, in.lines_left()));
+  if (n < 0) in.fail(LineReader::too_many(what, n, in.lines_left()));
   in.count_later(static_cast<std::size_t>(n), what);
   return static_cast<std::size_t>(n);
 }

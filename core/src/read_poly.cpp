@@ -93,7 +93,7 @@ std::size_t count(LineReader& in, std::string_view token, const char* what, std:
   std::int64_t n = in.integer(token, what);
   if (n < 0) in.fail(fmt::format("{} is negative ({})", what, n));
   if (n > 0 && static_cast<std::size_t>(n) > in.lines_left() / lines_per_item)
-    in.fail(fmt::format("{} is {} but the file has only {} more lines", what, n, in.lines_left()));
+    in.fail(LineReader::too_many(what, n, in.lines_left()));
   return static_cast<std::size_t>(n);
 }
 
