@@ -7,10 +7,13 @@
 // gamma_n = n u / (1 - n u), u = 2^-53 (Higham, "Accuracy and Stability",
 // 3.1). We trust the double sign when |value| > (2n + 2) u P, which covers
 // gamma_n, the rounding of P itself and of the bound; P must also lie in
-// [2^-900, 2^+900] so that no underflow or overflow spoiled the analysis.
+// [2^-900, 2^+900] so that no underflow or overflow spoiled the analysis, and
+// the degree-4 ones add an absolute term for underflow inside one product
+// (filtered_sign below).
 // Otherwise the polynomial is evaluated exactly (CGAL::Mpzf, exact for + - *),
 // out of line in exact_fallback.cpp: the cold path.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "lepp/pslg.h"
@@ -22,9 +25,18 @@ constexpr double kUnit = 1.1102230246251565e-16;  // 2^-53
 constexpr double kTiny = 1.3e-271;                 // about 2^-900
 constexpr double kHuge = 8.5e270;                  // about 2^+900
 // Sign of value if the filter decides it, else 2.
-inline int filtered_sign(double value, double permanent, int depth) {
+//
+// `absolute`: what underflow may add beyond the relative bound. A product or square
+// whose value lies below 2^-1022 is off by up to 2^-1075 absolutely, not by u
+// relatively (sums are exact there). In a polynomial of degree 2 that error stays
+// far below the bound, since P >= 2^-900: 0 there. In one of degree 4 a subnormal
+// product can be multiplied by a large factor (in-circle: a 2x2 minor by the lift
+// of the third point, which P need not dominate), so the error grows with that
+// factor: incircle and skinny_at pass it (predicates_test's Underflow tests find
+// wrong signs without it).
+inline int filtered_sign(double value, double permanent, int depth, double absolute = 0) {
   if (!(permanent >= kTiny && permanent <= kHuge)) return 2;  // possible underflow/overflow: exact
-  double bound = (2 * depth + 2) * kUnit * permanent;
+  double bound = (2 * depth + 2) * kUnit * permanent + absolute;
   if (value > bound) return 1;
   if (value < -bound) return -1;
   return 2;
@@ -58,7 +70,12 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
   double det = alift * (bc1 - bc2) + blift * (ca1 - ca2) + clift * (ab1 - ab2);
   double perm = alift * (std::fabs(bc1) + std::fabs(bc2)) + blift * (std::fabs(ca1) + std::fabs(ca2)) +
                 clift * (std::fabs(ab1) + std::fabs(ab2));
-  int s = detail::filtered_sign(det, perm, 6);
+  // Underflow: six minor products, each times a lift <= 2 L (L the largest lift, at
+  // least every coordinate difference squared), six squares in the lifts, each times
+  // a minor <= 2 L, three final products: at most (24 L + 3) 2^-1075; taken with a
+  // margin above 2.
+  const double underflow = std::max(std::max(alift, blift), clift) * 0x1p-1068 + 0x1p-1072;
+  int s = detail::filtered_sign(det, perm, 6, underflow);
   return s != 2 ? s : detail::incircle_exact(a, b, c, d);
 }
 
@@ -81,7 +98,13 @@ inline bool skinny_at(const Point& apex, const Point& b, const Point& c, double 
   double cross = c1 - c2, pc = std::fabs(c1) + std::fabs(c2);
   double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
   double rhs = s * (uu * vv);
-  int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6);
+  // Underflow (s <= 1): the squares in uu times s vv and in vv times s uu, the two
+  // products of rhs, and cross's two products, whose error cross^2 carries times
+  // 2 |cross| <= uu + vv: at most (uu + vv) 2^-1073 + 2^-1073; taken 8 times.
+  // (Quality::judge_bits needs no such term: it tests the two longest sides, whose
+  // squares are within 4 of each other, so a subnormal one makes P subnormal.)
+  const double underflow = (uu + vv) * 0x1p-1070 + 0x1p-1070;
+  int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6, underflow);
   if (sign == 2) sign = detail::skinny_sign_exact(apex, b, c, s);
   return sign > 0;
 }

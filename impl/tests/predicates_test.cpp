@@ -4,6 +4,7 @@
 // double filter must hand over to the exact path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -89,6 +90,44 @@ INSTANTIATE_TEST_SUITE_P(Scales, NearDegenerate,
                          ::testing::Values(Scale{1, 0}, Scale{1, 1000}, Scale{1e-150, 0}, Scale{1e-300, 0},
                                            Scale{1e150, 0}, Scale{1e-3, 0.75}, Scale{1e-78, 0},
                                            Scale{1e-155, 0}));
+
+// Underflow inside one product of a degree-4 predicate, beside terms that keep the
+// permanent far above 2^-900. In-circle: d = 0, c = (0, m 2^-1074), so the minor
+// b_x c_y is subnormal and rounds by up to half its last place, times the lift of
+// a = (2^200, 2^200); b = (0.5, 2^100) lies near the circle through d and a that
+// touches the y axis at d, so c is about as near it and the other minor's term
+// cancels the first. Without the underflow term the filter decided 20 of these
+// 78 the wrong way.
+TEST(Predicates, UnderflowInAMinorTimesALargeLift) {
+  int checked = 0;
+  for (int m = 1; m < 40; ++m)
+    for (double side : {1.0, -1.0}) {
+      Point a{0x1p200, 0x1p200}, b{0.5, side * 0x1p100};
+      const Point c{0, m * 0x1p-1074}, d{0, 0};
+      if (CGAL::orientation(kp(a), kp(b), kp(c)) == CGAL::RIGHT_TURN) std::swap(a, b);
+      ASSERT_EQ(incircle(a, b, c, d), static_cast<int>(CGAL::side_of_oriented_circle(kp(a), kp(b), kp(c), kp(d))))
+          << "m = " << m << ", side " << side;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 78);
+}
+
+// The skinny test at an apex between a side of about 2^-520 (its square subnormal,
+// a few digits) and one of 2^100 to 2^400 at about theta = 30 degrees: the small-angle
+// test of two input segments (Quality's wedge) asks exactly this. Without the
+// underflow term the filter decided about 9 % of these the wrong way.
+TEST(Predicates, UnderflowInASquareTimesALargeOne) {
+  std::mt19937_64 rng(40);
+  std::uniform_real_distribution<double> unit(1, 2), turn(-1e-3, 1e-3);
+  std::uniform_int_distribution<int> small(520, 536), large(100, 400);
+  const double s = 0.25, pi = std::acos(-1.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double r = std::ldexp(unit(rng), -small(rng)), angle = pi / 6 * (1 + turn(rng));
+    const Point o{0, 0}, near{r * std::cos(angle), r * std::sin(angle)}, far{std::ldexp(1.0, large(rng)), 0};
+    ASSERT_EQ(skinny_at(o, near, far, s), exact_skinny_at(o, near, far, s)) << "trial " << trial;
+    ASSERT_EQ(skinny_at(o, far, near, s), exact_skinny_at(o, far, near, s)) << "trial " << trial;
+  }
+}
 
 TEST(Predicates, ExactTiesAreZero) {
   // (3,4), (5,0), (4,-3), (-5,0) lie on the circle of radius 5.
