@@ -248,15 +248,33 @@ std::size_t follow_on_program_mesh(Replay& replay, const std::vector<Point>& tra
 
 std::string tri(const Tri& t) { return fmt::format("({},{},{})", t[0], t[1], t[2]); }
 
-// The replay of the first `steps` points of the trace (each a choice, inserted
-// before): the mesh just before step `steps`.
-std::unique_ptr<Replay> replay_up_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
-                                     const ConformanceOptions& options) {
-  auto replay = replay_on(validated, options, MeshReading::Exact);
-  for (std::size_t i = 0; i < steps; ++i) {
-    ReplayChoice choice;
-    if (!replay->match(trace[i], choice)) break;  // cannot happen: the same replay matched it before
-    replay->insert(trace[i], choice);
+// Which names of a chain a replay up to a step allows.
+enum class Allowing {
+  None,                  // the exact replay: only the paper's choices
+  AllFromTheStart,       // every name of the chain, at every step
+  EachFromItsFirstStep,  // each name from the step the chain named it at
+};
+
+// The trace's first `steps` points replayed on `reading`'s mesh, each matched to a
+// choice and inserted: the mesh just before step `steps`. Null where a point is no
+// choice there or an insertion throws (the replay would be broken).
+std::unique_ptr<Replay> replay_trace_to(const Pslg& validated, const std::vector<Point>& trace, std::size_t steps,
+                                        const ConformanceOptions& options, MeshReading reading,
+                                        const std::vector<DeviationLink>& chain, Allowing allowing) {
+  std::unique_ptr<Replay> replay = replay_on(validated, options, reading);
+  if (allowing == Allowing::AllFromTheStart)
+    for (const DeviationLink& l : chain) replay->allow(deviation_named(l.deviation));
+  try {
+    for (std::size_t i = 0; i < steps; ++i) {
+      if (allowing == Allowing::EachFromItsFirstStep)
+        for (const DeviationLink& l : chain)
+          if (l.first_step <= i + 1) replay->allow(deviation_named(l.deviation));  // named at this step or before
+      ReplayChoice choice;
+      if (!replay->match(trace[i], choice)) return nullptr;
+      replay->insert(trace[i], choice);
+    }
+  } catch (const std::runtime_error&) {
+    return nullptr;
   }
   return replay;
 }
@@ -306,15 +324,10 @@ void describe_step(Replay& at, std::string reason, ConformanceFailure& f) {
 // Unchanged where that replay does not get there or the point is a choice there.
 void restate_step_on(const Pslg& validated, const std::vector<Point>& trace, const ConformanceOptions& options,
                      MeshReading reading, ConformanceFailure& f) {
-  const std::unique_ptr<Replay> replay = replay_on(validated, options, reading);
+  const std::unique_ptr<Replay> replay =
+      replay_trace_to(validated, trace, f.step, options, reading, f.chain, Allowing::EachFromItsFirstStep);
+  if (!replay) return;
   try {
-    for (std::size_t i = 0; i < f.step; ++i) {
-      for (const DeviationLink& l : f.chain)
-        if (l.first_step <= i + 1) replay->allow(deviation_named(l.deviation));  // named at this step or before
-      ReplayChoice choice;
-      if (!replay->match(trace[i], choice)) return;
-      replay->insert(trace[i], choice);
-    }
     ReplayChoice choice;
     if (replay->match(trace[f.step], choice)) return;  // a choice on that mesh: nothing to show there
   } catch (const std::runtime_error&) {
@@ -379,7 +392,7 @@ ConformanceReport check_conformance(const Pslg& validated, const std::vector<Poi
         // The insertion may have stopped half way (the point in, a triangle not
         // counter-clockwise, even flat: issue 30), so the report's mesh, choices and
         // deviation come from the trace replayed again up to this step.
-        before = replay_up_to(validated, trace, i, options);
+        before = replay_trace_to(validated, trace, i, options, MeshReading::Exact, {}, Allowing::None);
       }
     }
     Replay& at = before ? *before : replay;
@@ -512,19 +525,10 @@ std::optional<ConformanceFailure> chain_end_failure(const Pslg& validated, const
   for (MeshReading r : {MeshReading::NoFlips, MeshReading::NoFlipsButSplits, MeshReading::DoubleIncircle, MeshReading::FloatPoints,
                         MeshReading::TiesKept, MeshReading::FloatInput})
     if (f.mesh_reading == to_string(r)) reading = r;
-  const std::unique_ptr<Replay> at_end = replay_on(validated, options, reading);
-  Replay& replay = *at_end;
-  for (const DeviationLink& l : f.chain) replay.allow(deviation_named(l.deviation));
   const std::size_t end = f.chain_end_step - 1;
-  try {
-    for (std::size_t i = 0; i < end; ++i) {
-      ReplayChoice choice;
-      if (!replay.match(trace[i], choice)) return std::nullopt;
-      replay.insert(trace[i], choice);
-    }
-  } catch (const std::runtime_error&) {
-    return std::nullopt;
-  }
+  const std::unique_ptr<Replay> at_end = replay_trace_to(validated, trace, end, options, reading, f.chain, Allowing::AllFromTheStart);
+  if (!at_end) return std::nullopt;
+  Replay& replay = *at_end;
   ConformanceFailure g;
   g.step = end;
   g.point = trace[end];
