@@ -2,10 +2,12 @@
 // The certifier's half-edge index (properties/certify/src/index/index_half_edges.cpp)
 // built over ranges: for any thread count the same twins, the same edges in edge-key
 // order, the same half-edges per edge by id and the same used vertices, on a grid mesh
-// with triangles repeated (edges in three triangles) and removed (boundary edges).
+// with triangles repeated (edges in three triangles) and removed (boundary edges); and
+// the same index as one built the plain way, a map from each edge to its half-edges.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
 
 #include "certification.h"
@@ -42,7 +44,8 @@ Mesh damaged_grid(int n, std::uint64_t seed) {
 
 struct Built {
   std::vector<int> twin, half_begin;
-  std::vector<std::array<int, 2>> edges, halves;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<std::array<int, 3>> halves;
   std::vector<char> used;
   std::size_t violations = 0;
 };
@@ -57,7 +60,7 @@ Built build(const Mesh& mesh, int threads) {
   pass::index_half_edges(cert);
   const MeshIndex& ix = cert.index;
   Built b{ix.twin, ix.half_begin, ix.edges, {}, ix.used, report.violations.size()};
-  for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h});
+  for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h(), h.up()});
   return b;
 }
 
@@ -77,6 +80,51 @@ TEST(HalfEdgeIndex, SameForAnyThreadCountInEdgeKeyOrder) {
     EXPECT_EQ(many.halves, one.halves) << threads;
     EXPECT_EQ(many.used, one.used) << threads;
     EXPECT_EQ(many.violations, one.violations) << threads;
+  }
+}
+
+// The index against its definition, built the plain way: a map from each edge of a valid
+// triangle to its half-edges by id. Twins, -1 and -2, the edges in key order, each
+// half-edge's way (Half::up, kept so that pairing loads no triangle) and every lookup.
+TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    Mesh mesh = damaged_grid(17, seed);
+    mesh.triangles.push_back({0, 1, static_cast<int>(mesh.vertices.size())});  // an id out of range: no half-edges
+    for (int threads : {1, 2, 3}) {
+      Pslg pslg;
+      Options o;
+      o.threads = threads;
+      Report report;
+      Certification cert(pslg, mesh, o, report);
+      pass::index_triangles(cert);
+      pass::index_half_edges(cert);
+      const MeshIndex& ix = cert.index;
+      std::map<std::uint64_t, std::vector<int>> by_edge;
+      for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (ix.tri_ok[t])
+          for (int i = 0; i < 3; ++i) {
+            const int h = static_cast<int>(3 * t) + i;
+            by_edge[edge_key(ix.from(h), ix.to(h))].push_back(h);
+          }
+      std::vector<int> twin(3 * mesh.triangles.size(), -1);
+      std::vector<std::array<int, 2>> edges;
+      for (const auto& [key, halves] : by_edge) {
+        edges.push_back(edge_ends(key));
+        const bool pair = halves.size() == 2 && ix.from(halves[0]) != ix.from(halves[1]);
+        for (std::size_t k = 0; k < halves.size(); ++k)
+          twin[static_cast<std::size_t>(halves[k])] = pair ? halves[1 - k] : halves.size() == 1 ? -1 : -2;
+        const std::array<int, 2> e = edge_ends(key);
+        std::vector<int> found;
+        for (auto [first, last] = ix.halves_on(e[1], e[0]); first != last; ++first) {
+          found.push_back(first->h());
+          EXPECT_EQ(first->up(), ix.from(first->h()) < ix.to(first->h())) << first->h();
+        }
+        EXPECT_EQ(found, halves) << e[0] << "-" << e[1] << ", " << threads << " threads";
+      }
+      EXPECT_GT(std::count(twin.begin(), twin.end(), -2), 0);  // the repeated triangles' edges
+      EXPECT_EQ(ix.twin, twin) << threads;
+      EXPECT_EQ(ix.edges, edges) << threads;
+    }
   }
 }
 

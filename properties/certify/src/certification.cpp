@@ -37,7 +37,7 @@ std::pair<const MeshIndex::Half*, const MeshIndex::Half*> MeshIndex::halves_on(i
   const Half* first = halves.data() + half_begin[static_cast<std::size_t>(v)];
   const Half* last = halves.data() + half_begin[static_cast<std::size_t>(v) + 1];
   auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
-  return std::equal_range(first, last, Half{w, 0}, by_other);
+  return std::equal_range(first, last, Half(w, 0, false), by_other);
 }
 
 bool MeshIndex::adjacent(int v, int w) const {

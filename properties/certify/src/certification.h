@@ -67,8 +67,13 @@ struct MeshIndex {
   // The half-edges of valid triangles by edge (index_half_edges): the ones whose smaller
   // end is v at [half_begin[v], half_begin[v + 1]) of halves, by larger end, then by id.
   struct Half {
-    int other;  // the larger end
-    int h;
+    Half() = default;
+    Half(int larger_end, int half, bool from_smaller)
+        : other(larger_end), code(2 * static_cast<std::uint32_t>(half) + (from_smaller ? 1 : 0)) {}
+    int other;           // the larger end
+    std::uint32_t code;  // 2 h + 1 if half-edge h runs from the smaller end to the larger, 2 h if back
+    int h() const { return static_cast<int>(code >> 1); }
+    bool up() const { return (code & 1) != 0; }  // runs from the smaller end: without loading its triangle
   };
   std::vector<int> half_begin;
   std::vector<Half> halves;

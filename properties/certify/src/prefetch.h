@@ -14,6 +14,7 @@ namespace lepp::certify {
 constexpr std::size_t kAhead = 16;
 
 inline void prefetch(const void* p) { __builtin_prefetch(p); }
+inline void prefetch_write(const void* p) { __builtin_prefetch(p, 1); }
 
 // The points of triangle x (ids out of range skipped: the pass reports them).
 inline void prefetch_points(const MeshIndex& ix, const Tri& x) {

@@ -45,7 +45,7 @@ void check_coverage(Certification& cert) {
   auto halves_of_chain = [&ix](int x, int y) {
     std::array<int, 2> pair{-1, -1};
     for (auto [first, last] = ix.halves_on(x, y); first != last; ++first)
-      pair[ix.from(first->h) < ix.to(first->h) ? 0 : 1] = first->h;
+      pair[first->up() ? 0 : 1] = first->h();
     return pair;
   };
   for (std::size_t s = 0; s < ix.chains.size(); ++s) {

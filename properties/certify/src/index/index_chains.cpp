@@ -73,7 +73,7 @@ void index_chains(Certification& cert) {
   // half-edge looked up in the hash).
   for (const auto& [key, seg] : ix.chain_edge) {
     const std::array<int, 2> e = edge_ends(key);
-    for (auto [first, last] = ix.halves_on(e[0], e[1]); first != last; ++first) ix.constrained_half[static_cast<std::size_t>(first->h)] = 1;
+    for (auto [first, last] = ix.halves_on(e[0], e[1]); first != last; ++first) ix.constrained_half[static_cast<std::size_t>(first->h())] = 1;
   }
   cert.report.stats.constrained_edges = ix.chain_edge.size();
   // Sorted: the checks and reports that scan them do not depend on the hash's order.
