@@ -23,4 +23,15 @@ inline void prefetch_points(const MeshIndex& ix, const Tri& x) {
     if (static_cast<std::size_t>(v) < n) prefetch(&ix.mesh.vertices[static_cast<std::size_t>(v)]);
 }
 
+// What a step of a Lepp from triangle t reads across its longest edge: the neighbour's
+// longest edge and that edge's twin (Theorem 2's terminal pairs, the mean Lepp size).
+inline void prefetch_across_longest(const MeshIndex& ix, std::size_t t) {
+  if (!ix.tri_ok[t]) return;
+  const int g = ix.twin[static_cast<std::size_t>(ix.longest_half(t))];
+  if (g < 0) return;
+  const std::size_t u = static_cast<std::size_t>(g / 3);
+  prefetch(&ix.longest[u]);
+  prefetch(&ix.twin[3 * u]);
+}
+
 }  // namespace lepp::certify

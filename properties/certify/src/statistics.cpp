@@ -4,6 +4,7 @@
 
 #include "lepp/stats.h"
 #include "passes.h"
+#include "prefetch.h"
 
 namespace lepp::certify::pass {
 namespace {
@@ -11,6 +12,7 @@ namespace {
 double average_lepp_size(const MeshIndex& ix) {
   std::size_t total = 0, count = 0;
   for (std::size_t t = 0; t < ix.mesh.triangles.size(); ++t) {
+    if (t + kAhead < ix.mesh.triangles.size()) prefetch_across_longest(ix, t + kAhead);
     if (!ix.tri_ok[t]) continue;
     ++count;
     std::size_t cur = t, size = 1;

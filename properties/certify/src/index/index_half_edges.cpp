@@ -140,10 +140,13 @@ bool any_duplicate_point(const std::vector<Point>& points) {
   while (size < 2 * points.size()) size *= 2, ++bits;
   std::vector<int> slot(size, -1);
   const PointHash hash;
+  auto home = [&](const Point& p) { return static_cast<std::size_t>((hash(p) * 0x9E3779B97F4A7C15ull) >> (64 - bits)); };
   for (std::size_t i = 0; i < points.size(); ++i) {
+    // The slot a point kAhead on starts at (scattered over the table: a cache miss each), asked for now.
+    if (i + kAhead < points.size()) prefetch_write(&slot[home(points[i + kAhead])]);
     const Point& p = points[i];
     if (!finite(p)) continue;  // NaN is equal to nothing; the sort below skips it too
-    for (std::size_t k = (hash(p) * 0x9E3779B97F4A7C15ull) >> (64 - bits);; k = (k + 1) & (size - 1)) {
+    for (std::size_t k = home(p);; k = (k + 1) & (size - 1)) {
       if (slot[k] < 0) {
         slot[k] = static_cast<int>(i);
         break;
