@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <map>
 #include <random>
+#include <stdexcept>
 
 #include "certification.h"
+#include "index/index_limits.h"
 #include "passes.h"
 
 namespace lepp::certify {
@@ -126,6 +128,27 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
       EXPECT_EQ(ix.edges, edges) << threads;
     }
   }
+}
+
+// The 32-bit limit, at its boundary: through the seam with a small limit (the same
+// code as the real one), and at the real one without a mesh that large.
+TEST(HalfEdgeIndex, MeshesPastTheIdsLimitAreRefusedAtTheBoundary) {
+  EXPECT_NO_THROW(check_index_limits(9, 3, 9));  // 9 vertices, 9 half-edges: ids 0..8
+  EXPECT_THROW(check_index_limits(10, 3, 9), std::length_error);
+  EXPECT_THROW(check_index_limits(9, 4, 9), std::length_error);
+  EXPECT_NO_THROW(check_index_limits(9, 3, 11));  // 11 ids hold 3 triangles, not 4
+  EXPECT_THROW(check_index_limits(9, 4, 11), std::length_error);
+  try {
+    check_index_limits(0, 4, 11);
+    ADD_FAILURE() << "not refused";
+  } catch (const std::length_error& e) {
+    EXPECT_STREQ(e.what(), "the mesh has 4 triangles; the certifier numbers their half-edges (3 a triangle) in 32-bit ids, so at most 3 triangles");
+  }
+  // The real limit: the largest half-edge id 3 t + 2 of the last triangle is INT_MAX - 2.
+  EXPECT_NO_THROW(check_index_limits(kMaxIndexIds, 715827882));
+  EXPECT_THROW(check_index_limits(kMaxIndexIds, 715827883), std::length_error);
+  EXPECT_THROW(check_index_limits(kMaxIndexIds + 1, 0), std::length_error);
+  EXPECT_EQ(3 * std::size_t{715827882} - 1, kMaxIndexIds - 2);
 }
 
 }  // namespace

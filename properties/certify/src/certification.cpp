@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "exact.h"
+#include "index/index_limits.h"
 
 namespace lepp::certify {
 
@@ -12,6 +13,7 @@ constexpr std::size_t kReasons = static_cast<std::size_t>(Reason::AreaAboveBound
 
 Certification::Certification(const Pslg& pslg, const Mesh& mesh, const Options& opts, Report& out, std::optional<Check> group)
     : options(opts), report(out), index(pslg, mesh), only(group) {
+  check_index_limits(mesh.vertices.size(), mesh.triangles.size());
   report.count_by_reason.assign(kReasons, 0);
   report.min_angle_deg = options.min_angle_deg;
 }
