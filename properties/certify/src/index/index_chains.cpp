@@ -36,10 +36,11 @@ void build_adjacency(MeshIndex& ix) {
 
 }  // namespace
 
+void index_adjacency(Certification& cert) { build_adjacency(cert.index); }
+
 // Each segment's chain of mesh edges (segment_walk.h), its edges and its Steiner vertices.
 void index_chains(Certification& cert) {
   MeshIndex& ix = cert.index;
-  build_adjacency(ix);
   ix.chains.assign(ix.pslg.segments.size(), {});
   ix.vertex_segment.assign(ix.mesh.vertices.size(), -1);
   ix.constrained_half.assign(ix.mesh.triangles.size() * 3, 0);
