@@ -61,7 +61,9 @@ Built build(const Mesh& mesh, int threads) {
   pass::index_triangles(cert);
   pass::index_half_edges(cert);
   const MeshIndex& ix = cert.index;
-  Built b{ix.twin, ix.half_begin, ix.edges, {}, ix.used, report.violations.size()};
+  Built b{ix.twin, ix.half_begin, {}, {}, ix.used, report.violations.size()};
+  ix.each_edge([&b](int x, int y, std::size_t) { b.edges.push_back({x, y}); });
+  EXPECT_EQ(b.edges.size(), ix.edge_count);
   for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h(), h.up()});
   return b;
 }
@@ -125,7 +127,10 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
       }
       EXPECT_GT(std::count(twin.begin(), twin.end(), -2), 0);  // the repeated triangles' edges
       EXPECT_EQ(ix.twin, twin) << threads;
-      EXPECT_EQ(ix.edges, edges) << threads;
+      std::vector<std::array<int, 2>> each;
+      ix.each_edge([&each](int x, int y, std::size_t) { each.push_back({x, y}); });
+      EXPECT_EQ(each, edges) << threads;
+      EXPECT_EQ(ix.edge_count, edges.size()) << threads;
     }
   }
 }

@@ -62,12 +62,12 @@ struct MeshIndex {
   std::vector<char> tri_ok;            // ids valid (orientation may still be wrong)
   std::vector<char> ccw;               // valid and strictly counter-clockwise (index_triangles)
   std::vector<int> twin;               // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
-  std::vector<std::array<int, 2>> edges;  // unique edges (a < b) of valid triangles
+  std::size_t edge_count = 0;          // unique edges of valid triangles (the groups of halves)
   std::vector<char> used;
   // The half-edges of valid triangles by edge (index_half_edges): the ones whose smaller
   // end is v at [half_begin[v], half_begin[v + 1]) of halves, by larger end, then by id.
   struct Half {
-    Half() = default;
+    Half() {}  // not zeroed: vector::resize leaves the slots to the pass that fills them all
     Half(int larger_end, int half, bool from_smaller)
         : other(larger_end), code(2 * static_cast<std::uint32_t>(half) + (from_smaller ? 1 : 0)) {}
     int other;           // the larger end
@@ -77,6 +77,14 @@ struct MeshIndex {
   };
   std::vector<int> half_begin;
   std::vector<Half> halves;
+  // Each unique edge (a < b) of valid triangles, in key order: f(a, b, k) on the first
+  // half-edge k of each group of halves (the edges are not stored apart).
+  template <class F>
+  void each_edge(F&& f) const {
+    for (std::size_t v = 0; v + 1 < half_begin.size(); ++v)
+      for (std::size_t k = static_cast<std::size_t>(half_begin[v]); k < static_cast<std::size_t>(half_begin[v + 1]); ++k)
+        if (k == static_cast<std::size_t>(half_begin[v]) || halves[k].other != halves[k - 1].other) f(static_cast<int>(v), halves[k].other, k);
+  }
   std::vector<char> merged;            // an unused exact duplicate of an input vertex (merge_duplicate_vertices)
   std::vector<int> input_to_mesh;      // input vertex id -> mesh vertex id, -1 missing
   std::vector<int> mesh_to_input;      // mesh vertex id -> input vertex id, -1 Steiner

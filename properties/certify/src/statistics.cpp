@@ -55,7 +55,7 @@ void statistics(Certification& cert, std::future<MeshStats>* ahead) {
   const MeshStats m = ahead ? ahead->get() : valid_triangle_stats(ix);
   s.vertices = ix.mesh.vertices.size();
   s.triangles = ix.mesh.triangles.size();
-  s.edges = ix.edges.size();
+  s.edges = ix.edge_count;
   s.min_angle_deg = m.min_angle_deg;
   s.avg_min_angle_deg = m.avg_min_angle_deg;
   s.min_area_quality = m.min_area_quality;

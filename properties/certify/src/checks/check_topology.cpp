@@ -114,12 +114,12 @@ void check_euler(Certification& cert) {
   for (char u : ix.used) v += u;
   std::size_t f = 0;
   for (char ok : ix.tri_ok) f += ok;
-  const long euler = v - static_cast<long>(ix.edges.size()) + static_cast<long>(f);
+  const long euler = v - static_cast<long>(ix.edge_count) + static_cast<long>(f);
   cert.report.stats.euler_mesh = euler;
   cert.report.stats.euler_domain = ix.domain.euler;
   if (euler != ix.domain.euler)
     cert.add({Reason::EulerCharacteristic,
-              fmt::format("V - E + F = {} - {} + {} = {}, the domain's is {}", v, ix.edges.size(), f, euler, ix.domain.euler), {}, {}, {}, {}, -1});
+              fmt::format("V - E + F = {} - {} + {} = {}, the domain's is {}", v, ix.edge_count, f, euler, ix.domain.euler), {}, {}, {}, {}, -1});
 }
 
 void topology(Certification& cert) {

@@ -11,26 +11,30 @@
 namespace lepp::certify::pass {
 namespace {
 
-// Edges in key order: the smaller ends come in order, the larger ones scattered (a cache
-// miss each at 10^7 triangles), so their counts and slots are asked for kAhead edges ahead.
+// From the half-edges grouped by edge (MeshIndex::each_edge's order, not a stored list
+// of edges): the smaller ends come in order, the larger ones scattered (a cache miss
+// each at 10^7 triangles), so their counts and slots are asked for kAhead halves ahead.
 void build_adjacency(MeshIndex& ix) {
-  const std::vector<std::array<int, 2>>& edges = ix.edges;
+  const std::vector<MeshIndex::Half>& halves = ix.halves;
+  // The larger end of the half-edge `ahead` places on, if there is one.
+  auto larger_end = [&halves](std::size_t k, std::size_t ahead) {
+    return k + ahead < halves.size() ? static_cast<std::size_t>(halves[k + ahead].other) : 0;
+  };
   ix.adj_begin.assign(ix.mesh.vertices.size() + 1, 0);
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    if (k + kAhead < edges.size()) prefetch_write(&ix.adj_begin[static_cast<std::size_t>(edges[k + kAhead][1]) + 1]);
-    ++ix.adj_begin[static_cast<std::size_t>(edges[k][0]) + 1];
-    ++ix.adj_begin[static_cast<std::size_t>(edges[k][1]) + 1];
-  }
+  ix.each_edge([&](int a, int b, std::size_t k) {
+    prefetch_write(&ix.adj_begin[larger_end(k, kAhead) + 1]);
+    ++ix.adj_begin[static_cast<std::size_t>(a) + 1];
+    ++ix.adj_begin[static_cast<std::size_t>(b) + 1];
+  });
   for (std::size_t i = 1; i < ix.adj_begin.size(); ++i) ix.adj_begin[i] += ix.adj_begin[i - 1];
   ix.adj.assign(static_cast<std::size_t>(ix.adj_begin.back()), 0);
   std::vector<int> fill(ix.adj_begin.begin(), ix.adj_begin.end() - 1);
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    if (k + kAhead < edges.size()) prefetch_write(&fill[static_cast<std::size_t>(edges[k + kAhead][1])]);
-    if (k + kAhead / 2 < edges.size()) prefetch_write(&ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(edges[k + kAhead / 2][1])])]);
-    const auto& e = edges[k];
-    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = e[1];
-    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = e[0];
-  }
+  ix.each_edge([&](int a, int b, std::size_t k) {
+    prefetch_write(&fill[larger_end(k, kAhead)]);
+    prefetch_write(ix.adj.data() + fill[larger_end(k, kAhead / 2)]);  // may be one past a full list
+    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
+    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+  });
   for (const ConstrainedEdge& e : ix.mesh.constrained_edges) ix.listed[edge_key(e.a, e.b)] = e.segment;
 }
 

@@ -68,17 +68,12 @@ void index_half_edges(Certification& cert) {
     if (ix.tri_ok[t])
       for (int v : ix.T(t)) ix.used[static_cast<std::size_t>(v)] = 1;
   ix.twin.assign(nt * 3, -1);
-  std::vector<std::vector<std::array<int, 2>>> range_edges(range_count(cert, nv));
-  over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  // counters: [0] edges.
+  ix.edge_count = over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
     // edges, the library's merge sort for a vertex of high degree (a fan's centre).
     auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
-    std::vector<std::array<int, 2>>& edges = range_edges[found.range];
-    // At most one edge per half-edge (a boundary edge has one): reserved so, the vector never
-    // grows by copying (half of that, the estimate before, was short by the boundary's
-    // edges, and the last growth copied the whole list). Capacity not written costs no memory.
     const std::size_t first_half = static_cast<std::size_t>(ix.half_begin[begin]), end_half = static_cast<std::size_t>(ix.half_begin[end]);
-    edges.reserve(end_half - first_half);
     std::size_t asked = first_half;  // the twins of the halves before it are asked for
     for (std::size_t v = begin; v < end; ++v) {
       const auto first = ix.halves.begin() + ix.half_begin[v], last = ix.halves.begin() + ix.half_begin[v + 1];
@@ -95,7 +90,7 @@ void index_half_edges(Certification& cert) {
         auto j = i;
         while (j != last && j->other == i->other) ++j;
         const int hi = i->other;
-        edges.push_back({lo, hi});
+        ++found.counters[0];
         if (j - i > 2) {
           const int a = i->up() ? lo : hi, b = i->up() ? hi : lo;  // the first half-edge's way
           Violation bad{Reason::EdgeOverused,
@@ -123,10 +118,7 @@ void index_half_edges(Certification& cert) {
         i = j;
       }
     }
-  });
-  // In range order: the first range's list taken over (one thread: no copy), the others appended.
-  ix.edges = std::move(range_edges.front());
-  for (std::size_t r = 1; r < range_edges.size(); ++r) ix.edges.insert(ix.edges.end(), range_edges[r].begin(), range_edges[r].end());
+  })[0];
 }
 
 namespace {
