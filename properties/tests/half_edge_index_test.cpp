@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <map>
 #include <random>
+#include <set>
 #include <stdexcept>
 
 #include "certification.h"
@@ -131,6 +132,36 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
       ix.each_edge([&each](int x, int y, std::size_t) { each.push_back({x, y}); });
       EXPECT_EQ(each, edges) << threads;
       EXPECT_EQ(ix.edge_count, edges.size()) << threads;
+    }
+  }
+}
+
+// The vertex adjacency (the smaller neighbours stored, the larger ones read from the
+// buckets) against the neighbours of each vertex collected from the triangles.
+TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
+  const Mesh mesh = damaged_grid(13, 7);
+  for (int threads : {1, 2}) {
+    Pslg pslg;
+    Options o;
+    o.threads = threads;
+    Report report;
+    Certification cert(pslg, mesh, o, report);
+    pass::index_triangles(cert);
+    pass::index_half_edges(cert);
+    pass::index_adjacency(cert);
+    const MeshIndex& ix = cert.index;
+    std::vector<std::set<int>> around(mesh.vertices.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const int h = static_cast<int>(3 * t) + i;
+        around[static_cast<std::size_t>(ix.from(h))].insert(ix.to(h));
+        around[static_cast<std::size_t>(ix.to(h))].insert(ix.from(h));
+      }
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      const std::vector<int> expected(around[v].begin(), around[v].end());
+      EXPECT_EQ(ix.neighbors(static_cast<int>(v)), expected) << v;
+      for (std::size_t w = 0; w < mesh.vertices.size(); ++w)
+        ASSERT_EQ(ix.adjacent(static_cast<int>(v), static_cast<int>(w)), around[v].count(static_cast<int>(w)) > 0) << v << " " << w;
     }
   }
 }

@@ -43,9 +43,21 @@ std::pair<const MeshIndex::Half*, const MeshIndex::Half*> MeshIndex::halves_on(i
 }
 
 bool MeshIndex::adjacent(int v, int w) const {
-  for (int i = adj_begin[static_cast<std::size_t>(v)]; i < adj_begin[static_cast<std::size_t>(v) + 1]; ++i)
-    if (adj[static_cast<std::size_t>(i)] == w) return true;
-  return false;
+  if (w > v) {
+    const auto [first, last] = halves_on(v, w);
+    return first != last;
+  }
+  const auto first = lower.begin() + lower_begin[static_cast<std::size_t>(v)], last = lower.begin() + lower_begin[static_cast<std::size_t>(v) + 1];
+  return std::binary_search(first, last, w);
+}
+
+std::vector<int> MeshIndex::neighbors(int v) const {
+  const std::size_t u = static_cast<std::size_t>(v);
+  std::vector<int> out(lower.begin() + lower_begin[u], lower.begin() + lower_begin[u + 1]);
+  for (int k = half_begin[u]; k < half_begin[u + 1]; ++k)
+    if (k == half_begin[u] || halves[static_cast<std::size_t>(k)].other != halves[static_cast<std::size_t>(k) - 1].other)
+      out.push_back(halves[static_cast<std::size_t>(k)].other);
+  return out;
 }
 
 bool MeshIndex::longer(int a, int b, int c, int d) const {

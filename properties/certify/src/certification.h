@@ -88,7 +88,9 @@ struct MeshIndex {
   std::vector<char> merged;            // an unused exact duplicate of an input vertex (merge_duplicate_vertices)
   std::vector<int> input_to_mesh;      // input vertex id -> mesh vertex id, -1 missing
   std::vector<int> mesh_to_input;      // mesh vertex id -> input vertex id, -1 Steiner
-  std::vector<int> adj_begin, adj;     // vertex adjacency (CSR)
+  // Vertex adjacency (index_adjacency): each vertex's smaller neighbours, ascending, at
+  // [lower_begin[v], lower_begin[v + 1]) of lower; its larger ones are its bucket's edges.
+  std::vector<int> lower_begin, lower;
   std::unordered_map<std::uint64_t, int> listed;      // listed constrained edge -> its segment id (-1 unknown)
   std::unordered_map<std::uint64_t, int> chain_edge;  // edge on a segment chain -> segment id
   std::vector<std::vector<int>> chains;  // per segment: mesh vertex ids from a to b, empty if not found
@@ -121,6 +123,8 @@ struct MeshIndex {
   int apex(int h) const { return T(static_cast<std::size_t>(h / 3))[static_cast<std::size_t>((h % 3 + 2) % 3)]; }
   int longest_half(std::size_t t) const { return static_cast<int>(3 * t) + longest[t]; }
   bool adjacent(int v, int w) const;
+  // Every neighbour of v, ascending: the smaller ones, then the larger ones from v's bucket.
+  std::vector<int> neighbors(int v) const;
   // The half-edges of valid triangles on edge v-w (either way), by id: a range of halves.
   std::pair<const Half*, const Half*> halves_on(int v, int w) const;
   // Edge order (ALGORITHM.md section 3): (squared length, -min id, -max id); true iff e > f.

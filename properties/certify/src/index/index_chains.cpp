@@ -11,29 +11,28 @@
 namespace lepp::certify::pass {
 namespace {
 
-// From the half-edges grouped by edge (MeshIndex::each_edge's order, not a stored list
-// of edges): the smaller ends come in order, the larger ones scattered (a cache miss
-// each at 10^7 triangles), so their counts and slots are asked for kAhead halves ahead.
+// Each vertex's smaller neighbours (its larger ones are its bucket's edges, not copied):
+// from the half-edges grouped by edge (MeshIndex::each_edge's order, smaller ends
+// ascending, so each list comes out ascending). The larger ends are scattered (a cache
+// miss each at 10^7 triangles): their counts and slots are asked for kAhead halves ahead.
 void build_adjacency(MeshIndex& ix) {
   const std::vector<MeshIndex::Half>& halves = ix.halves;
   // The larger end of the half-edge `ahead` places on, if there is one.
   auto larger_end = [&halves](std::size_t k, std::size_t ahead) {
     return k + ahead < halves.size() ? static_cast<std::size_t>(halves[k + ahead].other) : 0;
   };
-  ix.adj_begin.assign(ix.mesh.vertices.size() + 1, 0);
-  ix.each_edge([&](int a, int b, std::size_t k) {
-    prefetch_write(&ix.adj_begin[larger_end(k, kAhead) + 1]);
-    ++ix.adj_begin[static_cast<std::size_t>(a) + 1];
-    ++ix.adj_begin[static_cast<std::size_t>(b) + 1];
+  ix.lower_begin.assign(ix.mesh.vertices.size() + 1, 0);
+  ix.each_edge([&](int, int b, std::size_t k) {
+    prefetch_write(&ix.lower_begin[larger_end(k, kAhead) + 1]);
+    ++ix.lower_begin[static_cast<std::size_t>(b) + 1];
   });
-  for (std::size_t i = 1; i < ix.adj_begin.size(); ++i) ix.adj_begin[i] += ix.adj_begin[i - 1];
-  ix.adj.assign(static_cast<std::size_t>(ix.adj_begin.back()), 0);
-  std::vector<int> fill(ix.adj_begin.begin(), ix.adj_begin.end() - 1);
+  for (std::size_t i = 1; i < ix.lower_begin.size(); ++i) ix.lower_begin[i] += ix.lower_begin[i - 1];
+  ix.lower.assign(static_cast<std::size_t>(ix.lower_begin.back()), 0);
+  std::vector<int> fill(ix.lower_begin.begin(), ix.lower_begin.end() - 1);
   ix.each_edge([&](int a, int b, std::size_t k) {
     prefetch_write(&fill[larger_end(k, kAhead)]);
-    prefetch_write(ix.adj.data() + fill[larger_end(k, kAhead / 2)]);  // may be one past a full list
-    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
-    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+    prefetch_write(ix.lower.data() + fill[larger_end(k, kAhead / 2)]);  // may be one past a full list
+    ix.lower[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
   });
   for (const ConstrainedEdge& e : ix.mesh.constrained_edges) ix.listed[edge_key(e.a, e.b)] = e.segment;
 }
