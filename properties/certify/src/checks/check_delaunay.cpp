@@ -18,7 +18,6 @@ void delaunay(Certification& cert) {
   // The apex across each edge is asked for two steps ahead: its triangle 2 kAhead
   // triangles ahead, then, that triangle loaded, its point kAhead ahead (prefetch.h).
   const std::size_t nt = ix.mesh.triangles.size();
-  auto twin_apex = [&ix](int g) { return ix.apex(g); };
   const auto counts = over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     for (std::size_t t = begin; t < end; ++t) {
       if (t + 2 * kAhead < end)
@@ -29,7 +28,7 @@ void delaunay(Certification& cert) {
         if (ix.ccw[u]) {
           prefetch_points(ix, ix.T(u));
           for (std::size_t i = 0; i < 3; ++i)
-            if (const int g = ix.twin[3 * u + i]; g > static_cast<int>(3 * u + i)) prefetch(&ix.P(twin_apex(g)));
+            if (const int g = ix.twin[3 * u + i]; g > static_cast<int>(3 * u + i)) prefetch(&ix.P(ix.apex(g)));
         }
       }
       for (std::size_t h = 3 * t; h < 3 * t + 3; ++h) {
