@@ -103,7 +103,13 @@ int run_certify(const CertifyArgs& args) {
   options.max_area = args.max_area;
   options.region_area_bounds = args.region_areas;
   options.threads = args.threads;
-  const certify::Report report = certify::certify(input, mesh, options);
+  certify::Report report;
+  try {
+    report = certify::certify(input, mesh, options);
+  } catch (const std::length_error& e) {  // a mesh past the index's 32-bit ids
+    message("lepp certify: %s: %s\n", args.mesh.c_str(), e.what());
+    return 2;
+  }
   if (args.json) {
     nlohmann::json j = certify::json_report(report, args.max_listed);
     add_version(j);

@@ -2,13 +2,18 @@
 // The certifier's half-edge index (properties/certify/src/index/index_half_edges.cpp)
 // built over ranges: for any thread count the same twins, the same edges in edge-key
 // order, the same half-edges per edge by id and the same used vertices, on a grid mesh
-// with triangles repeated (edges in three triangles) and removed (boundary edges).
+// with triangles repeated (edges in three triangles) and removed (boundary edges); and
+// the same index as one built the plain way, a map from each edge to its half-edges.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
+#include <set>
+#include <stdexcept>
 
 #include "certification.h"
+#include "index/index_limits.h"
 #include "passes.h"
 
 namespace lepp::certify {
@@ -42,7 +47,8 @@ Mesh damaged_grid(int n, std::uint64_t seed) {
 
 struct Built {
   std::vector<int> twin, half_begin;
-  std::vector<std::array<int, 2>> edges, halves;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<std::array<int, 3>> halves;
   std::vector<char> used;
   std::size_t violations = 0;
 };
@@ -56,8 +62,10 @@ Built build(const Mesh& mesh, int threads) {
   pass::index_triangles(cert);
   pass::index_half_edges(cert);
   const MeshIndex& ix = cert.index;
-  Built b{ix.twin, ix.half_begin, ix.edges, {}, ix.used, report.violations.size()};
-  for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h});
+  Built b{ix.twin, ix.half_begin, {}, {}, ix.used, report.violations.size()};
+  ix.each_edge([&b](int x, int y, std::size_t) { b.edges.push_back({x, y}); });
+  EXPECT_EQ(b.edges.size(), ix.edge_count);
+  for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h(), h.up()});
   return b;
 }
 
@@ -78,6 +86,105 @@ TEST(HalfEdgeIndex, SameForAnyThreadCountInEdgeKeyOrder) {
     EXPECT_EQ(many.used, one.used) << threads;
     EXPECT_EQ(many.violations, one.violations) << threads;
   }
+}
+
+// The index against its definition, built the plain way: a map from each edge of a valid
+// triangle to its half-edges by id. Twins, -1 and -2, the edges in key order, each
+// half-edge's way (Half::up, kept so that pairing loads no triangle) and every lookup.
+TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    Mesh mesh = damaged_grid(17, seed);
+    mesh.triangles.push_back({0, 1, static_cast<int>(mesh.vertices.size())});  // an id out of range: no half-edges
+    for (int threads : {1, 2, 3}) {
+      Pslg pslg;
+      Options o;
+      o.threads = threads;
+      Report report;
+      Certification cert(pslg, mesh, o, report);
+      pass::index_triangles(cert);
+      pass::index_half_edges(cert);
+      const MeshIndex& ix = cert.index;
+      std::map<std::uint64_t, std::vector<int>> by_edge;
+      for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (ix.tri_ok[t])
+          for (int i = 0; i < 3; ++i) {
+            const int h = static_cast<int>(3 * t) + i;
+            by_edge[edge_key(ix.from(h), ix.to(h))].push_back(h);
+          }
+      std::vector<int> twin(3 * mesh.triangles.size(), -1);
+      std::vector<std::array<int, 2>> edges;
+      for (const auto& [key, halves] : by_edge) {
+        edges.push_back(edge_ends(key));
+        const bool pair = halves.size() == 2 && ix.from(halves[0]) != ix.from(halves[1]);
+        for (std::size_t k = 0; k < halves.size(); ++k)
+          twin[static_cast<std::size_t>(halves[k])] = pair ? halves[1 - k] : halves.size() == 1 ? -1 : -2;
+        const std::array<int, 2> e = edge_ends(key);
+        std::vector<int> found;
+        for (auto [first, last] = ix.halves_on(e[1], e[0]); first != last; ++first) {
+          found.push_back(first->h());
+          EXPECT_EQ(first->up(), ix.from(first->h()) < ix.to(first->h())) << first->h();
+        }
+        EXPECT_EQ(found, halves) << e[0] << "-" << e[1] << ", " << threads << " threads";
+      }
+      EXPECT_GT(std::count(twin.begin(), twin.end(), -2), 0);  // the repeated triangles' edges
+      EXPECT_EQ(ix.twin, twin) << threads;
+      std::vector<std::array<int, 2>> each;
+      ix.each_edge([&each](int x, int y, std::size_t) { each.push_back({x, y}); });
+      EXPECT_EQ(each, edges) << threads;
+      EXPECT_EQ(ix.edge_count, edges.size()) << threads;
+    }
+  }
+}
+
+// The vertex adjacency (the smaller neighbours stored, the larger ones read from the
+// buckets) against the neighbours of each vertex collected from the triangles.
+TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
+  const Mesh mesh = damaged_grid(13, 7);
+  for (int threads : {1, 2}) {
+    Pslg pslg;
+    Options o;
+    o.threads = threads;
+    Report report;
+    Certification cert(pslg, mesh, o, report);
+    pass::index_triangles(cert);
+    pass::index_half_edges(cert);
+    pass::index_adjacency(cert);
+    const MeshIndex& ix = cert.index;
+    std::vector<std::set<int>> around(mesh.vertices.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const int h = static_cast<int>(3 * t) + i;
+        around[static_cast<std::size_t>(ix.from(h))].insert(ix.to(h));
+        around[static_cast<std::size_t>(ix.to(h))].insert(ix.from(h));
+      }
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      const std::vector<int> expected(around[v].begin(), around[v].end());
+      EXPECT_EQ(ix.neighbors(static_cast<int>(v)), expected) << v;
+      for (std::size_t w = 0; w < mesh.vertices.size(); ++w)
+        ASSERT_EQ(ix.adjacent(static_cast<int>(v), static_cast<int>(w)), around[v].count(static_cast<int>(w)) > 0) << v << " " << w;
+    }
+  }
+}
+
+// The 32-bit limit, at its boundary: through the seam with a small limit (the same
+// code as the real one), and at the real one without a mesh that large.
+TEST(HalfEdgeIndex, MeshesPastTheIdsLimitAreRefusedAtTheBoundary) {
+  EXPECT_NO_THROW(check_index_limits(9, 3, 9));  // 9 vertices, 9 half-edges: ids 0..8
+  EXPECT_THROW(check_index_limits(10, 3, 9), std::length_error);
+  EXPECT_THROW(check_index_limits(9, 4, 9), std::length_error);
+  EXPECT_NO_THROW(check_index_limits(9, 3, 11));  // 11 ids hold 3 triangles, not 4
+  EXPECT_THROW(check_index_limits(9, 4, 11), std::length_error);
+  try {
+    check_index_limits(0, 4, 11);
+    ADD_FAILURE() << "not refused";
+  } catch (const std::length_error& e) {
+    EXPECT_STREQ(e.what(), "the mesh has 4 triangles; the certifier numbers their half-edges (3 a triangle) in 32-bit ids, so at most 3 triangles");
+  }
+  // The real limit: the largest half-edge id 3 t + 2 of the last triangle is INT_MAX - 2.
+  EXPECT_NO_THROW(check_index_limits(kMaxIndexIds, 715827882));
+  EXPECT_THROW(check_index_limits(kMaxIndexIds, 715827883), std::length_error);
+  EXPECT_THROW(check_index_limits(kMaxIndexIds + 1, 0), std::length_error);
+  EXPECT_EQ(3 * std::size_t{715827882} - 1, kMaxIndexIds - 2);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "exact.h"
+#include "index/index_limits.h"
 
 namespace lepp::certify {
 
@@ -12,6 +13,7 @@ constexpr std::size_t kReasons = static_cast<std::size_t>(Reason::AreaAboveBound
 
 Certification::Certification(const Pslg& pslg, const Mesh& mesh, const Options& opts, Report& out, std::optional<Check> group)
     : options(opts), report(out), index(pslg, mesh), only(group) {
+  check_index_limits(mesh.vertices.size(), mesh.triangles.size());
   report.count_by_reason.assign(kReasons, 0);
   report.min_angle_deg = options.min_angle_deg;
 }
@@ -37,13 +39,25 @@ std::pair<const MeshIndex::Half*, const MeshIndex::Half*> MeshIndex::halves_on(i
   const Half* first = halves.data() + half_begin[static_cast<std::size_t>(v)];
   const Half* last = halves.data() + half_begin[static_cast<std::size_t>(v) + 1];
   auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
-  return std::equal_range(first, last, Half{w, 0}, by_other);
+  return std::equal_range(first, last, Half(w, 0, false), by_other);
 }
 
 bool MeshIndex::adjacent(int v, int w) const {
-  for (int i = adj_begin[static_cast<std::size_t>(v)]; i < adj_begin[static_cast<std::size_t>(v) + 1]; ++i)
-    if (adj[static_cast<std::size_t>(i)] == w) return true;
-  return false;
+  if (w > v) {
+    const auto [first, last] = halves_on(v, w);
+    return first != last;
+  }
+  const auto first = lower.begin() + lower_begin[static_cast<std::size_t>(v)], last = lower.begin() + lower_begin[static_cast<std::size_t>(v) + 1];
+  return std::binary_search(first, last, w);
+}
+
+std::vector<int> MeshIndex::neighbors(int v) const {
+  const std::size_t u = static_cast<std::size_t>(v);
+  std::vector<int> out(lower.begin() + lower_begin[u], lower.begin() + lower_begin[u + 1]);
+  for (int k = half_begin[u]; k < half_begin[u + 1]; ++k)
+    if (k == half_begin[u] || halves[static_cast<std::size_t>(k)].other != halves[static_cast<std::size_t>(k) - 1].other)
+      out.push_back(halves[static_cast<std::size_t>(k)].other);
+  return out;
 }
 
 bool MeshIndex::longer(int a, int b, int c, int d) const {

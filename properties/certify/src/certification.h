@@ -62,20 +62,35 @@ struct MeshIndex {
   std::vector<char> tri_ok;            // ids valid (orientation may still be wrong)
   std::vector<char> ccw;               // valid and strictly counter-clockwise (index_triangles)
   std::vector<int> twin;               // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
-  std::vector<std::array<int, 2>> edges;  // unique edges (a < b) of valid triangles
+  std::size_t edge_count = 0;          // unique edges of valid triangles (the groups of halves)
   std::vector<char> used;
   // The half-edges of valid triangles by edge (index_half_edges): the ones whose smaller
   // end is v at [half_begin[v], half_begin[v + 1]) of halves, by larger end, then by id.
   struct Half {
-    int other;  // the larger end
-    int h;
+    Half() {}  // not zeroed: vector::resize leaves the slots to the pass that fills them all
+    Half(int larger_end, int half, bool from_smaller)
+        : other(larger_end), code(2 * static_cast<std::uint32_t>(half) + (from_smaller ? 1 : 0)) {}
+    int other;           // the larger end
+    std::uint32_t code;  // 2 h + 1 if half-edge h runs from the smaller end to the larger, 2 h if back
+    int h() const { return static_cast<int>(code >> 1); }
+    bool up() const { return (code & 1) != 0; }  // runs from the smaller end: without loading its triangle
   };
   std::vector<int> half_begin;
   std::vector<Half> halves;
+  // Each unique edge (a < b) of valid triangles, in key order: f(a, b, k) on the first
+  // half-edge k of each group of halves (the edges are not stored apart).
+  template <class F>
+  void each_edge(F&& f) const {
+    for (std::size_t v = 0; v + 1 < half_begin.size(); ++v)
+      for (std::size_t k = static_cast<std::size_t>(half_begin[v]); k < static_cast<std::size_t>(half_begin[v + 1]); ++k)
+        if (k == static_cast<std::size_t>(half_begin[v]) || halves[k].other != halves[k - 1].other) f(static_cast<int>(v), halves[k].other, k);
+  }
   std::vector<char> merged;            // an unused exact duplicate of an input vertex (merge_duplicate_vertices)
   std::vector<int> input_to_mesh;      // input vertex id -> mesh vertex id, -1 missing
   std::vector<int> mesh_to_input;      // mesh vertex id -> input vertex id, -1 Steiner
-  std::vector<int> adj_begin, adj;     // vertex adjacency (CSR)
+  // Vertex adjacency (index_adjacency): each vertex's smaller neighbours, ascending, at
+  // [lower_begin[v], lower_begin[v + 1]) of lower; its larger ones are its bucket's edges.
+  std::vector<int> lower_begin, lower;
   std::unordered_map<std::uint64_t, int> listed;      // listed constrained edge -> its segment id (-1 unknown)
   std::unordered_map<std::uint64_t, int> chain_edge;  // edge on a segment chain -> segment id
   std::vector<std::vector<int>> chains;  // per segment: mesh vertex ids from a to b, empty if not found
@@ -108,6 +123,8 @@ struct MeshIndex {
   int apex(int h) const { return T(static_cast<std::size_t>(h / 3))[static_cast<std::size_t>((h % 3 + 2) % 3)]; }
   int longest_half(std::size_t t) const { return static_cast<int>(3 * t) + longest[t]; }
   bool adjacent(int v, int w) const;
+  // Every neighbour of v, ascending: the smaller ones, then the larger ones from v's bucket.
+  std::vector<int> neighbors(int v) const;
   // The half-edges of valid triangles on edge v-w (either way), by id: a range of halves.
   std::pair<const Half*, const Half*> halves_on(int v, int w) const;
   // Edge order (ALGORITHM.md section 3): (squared length, -min id, -max id); true iff e > f.

@@ -20,6 +20,7 @@ void build_index(Certification& cert) {
   merge_duplicate_vertices(cert);
   index_domain(cert);
   index_input_vertices(cert);
+  index_adjacency(cert);
   index_chains(cert);
 }
 
@@ -61,6 +62,7 @@ Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
   pass::check_unused_vertices(cert);
   pass::check_outside_vertices_uncovered(cert);
   // 3. Constrained edges (and the index's chains); the coverage checks need the chains.
+  pass::index_adjacency(cert);
   pass::index_chains(cert);
   pass::check_split_points(cert);
   pass::check_listed_constrained_edges(cert);

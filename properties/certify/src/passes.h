@@ -16,7 +16,8 @@ void index_half_edges(Certification& cert);          // twin, edges, used; overu
 void merge_duplicate_vertices(Certification& cert);  // merged; duplicate mesh vertices (topology)
 void index_domain(Certification& cert);              // the expected domain and the input outside it
 void index_input_vertices(Certification& cert);      // input <-> mesh vertex ids; moved and missing input vertices
-void index_chains(Certification& cert);              // adjacency, segment chains; missing segments, chain vertices off them
+void index_adjacency(Certification& cert);           // vertex adjacency, listed constrained edges (reports nothing)
+void index_chains(Certification& cert);              // segment chains; missing segments, chain vertices off them
 // Every index step above, in that order.
 void build_index(Certification& cert);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Theorem 2 check on the built index: no angle over 120 degrees at an unconstrained terminal edge.
 #include "../passes.h"
+#include "../prefetch.h"
 #include "../ranges.h"
 #include "lepp/stats.h"
 #include "lepp/certify/checks.h"
@@ -14,6 +15,7 @@ void check_terminal_edges(Certification& cert) {
   // counters: [0] terminal pairs checked.
   const auto counts = over_ranges(cert, ix.mesh.triangles.size(), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     for (std::size_t t = begin; t < end; ++t) {
+      if (t + kAhead < end) prefetch_across_longest(ix, t + kAhead);
       if (!ix.tri_ok[t]) continue;
       const int h = ix.longest_half(t), g = ix.twin[static_cast<std::size_t>(h)];
       if (g < h || ix.constrained_half[static_cast<std::size_t>(h)]) continue;  // once per pair; boundary, bad, constrained skipped

@@ -45,7 +45,7 @@ void check_coverage(Certification& cert) {
   auto halves_of_chain = [&ix](int x, int y) {
     std::array<int, 2> pair{-1, -1};
     for (auto [first, last] = ix.halves_on(x, y); first != last; ++first)
-      pair[ix.from(first->h) < ix.to(first->h) ? 0 : 1] = first->h;
+      pair[first->up() ? 0 : 1] = first->h();
     return pair;
   };
   for (std::size_t s = 0; s < ix.chains.size(); ++s) {
@@ -114,12 +114,12 @@ void check_euler(Certification& cert) {
   for (char u : ix.used) v += u;
   std::size_t f = 0;
   for (char ok : ix.tri_ok) f += ok;
-  const long euler = v - static_cast<long>(ix.edges.size()) + static_cast<long>(f);
+  const long euler = v - static_cast<long>(ix.edge_count) + static_cast<long>(f);
   cert.report.stats.euler_mesh = euler;
   cert.report.stats.euler_domain = ix.domain.euler;
   if (euler != ix.domain.euler)
     cert.add({Reason::EulerCharacteristic,
-              fmt::format("V - E + F = {} - {} + {} = {}, the domain's is {}", v, ix.edges.size(), f, euler, ix.domain.euler), {}, {}, {}, {}, -1});
+              fmt::format("V - E + F = {} - {} + {} = {}, the domain's is {}", v, ix.edge_count, f, euler, ix.domain.euler), {}, {}, {}, {}, -1});
 }
 
 void topology(Certification& cert) {

@@ -4,34 +4,46 @@
 #include <utility>
 
 #include "../passes.h"
+#include "../prefetch.h"
 #include "chain_predicates.h"
 #include "segment_walk.h"
 
 namespace lepp::certify::pass {
 namespace {
 
+// Each vertex's smaller neighbours (its larger ones are its bucket's edges, not copied):
+// from the half-edges grouped by edge (MeshIndex::each_edge's order, smaller ends
+// ascending, so each list comes out ascending). The larger ends are scattered (a cache
+// miss each at 10^7 triangles): their counts and slots are asked for kAhead halves ahead.
 void build_adjacency(MeshIndex& ix) {
-  ix.adj_begin.assign(ix.mesh.vertices.size() + 1, 0);
-  for (const auto& e : ix.edges) {
-    ++ix.adj_begin[static_cast<std::size_t>(e[0]) + 1];
-    ++ix.adj_begin[static_cast<std::size_t>(e[1]) + 1];
-  }
-  for (std::size_t i = 1; i < ix.adj_begin.size(); ++i) ix.adj_begin[i] += ix.adj_begin[i - 1];
-  ix.adj.assign(static_cast<std::size_t>(ix.adj_begin.back()), 0);
-  std::vector<int> fill(ix.adj_begin.begin(), ix.adj_begin.end() - 1);
-  for (const auto& e : ix.edges) {
-    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[0])]++)] = e[1];
-    ix.adj[static_cast<std::size_t>(fill[static_cast<std::size_t>(e[1])]++)] = e[0];
-  }
+  const std::vector<MeshIndex::Half>& halves = ix.halves;
+  // The larger end of the half-edge `ahead` places on, if there is one.
+  auto larger_end = [&halves](std::size_t k, std::size_t ahead) {
+    return k + ahead < halves.size() ? static_cast<std::size_t>(halves[k + ahead].other) : 0;
+  };
+  ix.lower_begin.assign(ix.mesh.vertices.size() + 1, 0);
+  ix.each_edge([&](int, int b, std::size_t k) {
+    prefetch_write(&ix.lower_begin[larger_end(k, kAhead) + 1]);
+    ++ix.lower_begin[static_cast<std::size_t>(b) + 1];
+  });
+  for (std::size_t i = 1; i < ix.lower_begin.size(); ++i) ix.lower_begin[i] += ix.lower_begin[i - 1];
+  ix.lower.assign(static_cast<std::size_t>(ix.lower_begin.back()), 0);
+  std::vector<int> fill(ix.lower_begin.begin(), ix.lower_begin.end() - 1);
+  ix.each_edge([&](int a, int b, std::size_t k) {
+    prefetch_write(&fill[larger_end(k, kAhead)]);
+    prefetch_write(ix.lower.data() + fill[larger_end(k, kAhead / 2)]);  // may be one past a full list
+    ix.lower[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+  });
   for (const ConstrainedEdge& e : ix.mesh.constrained_edges) ix.listed[edge_key(e.a, e.b)] = e.segment;
 }
 
 }  // namespace
 
+void index_adjacency(Certification& cert) { build_adjacency(cert.index); }
+
 // Each segment's chain of mesh edges (segment_walk.h), its edges and its Steiner vertices.
 void index_chains(Certification& cert) {
   MeshIndex& ix = cert.index;
-  build_adjacency(ix);
   ix.chains.assign(ix.pslg.segments.size(), {});
   ix.vertex_segment.assign(ix.mesh.vertices.size(), -1);
   ix.constrained_half.assign(ix.mesh.triangles.size() * 3, 0);
@@ -73,7 +85,7 @@ void index_chains(Certification& cert) {
   // half-edge looked up in the hash).
   for (const auto& [key, seg] : ix.chain_edge) {
     const std::array<int, 2> e = edge_ends(key);
-    for (auto [first, last] = ix.halves_on(e[0], e[1]); first != last; ++first) ix.constrained_half[static_cast<std::size_t>(first->h)] = 1;
+    for (auto [first, last] = ix.halves_on(e[0], e[1]); first != last; ++first) ix.constrained_half[static_cast<std::size_t>(first->h())] = 1;
   }
   cert.report.stats.constrained_edges = ix.chain_edge.size();
   // Sorted: the checks and reports that scan them do not depend on the hash's order.

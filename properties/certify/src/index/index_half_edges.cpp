@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "../passes.h"
+#include "../prefetch.h"
 #include "../ranges.h"
 
 namespace lepp::certify::pass {
@@ -18,21 +19,30 @@ void index_half_edges(Certification& cert) {
   // The same order as a sort of (key, id), in linear time. With threads, each range of
   // triangles counts and places its own half-edges (a bucket holds range 0's, then range
   // 1's, ..., so still by id), then each range of smaller ends sorts and pairs its buckets
-  // alone; the edges and violations merge in range order.
+  // alone; the edges and violations merge in range order. Each step's scattered reads and
+  // writes (counts, bucket slots, twins) are asked for a few triangles or half-edges ahead
+  // (prefetch.h): at 10^7 triangles nearly every one is a cache miss.
   const std::size_t nv = ix.mesh.vertices.size(), nt = ix.mesh.triangles.size();
   const std::size_t tri_ranges = range_count(cert, nt);
   std::vector<std::vector<int>> next(tri_ranges);  // per range of triangles: counts per smaller end, then where its next half goes
-  auto each_half = [&ix](std::size_t begin, std::size_t end, auto&& f) {
-    for (std::size_t t = begin; t < end; ++t) {
-      if (!ix.tri_ok[t]) continue;
-      const Tri& x = ix.T(t);
-      for (std::size_t i = 0; i < 3; ++i) f(static_cast<int>(3 * t + i), x[i], x[(i + 1) % 3]);
-    }
+  // The two smaller ends of triangle t's three edges (its smallest vertex is the smaller end of two).
+  auto smaller_ends = [&ix](std::size_t t) {
+    const Tri& x = ix.T(t);
+    const int lo = std::min({x[0], x[1], x[2]}), mid = std::max(std::min(x[0], x[1]), std::min(std::max(x[0], x[1]), x[2]));
+    return std::array<std::size_t, 2>{static_cast<std::size_t>(lo), static_cast<std::size_t>(mid)};
+  };
+  auto each_half = [&ix](std::size_t t, auto&& f) {
+    const Tri& x = ix.T(t);
+    for (std::size_t i = 0; i < 3; ++i) f(static_cast<int>(3 * t + i), x[i], x[(i + 1) % 3]);
   };
   over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& count = next[found.range];
     count.assign(nv, 0);
-    each_half(begin, end, [&](int, int a, int b) { ++count[static_cast<std::size_t>(std::min(a, b))]; });
+    for (std::size_t t = begin; t < end; ++t) {
+      if (t + kAhead < end && ix.tri_ok[t + kAhead])
+        for (std::size_t v : smaller_ends(t + kAhead)) prefetch_write(&count[v]);
+      if (ix.tri_ok[t]) each_half(t, [&](int, int a, int b) { ++count[static_cast<std::size_t>(std::min(a, b))]; });
+    }
   });
   ix.half_begin.assign(nv + 1, 0);
   for (std::size_t v = 0, at = 0; v < nv; ++v) {
@@ -43,9 +53,14 @@ void index_half_edges(Certification& cert) {
   ix.halves.resize(static_cast<std::size_t>(ix.half_begin[nv]));
   over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& at = next[found.range];
-    each_half(begin, end, [&](int h, int a, int b) {
-      ix.halves[static_cast<std::size_t>(at[static_cast<std::size_t>(std::min(a, b))]++)] = {std::max(a, b), h};
-    });
+    for (std::size_t t = begin; t < end; ++t) {
+      if (t + kAhead < end && ix.tri_ok[t + kAhead])
+        for (std::size_t v : smaller_ends(t + kAhead)) prefetch_write(&at[v]);
+      if (t + kAhead / 2 < end && ix.tri_ok[t + kAhead / 2])  // its slots, where those counts now point
+        for (std::size_t v : smaller_ends(t + kAhead / 2)) prefetch_write(&ix.halves[static_cast<std::size_t>(at[v])]);
+      if (ix.tri_ok[t])
+        each_half(t, [&](int h, int a, int b) { ix.halves[static_cast<std::size_t>(at[static_cast<std::size_t>(std::min(a, b))]++)] = Half(std::max(a, b), h, a < b); });
+    }
   });
   next.clear();
   ix.used.assign(nv, 0);
@@ -53,45 +68,47 @@ void index_half_edges(Certification& cert) {
     if (ix.tri_ok[t])
       for (int v : ix.T(t)) ix.used[static_cast<std::size_t>(v)] = 1;
   ix.twin.assign(nt * 3, -1);
-  std::vector<std::vector<std::array<int, 2>>> range_edges(range_count(cert, nv));
-  over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  // counters: [0] edges.
+  ix.edge_count = over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
     // edges, the library's merge sort for a vertex of high degree (a fan's centre).
     auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
-    std::vector<std::array<int, 2>>& edges = range_edges[found.range];
-    // At most one edge per half-edge (a boundary edge has one): reserved so, the vector never
-    // grows by copying (half of that, the estimate before, was short by the boundary's
-    // edges, and the last growth copied the whole list). Capacity not written costs no memory.
-    edges.reserve(static_cast<std::size_t>(ix.half_begin[end] - ix.half_begin[begin]));
+    const std::size_t first_half = static_cast<std::size_t>(ix.half_begin[begin]), end_half = static_cast<std::size_t>(ix.half_begin[end]);
+    std::size_t asked = first_half;  // the twins of the halves before it are asked for
     for (std::size_t v = begin; v < end; ++v) {
       const auto first = ix.halves.begin() + ix.half_begin[v], last = ix.halves.begin() + ix.half_begin[v + 1];
+      for (const std::size_t until = std::min(static_cast<std::size_t>(ix.half_begin[v + 1]) + kAhead, end_half); asked < until; ++asked)
+        prefetch_write(&ix.twin[static_cast<std::size_t>(ix.halves[asked].h())]);
       if (last - first > 32) {
         std::stable_sort(first, last, by_other);
       } else {
         for (auto it = first; it != last; ++it)
           for (auto k = it; k != first && by_other(*k, *(k - 1)); --k) std::iter_swap(k, k - 1);
       }
+      const int lo = static_cast<int>(v);
       for (auto i = first; i != last;) {
         auto j = i;
         while (j != last && j->other == i->other) ++j;
-        const int a = ix.from(i->h), b = ix.to(i->h);
-        edges.push_back({std::min(a, b), std::max(a, b)});
+        const int hi = i->other;
+        ++found.counters[0];
         if (j - i > 2) {
+          const int a = i->up() ? lo : hi, b = i->up() ? hi : lo;  // the first half-edge's way
           Violation bad{Reason::EdgeOverused,
                         fmt::format("edge {}-{} {} {} lies in {} triangles (overlap)", a, b, pt(ix.P(a)), pt(ix.P(b)), j - i), {}, {{a, b}},
                         {a, b}, {}, -1};
           for (auto k = i; k != j; ++k) {
-            bad.triangles.push_back(k->h / 3);
-            ix.twin[static_cast<std::size_t>(k->h)] = -2;
+            bad.triangles.push_back(k->h() / 3);
+            ix.twin[static_cast<std::size_t>(k->h())] = -2;
           }
           found.add(std::move(bad));
         } else if (j - i == 2) {
-          const int h0 = i->h, h1 = (i + 1)->h;
-          if (ix.from(h0) == ix.from(h1)) {
+          const int h0 = i->h(), h1 = (i + 1)->h();
+          if (i->up() == (i + 1)->up()) {
+            const int a = i->up() ? lo : hi, b = i->up() ? hi : lo;
             found.add({Reason::EdgeSameDirection,
-                       fmt::format("edge {}-{} {} {} is traversed the same way by triangles {} and {} (overlap or fold)", ix.from(h0),
-                                   ix.to(h0), pt(ix.P(ix.from(h0))), pt(ix.P(ix.to(h0))), h0 / 3, h1 / 3),
-                       {h0 / 3, h1 / 3}, {{ix.from(h0), ix.to(h0)}}, {ix.from(h0), ix.to(h0)}, {}, -1});
+                       fmt::format("edge {}-{} {} {} is traversed the same way by triangles {} and {} (overlap or fold)", a, b,
+                                   pt(ix.P(a)), pt(ix.P(b)), h0 / 3, h1 / 3),
+                       {h0 / 3, h1 / 3}, {{a, b}}, {a, b}, {}, -1});
             ix.twin[static_cast<std::size_t>(h0)] = ix.twin[static_cast<std::size_t>(h1)] = -2;
           } else {
             ix.twin[static_cast<std::size_t>(h0)] = h1;
@@ -101,10 +118,7 @@ void index_half_edges(Certification& cert) {
         i = j;
       }
     }
-  });
-  // In range order: the first range's list taken over (one thread: no copy), the others appended.
-  ix.edges = std::move(range_edges.front());
-  for (std::size_t r = 1; r < range_edges.size(); ++r) ix.edges.insert(ix.edges.end(), range_edges[r].begin(), range_edges[r].end());
+  })[0];
 }
 
 namespace {
@@ -118,10 +132,13 @@ bool any_duplicate_point(const std::vector<Point>& points) {
   while (size < 2 * points.size()) size *= 2, ++bits;
   std::vector<int> slot(size, -1);
   const PointHash hash;
+  auto home = [&](const Point& p) { return static_cast<std::size_t>((hash(p) * 0x9E3779B97F4A7C15ull) >> (64 - bits)); };
   for (std::size_t i = 0; i < points.size(); ++i) {
+    // The slot a point kAhead on starts at (scattered over the table: a cache miss each), asked for now.
+    if (i + kAhead < points.size()) prefetch_write(&slot[home(points[i + kAhead])]);
     const Point& p = points[i];
     if (!finite(p)) continue;  // NaN is equal to nothing; the sort below skips it too
-    for (std::size_t k = (hash(p) * 0x9E3779B97F4A7C15ull) >> (64 - bits);; k = (k + 1) & (size - 1)) {
+    for (std::size_t k = home(p);; k = (k + 1) & (size - 1)) {
       if (slot[k] < 0) {
         slot[k] = static_cast<int>(i);
         break;

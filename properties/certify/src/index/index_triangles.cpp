@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "../exact.h"
+#include "../prefetch.h"
 #include "../passes.h"
 #include "../ranges.h"
 #include "lepp/angle.h"
@@ -59,6 +60,7 @@ void index_triangles(Certification& cert) {
     std::vector<MeshIndex::BelowTheta>& below = ix.below_theta[found.range];
     std::vector<std::size_t>& above = ix.area_bound.above[found.range];
     for (std::size_t t = begin; t < end; ++t) {
+      if (t + kAhead < end) prefetch_points(ix, ix.T(t + kAhead));
       const Tri& x = ix.T(t);
       bool ids = true;
       for (int v : x) ids = ids && v >= 0 && v < n;

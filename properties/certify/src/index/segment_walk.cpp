@@ -28,8 +28,7 @@ std::vector<int> listed_path(const MeshIndex& ix, int a, int b) {
   const auto listed = [&](int v, int w) { return ix.listed.count(edge_key(v, w)) != 0; };
   std::vector<int> found;
   int paths = 0;
-  for (int i = ix.adj_begin[static_cast<std::size_t>(a)]; i < ix.adj_begin[static_cast<std::size_t>(a) + 1]; ++i) {
-    const int first = ix.adj[static_cast<std::size_t>(i)];
+  for (const int first : ix.neighbors(a)) {
     if (!listed(a, first)) continue;
     std::vector<int> path{a};
     for (int prev = a, v = first;;) {
@@ -44,8 +43,7 @@ std::vector<int> listed_path(const MeshIndex& ix, int a, int b) {
       }
       path.push_back(v);
       int next = -1, listed_edges = 0;
-      for (int j = ix.adj_begin[static_cast<std::size_t>(v)]; j < ix.adj_begin[static_cast<std::size_t>(v) + 1]; ++j) {
-        const int w = ix.adj[static_cast<std::size_t>(j)];
+      for (const int w : ix.neighbors(v)) {
         if (!listed(v, w)) continue;
         ++listed_edges;
         if (w != prev) next = w;
@@ -88,8 +86,7 @@ std::vector<int> walk(const MeshIndex& ix, int a, int b) {
   // The steps from v, in the order they are tried.
   auto steps = [&](int v) {
     std::vector<int> ahead_of_v;
-    for (int i = ix.adj_begin[static_cast<std::size_t>(v)]; i < ix.adj_begin[static_cast<std::size_t>(v) + 1]; ++i) {
-      const int w = ix.adj[static_cast<std::size_t>(i)];
+    for (const int w : ix.neighbors(v)) {
       // Never an input vertex: validate() split every segment at the input vertices
       // exactly on it, so one inside a segment is off it, however near.
       if (ix.mesh_to_input[static_cast<std::size_t>(w)] < 0 && ahead(A, B, ix.P(v), ix.P(w)) > 0 && ahead(A, B, ix.P(w), B) > 0)
