@@ -90,9 +90,8 @@ inline int compare_sqlen(const Point& a, const Point& b, double lab, const Point
   return s != 2 ? s : detail::compare_sqlen_exact(a, b, c, d);
 }
 
-// Skinny test of ALGORITHM.md section 4 at the vertex apex opposite the shortest
-// edge bc: true iff cross(b - apex, c - apex)^2 < s * |b - apex|^2 * |c - apex|^2.
-inline bool skinny_at(const Point& apex, const Point& b, const Point& c, double s) {
+// Sign of s * |b - apex|^2 * |c - apex|^2 - cross(b - apex, c - apex)^2.
+inline int skinny_sign(const Point& apex, const Point& b, const Point& c, double s) {
   double ux = b.x - apex.x, uy = b.y - apex.y, vx = c.x - apex.x, vy = c.y - apex.y;
   double c1 = ux * vy, c2 = uy * vx;
   double cross = c1 - c2, pc = std::fabs(c1) + std::fabs(c2);
@@ -105,18 +104,27 @@ inline bool skinny_at(const Point& apex, const Point& b, const Point& c, double 
   // squares are within 4 of each other, so a subnormal one makes P subnormal.)
   const double underflow = (uu + vv) * 0x1p-1070 + 0x1p-1070;
   int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6, underflow);
-  if (sign == 2) sign = detail::skinny_sign_exact(apex, b, c, s);
-  return sign > 0;
+  return sign != 2 ? sign : detail::skinny_sign_exact(apex, b, c, s);
 }
 
-// Size test: |cross(b - a, c - a)| > twice_area, exactly.
-inline bool area_above(const Point& a, const Point& b, const Point& c, double twice_area) {
+// Skinny test of ALGORITHM.md section 4 at the vertex apex opposite the shortest
+// edge bc: true iff cross(b - apex, c - apex)^2 < s * |b - apex|^2 * |c - apex|^2.
+inline bool skinny_at(const Point& apex, const Point& b, const Point& c, double s) {
+  return skinny_sign(apex, b, c, s) > 0;
+}
+
+// Sign of |cross(b - a, c - a)| - twice_area.
+inline int area_sign(const Point& a, const Point& b, const Point& c, double twice_area) {
   double bax = b.x - a.x, bay = b.y - a.y, cax = c.x - a.x, cay = c.y - a.y;
   double l = bax * cay, r = bay * cax;
   double value = std::fabs(l - r) - twice_area;
   int s = detail::filtered_sign(value, std::fabs(l) + std::fabs(r) + twice_area, 4);
-  if (s == 2) s = detail::area_sign_exact(a, b, c, twice_area);
-  return s > 0;
+  return s != 2 ? s : detail::area_sign_exact(a, b, c, twice_area);
+}
+
+// Size test: |cross(b - a, c - a)| > twice_area, exactly.
+inline bool area_above(const Point& a, const Point& b, const Point& c, double twice_area) {
+  return area_sign(a, b, c, twice_area) > 0;
 }
 
 // Sign of dot(a - v, b - v).
@@ -126,12 +134,14 @@ inline int dot_sign(const Point& v, const Point& a, const Point& b) {
   return s != 2 ? s : detail::dot_sign_exact(v, a, b);
 }
 
-// |ab|^2 < floor^2, exactly (floor^2 as the rational it is, not rounded).
-inline bool sqlen_below(const Point& a, const Point& b, double floor) {
+// Sign of floor^2 - |ab|^2, exactly (floor^2 as the rational it is, not rounded).
+inline int sqlen_below_sign(const Point& a, const Point& b, double floor) {
   double l = sqlen(a, b), f = floor * floor;
   int s = detail::filtered_sign(f - l, f + l, 4);
-  if (s == 2) s = detail::sqlen_below_exact(a, b, floor);
-  return s > 0;
+  return s != 2 ? s : detail::sqlen_below_exact(a, b, floor);
 }
+
+// |ab|^2 < floor^2, exactly.
+inline bool sqlen_below(const Point& a, const Point& b, double floor) { return sqlen_below_sign(a, b, floor) > 0; }
 
 }  // namespace lepp::fast

@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 
+#include "exact_doubles.h"
 #include "predicates.h"
 
 namespace lepp::fast {
@@ -147,6 +148,103 @@ TEST(Predicates, UnderflowInASquareTimesALargeOne) {
     ASSERT_EQ(skinny_at(o, near, far, s), exact_skinny_at(o, near, far, s)) << "trial " << trial;
     ASSERT_EQ(skinny_at(o, far, near, s), exact_skinny_at(o, far, near, s)) << "trial " << trial;
   }
+}
+
+// The exact path's doubles (exact_doubles.h) answer only when every step was exact;
+// each kind of inexact step must leave the case to Mpzf (2), never a sign.
+TEST(ExactDoubles, EveryInexactStepIsUndecided) {
+  using detail::compare_sqlen_in_doubles;
+  // Exact everywhere: grid ties and cocircular grid points, answered in doubles.
+  EXPECT_EQ(compare_sqlen_in_doubles({1, 1}, {4, 5}, {0, 0}, {0, 5}), 0);
+  EXPECT_EQ(detail::incircle_in_doubles({5, 0}, {3, 4}, {-5, 0}, {4, -3}), 0);
+  EXPECT_EQ(detail::orient_in_doubles({0, 0}, {1, 1}, {3, 3}), 0);
+  EXPECT_EQ(detail::dot_sign_in_doubles({0, 0}, {1, 0}, {0, 7}), 0);
+  EXPECT_EQ(detail::skinny_sign_in_doubles({0, 0}, {1, 0}, {1, 1}, 0.5), 0);  // 45 degrees, sin^2 = 1/2
+  EXPECT_EQ(detail::area_sign_in_doubles({0, 0}, {2, 0}, {0, 3}, 6), 0);
+  EXPECT_EQ(detail::sqlen_below_in_doubles({0, 0}, {3, 4}, 5), 0);
+  // A difference rounded: 1 - (-2^-60) is 1 in doubles.
+  EXPECT_EQ(compare_sqlen_in_doubles({1, 0}, {-0x1p-60, 0}, {1, 0}, {0, 0}), 2);
+  // A square rounded: (1 + 2^-30)^2 needs 61 bits.
+  EXPECT_EQ(compare_sqlen_in_doubles({0, 0}, {1 + 0x1p-30, 0}, {0, 0}, {1 + 0x1p-30 - 0x1p-52, 0}), 2);
+  // A square below the range: 2^-600 squared vanishes beside 1, fma's error term with it.
+  EXPECT_EQ(compare_sqlen_in_doubles({0, 0}, {1, 0x1p-600}, {0, 0}, {1, 0}), 2);
+  // A sum rounded: 1 + 2^-60 against 1.
+  EXPECT_EQ(compare_sqlen_in_doubles({0, 0}, {1, 0x1p-30}, {0, 0}, {1, 0}), 2);
+  // An overflow: the sum's check sees NaN.
+  EXPECT_EQ(detail::orient_in_doubles({-1e308, 0}, {1e308, 1}, {0, 2}), 2);
+  // The last sum rounded: 1 + 2^-60.
+  EXPECT_EQ(detail::dot_sign_in_doubles({0, 0}, {1, 0x1p-30}, {1, 0x1p-30}), 2);
+}
+
+// Exact signs, zero included, for the predicates whose callers see only a test.
+int q_sign(const Q& v) { return v > 0 ? 1 : v < 0 ? -1 : 0; }
+int q_skinny_sign(const Point& o, const Point& p, const Point& q, double s) {
+  Q ux = Q(p.x) - Q(o.x), uy = Q(p.y) - Q(o.y), wx = Q(q.x) - Q(o.x), wy = Q(q.y) - Q(o.y);
+  Q cross = ux * wy - uy * wx;
+  return q_sign(Q(s) * (ux * ux + uy * uy) * (wx * wx + wy * wy) - cross * cross);
+}
+int q_area_sign(const Point& a, const Point& b, const Point& c, double twice) {
+  Q cross = (Q(b.x) - Q(a.x)) * (Q(c.y) - Q(a.y)) - (Q(b.y) - Q(a.y)) * (Q(c.x) - Q(a.x));
+  if (cross < 0) cross = -cross;
+  return q_sign(cross - Q(twice));
+}
+int q_dot_sign(const Point& v, const Point& a, const Point& b) {
+  return q_sign((Q(a.x) - Q(v.x)) * (Q(b.x) - Q(v.x)) + (Q(a.y) - Q(v.y)) * (Q(b.y) - Q(v.y)));
+}
+int q_sqlen_below_sign(const Point& a, const Point& b, double floor) {
+  Q dx = Q(b.x) - Q(a.x), dy = Q(b.y) - Q(a.y);
+  return q_sign(Q(floor) * Q(floor) - (dx * dx + dy * dy));
+}
+// sin^2 of the smallest angle is cross^2 / M, M the largest product of two squared sides.
+Q q_sin2(const Point* t) {
+  auto l = [&](int i, int j) -> Q {  // a Q, not gmpxx's expression of locals
+    Q dx = Q(t[j].x) - Q(t[i].x), dy = Q(t[j].y) - Q(t[i].y);
+    return dx * dx + dy * dy;
+  };
+  Q cross = (Q(t[1].x) - Q(t[0].x)) * (Q(t[2].y) - Q(t[0].y)) - (Q(t[1].y) - Q(t[0].y)) * (Q(t[2].x) - Q(t[0].x));
+  Q la = l(0, 1), lb = l(0, 2), lc = l(1, 2);
+  Q m = la * lb;
+  if (la * lc > m) m = la * lc;
+  if (lb * lc > m) m = lb * lc;
+  return cross * cross / m;
+}
+
+// Points a few units of 2^e apart (e down to the subnormals), several scales in one
+// call: the exact path reruns the filter at scale (tiny points), tries doubles, then
+// Mpzf. Every predicate's exact sign, zero included, against rationals.
+TEST(Predicates, TinyClustersAgreeWithExactArithmetic) {
+  std::mt19937_64 rng(40);
+  std::uniform_int_distribution<int> small(-4, 4), pick(0, 5);
+  const int exponents[] = {-1074, -1070, -1050, -800, -540, -300, -60, 0};
+  int zeros = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int e1 = exponents[pick(rng)], e2 = exponents[pick(rng) + 2];
+    auto pt = [&]() {
+      const int e = pick(rng) < 4 ? e1 : e2;  // mostly one scale, sometimes another
+      return Point{std::ldexp(small(rng), e), std::ldexp(small(rng), e)};
+    };
+    const Point a = pt(), b = pt(), c = pt(), d = pt();
+    SCOPED_TRACE(::testing::Message() << std::hexfloat << a.x << " " << a.y << " | " << b.x << " " << b.y << " | "
+                                      << c.x << " " << c.y << " | " << d.x << " " << d.y);
+    ASSERT_EQ(orient(a, b, c), static_cast<int>(CGAL::orientation(kp(a), kp(b), kp(c))));
+    if (orient(a, b, c) > 0)
+      ASSERT_EQ(incircle(a, b, c, d), static_cast<int>(CGAL::side_of_oriented_circle(kp(a), kp(b), kp(c), kp(d))));
+    ASSERT_EQ(compare_sqlen(a, b, sqlen(a, b), c, d, sqlen(c, d)), exact_compare_sqlen(a, b, c, d));
+    ASSERT_EQ(dot_sign(a, b, c), q_dot_sign(a, b, c));
+    for (double s : {0.25, 0.5, 0.1}) ASSERT_EQ(skinny_sign(a, b, c, s), q_skinny_sign(a, b, c, s));
+    const double twice = std::fabs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    ASSERT_EQ(area_sign(a, b, d, twice), q_area_sign(a, b, d, twice));
+    ASSERT_EQ(area_sign(a, b, c, twice), q_area_sign(a, b, c, twice));
+    const double floor = std::sqrt(sqlen(c, d));
+    ASSERT_EQ(sqlen_below_sign(a, b, floor), q_sqlen_below_sign(a, b, floor));
+    const Point t1[3] = {a, b, c}, t2[3] = {a, c, d};
+    if (orient(a, b, c) != 0 && orient(a, c, d) != 0) {
+      const Q s1 = q_sin2(t1), s2 = q_sin2(t2);
+      ASSERT_EQ(detail::compare_sin2_exact(t1, t2), s1 < s2 ? -1 : s1 > s2 ? 1 : 0);
+    }
+    zeros += exact_compare_sqlen(a, b, c, d) == 0;
+  }
+  EXPECT_GT(zeros, 0);  // the family holds exact ties
 }
 
 TEST(Predicates, ExactTiesAreZero) {

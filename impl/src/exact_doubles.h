@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The predicates' exact path (exact_fallback.cpp) first tries doubles: the
+// polynomial evaluated step by step, each step checked exact (a sum or
+// difference by Knuth's TwoSum, a product by fma's error term), so that the
+// sign of the last double is the exact sign. Where the filter fails on grid
+// inputs and their midpoints (lengths that tie, cocircular points), every step
+// usually is exact, and CGAL::Mpzf (allocations, GMP) is not needed; the first
+// inexact step hands the case to Mpzf.
+//
+// Ranges: a product's error term is a double when both factors are 0 or lie in
+// [2^-480, 2^480] (their product's last bit is at least 2^-1064, above the
+// smallest subnormal; no overflow); TwoSum's error term is exact unless the sum
+// overflows, and an overflow leaves NaN in the check, which fails it.
+#pragma once
+#include <cmath>
+
+#include "lepp/pslg.h"
+
+namespace lepp::fast::detail {
+
+class ExactDoubles {
+ public:
+  double add(double x, double y) {
+    const double s = x + y, yy = s - x;
+    exact_ = exact_ && (x - (s - yy)) + (y - yy) == 0;
+    return s;
+  }
+  double sub(double x, double y) { return add(x, -y); }
+  double mul(double x, double y) {
+    const double p = x * y;
+    exact_ = exact_ && fits(x) && fits(y) && std::fma(x, y, -p) == 0;
+    return p;
+  }
+  bool exact() const { return exact_; }
+  // The sign of v, a value this evaluation computed: -1, 0, +1, or 2 if a step was inexact.
+  int sign(double v) const { return exact_ ? (v > 0) - (v < 0) : 2; }
+
+ private:
+  static bool fits(double v) {
+    const double m = std::fabs(v);
+    return m == 0 || (m >= 0x1p-480 && m <= 0x1p480);
+  }
+  bool exact_ = true;
+};
+
+// The predicates of predicates.h in doubles: their exact sign, or 2 if a step was inexact.
+inline int orient_in_doubles(const Point& a, const Point& b, const Point& c) {
+  ExactDoubles e;
+  const double bax = e.sub(b.x, a.x), bay = e.sub(b.y, a.y), cax = e.sub(c.x, a.x), cay = e.sub(c.y, a.y);
+  return e.sign(e.sub(e.mul(bax, cay), e.mul(bay, cax)));
+}
+
+inline int incircle_in_doubles(const Point& a, const Point& b, const Point& c, const Point& d) {
+  ExactDoubles e;
+  const double adx = e.sub(a.x, d.x), ady = e.sub(a.y, d.y), bdx = e.sub(b.x, d.x), bdy = e.sub(b.y, d.y);
+  const double cdx = e.sub(c.x, d.x), cdy = e.sub(c.y, d.y);
+  const double alift = e.add(e.mul(adx, adx), e.mul(ady, ady)), blift = e.add(e.mul(bdx, bdx), e.mul(bdy, bdy));
+  const double clift = e.add(e.mul(cdx, cdx), e.mul(cdy, cdy));
+  const double bc = e.sub(e.mul(bdx, cdy), e.mul(cdx, bdy)), ca = e.sub(e.mul(cdx, ady), e.mul(adx, cdy));
+  const double ab = e.sub(e.mul(adx, bdy), e.mul(bdx, ady));
+  return e.sign(e.add(e.add(e.mul(alift, bc), e.mul(blift, ca)), e.mul(clift, ab)));
+}
+
+inline double squared_length(ExactDoubles& e, const Point& a, const Point& b) {
+  const double dx = e.sub(b.x, a.x), dy = e.sub(b.y, a.y);
+  return e.add(e.mul(dx, dx), e.mul(dy, dy));
+}
+
+inline int compare_sqlen_in_doubles(const Point& a, const Point& b, const Point& c, const Point& d) {
+  ExactDoubles e;
+  return e.sign(e.sub(squared_length(e, a, b), squared_length(e, c, d)));
+}
+
+inline int skinny_sign_in_doubles(const Point& apex, const Point& b, const Point& c, double s) {
+  ExactDoubles e;
+  const double ux = e.sub(b.x, apex.x), uy = e.sub(b.y, apex.y), vx = e.sub(c.x, apex.x), vy = e.sub(c.y, apex.y);
+  const double cross = e.sub(e.mul(ux, vy), e.mul(uy, vx));
+  const double uu = e.add(e.mul(ux, ux), e.mul(uy, uy)), vv = e.add(e.mul(vx, vx), e.mul(vy, vy));
+  return e.sign(e.sub(e.mul(s, e.mul(uu, vv)), e.mul(cross, cross)));
+}
+
+inline int area_sign_in_doubles(const Point& a, const Point& b, const Point& c, double twice_area) {
+  ExactDoubles e;
+  const double bax = e.sub(b.x, a.x), bay = e.sub(b.y, a.y), cax = e.sub(c.x, a.x), cay = e.sub(c.y, a.y);
+  const double cross = e.sub(e.mul(bax, cay), e.mul(bay, cax));
+  return e.sign(e.sub(std::fabs(cross), twice_area));
+}
+
+inline int dot_sign_in_doubles(const Point& v, const Point& a, const Point& b) {
+  ExactDoubles e;
+  return e.sign(e.add(e.mul(e.sub(a.x, v.x), e.sub(b.x, v.x)), e.mul(e.sub(a.y, v.y), e.sub(b.y, v.y))));
+}
+
+inline int sqlen_below_in_doubles(const Point& a, const Point& b, double floor) {
+  ExactDoubles e;
+  const double l = squared_length(e, a, b);
+  return e.sign(e.sub(e.mul(floor, floor), l));
+}
+
+// compare_sin2_exact's terms (a, b: three points each): sign(cross_a^2 M_b - cross_b^2 M_a),
+// M the largest product of two squared edge lengths.
+inline int compare_sin2_in_doubles(const Point* a, const Point* b) {
+  ExactDoubles e;
+  auto terms = [&e](const Point* t, double& cross2, double& m) {
+    const double ux = e.sub(t[1].x, t[0].x), uy = e.sub(t[1].y, t[0].y);
+    const double vx = e.sub(t[2].x, t[0].x), vy = e.sub(t[2].y, t[0].y);
+    const double cross = e.sub(e.mul(ux, vy), e.mul(uy, vx));
+    cross2 = e.mul(cross, cross);
+    const double la = squared_length(e, t[0], t[1]), lb = squared_length(e, t[0], t[2]);
+    const double lc = squared_length(e, t[1], t[2]);
+    m = std::fmax(std::fmax(e.mul(la, lb), e.mul(la, lc)), e.mul(lb, lc));
+  };
+  double ca, ma, cb, mb;
+  terms(a, ca, ma);
+  terms(b, cb, mb);
+  return e.sign(e.sub(e.mul(ca, mb), e.mul(cb, ma)));
+}
+
+}  // namespace lepp::fast::detail
