@@ -8,8 +8,8 @@
 // 3.1). We trust the double sign when |value| > (2n + 2) u P, which covers
 // gamma_n, the rounding of P itself and of the bound; P must also lie in
 // [2^-900, 2^+900] so that no underflow or overflow spoiled the analysis, and
-// the degree-4 ones add an absolute term for underflow inside one product
-// (filtered_sign below).
+// in the degree-4 ones underflow inside one product must stay below u P
+// (filtered_sign's scale).
 // Otherwise the polynomial is evaluated exactly (CGAL::Mpzf, exact for + - *),
 // out of line in exact_fallback.cpp: the cold path.
 #pragma once
@@ -26,17 +26,22 @@ constexpr double kTiny = 1.3e-271;                 // about 2^-900
 constexpr double kHuge = 8.5e270;                  // about 2^+900
 // Sign of value if the filter decides it, else 2.
 //
-// `absolute`: what underflow may add beyond the relative bound. A product or square
-// whose value lies below 2^-1022 is off by up to 2^-1075 absolutely, not by u
-// relatively (sums are exact there). In a polynomial of degree 2 that error stays
-// far below the bound, since P >= 2^-900: 0 there. In one of degree 4 a subnormal
-// product can be multiplied by a large factor (in-circle: a 2x2 minor by the lift
-// of the third point, which P need not dominate), so the error grows with that
-// factor: incircle and skinny_at pass it (predicates_test's Underflow tests find
-// wrong signs without it).
-inline int filtered_sign(double value, double permanent, int depth, double absolute = 0) {
+// `scale`: underflow. A product or square whose value lies below 2^-1022 is off by
+// up to 2^-1075 absolutely, not by u relatively (sums are exact there). In a
+// polynomial of degree 2 that error stays far below the bound, since P >= 2^-900:
+// scale 0. In one of degree 4 a subnormal product can be multiplied by a large
+// factor (in-circle: a 2x2 minor by the lift of the third point, which P need not
+// dominate; predicates_test's Underflow tests find wrong signs without this), so
+// incircle and skinny_sign bound that error by 2^-1070 scale + 2^-1073. Where
+// scale <= 2^1016 P that is at most u P (P >= 2^-900), which the bound's slack
+// covers (it needs about (n + 1) u P: gamma_n for the value, u for the underflow;
+// it is (2n + 2) u P); otherwise the exact path. The test is one multiplication in
+// the normal range: an absolute term added to the bound would be subnormal, and
+// subnormal arithmetic takes a microcode assist (it made incircle half again as slow).
+inline int filtered_sign(double value, double permanent, int depth, double scale = 0) {
   if (!(permanent >= kTiny && permanent <= kHuge)) return 2;  // possible underflow/overflow: exact
-  double bound = (2 * depth + 2) * kUnit * permanent + absolute;
+  if (!(scale <= permanent * 0x1p1016)) return 2;              // underflow may exceed u P: exact
+  double bound = (2 * depth + 2) * kUnit * permanent;
   if (value > bound) return 1;
   if (value < -bound) return -1;
   return 2;
@@ -72,10 +77,10 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
                 clift * (std::fabs(ab1) + std::fabs(ab2));
   // Underflow: six minor products, each times a lift <= 2 L (L the largest lift, at
   // least every coordinate difference squared), six squares in the lifts, each times
-  // a minor <= 2 L, three final products: at most (24 L + 3) 2^-1075; taken with a
-  // margin above 2.
-  const double underflow = std::max(std::max(alift, blift), clift) * 0x1p-1068 + 0x1p-1072;
-  int s = detail::filtered_sign(det, perm, 6, underflow);
+  // a minor <= 2 L, three final products: at most (24 L + 3) 2^-1075, below
+  // 2^-1070 L + 2^-1073 (filtered_sign's scale L).
+  const double largest_lift = std::max(std::max(alift, blift), clift);
+  int s = detail::filtered_sign(det, perm, 6, largest_lift);
   return s != 2 ? s : detail::incircle_exact(a, b, c, d);
 }
 
@@ -99,11 +104,11 @@ inline int skinny_sign(const Point& apex, const Point& b, const Point& c, double
   double rhs = s * (uu * vv);
   // Underflow (s <= 1): the squares in uu times s vv and in vv times s uu, the two
   // products of rhs, and cross's two products, whose error cross^2 carries times
-  // 2 |cross| <= uu + vv: at most (uu + vv) 2^-1073 + 2^-1073; taken 8 times.
+  // 2 |cross| <= uu + vv: at most (uu + vv) 2^-1073 + 2^-1073 (filtered_sign's
+  // scale uu + vv).
   // (Quality::judge_bits needs no such term: it tests the two longest sides, whose
   // squares are within 4 of each other, so a subnormal one makes P subnormal.)
-  const double underflow = (uu + vv) * 0x1p-1070 + 0x1p-1070;
-  int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6, underflow);
+  int sign = detail::filtered_sign(rhs - cross * cross, rhs + pc * pc, 6, uu + vv);
   return sign != 2 ? sign : detail::skinny_sign_exact(apex, b, c, s);
 }
 
