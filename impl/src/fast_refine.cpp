@@ -441,8 +441,10 @@ class Refiner {
   }
 
   // The insertion's flips will read the triangles around the terminal pair:
-  // start fetching them while the point is being selected.
-  void prefetch_around(const Lepp& lepp) const {
+  // start fetching them while the point is being selected. Always inlined, as
+  // BadQueue::prefetch_ahead (GCC deletes calls to a pure function: a prefetch
+  // does not count as an effect).
+  [[gnu::always_inline]] void prefetch_around(const Lepp& lepp) const {
     for (int t : {lepp.t1, lepp.t2}) {
       if (t < 0) continue;
       __builtin_prefetch(&mesh_.stamp[static_cast<std::size_t>(t)], 1);  // the split bumps it
