@@ -11,7 +11,7 @@ objdump=$1 binary=$2
 "$objdump" -d -C --no-show-raw-insn "$binary" | awk '
   /^[0-9a-f]+ </ { fn = $0; next }
   /prefetch/ {
-    if (fn ~ /Refiner::run_queue/) queue++
+    if (fn ~ /Refiner::run(_queue)?\(/) queue++  # run_queue, or run where it is inlined
     if (fn ~ /BadQueue::pop/) pop++
     if (fn ~ /check_terminal_edges/) theorem2++
     if (fn ~ /average_lepp/) lepp_size++
