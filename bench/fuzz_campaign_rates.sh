@@ -19,22 +19,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
-# NAME TARGET RUNS [VAR=VALUE ...]: scripts/ci.d/35-fuzz-bands.sh's rows.
-rows=(
-  "parse fuzz_parse 20000"
-  "cdt fuzz_cdt 2000"
-  "refine-centroid fuzz_refine 500 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
-  "refine-midpoint fuzz_refine 500 LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
-  "refine-precision fuzz_refine 300 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
-  "differential fuzz_differential 1000"
-  "engine-lepp fuzz_engine 200 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
-  "audit fuzz_audit 5000"
-)
+source fuzz/ci_rows.sh  # CI's rows
 
 echo "| row | build | executions | wall s | CPU s | exec/s (CPU) | exec/s (wall) |"
 echo "|---|---|---:|---:|---:|---:|---:|"
 failed=0
-for row in "${rows[@]}"; do
+for row in "${fuzz_ci_rows[@]}"; do
   read -r name target runs vars <<<"$row"
   if [[ -n ${ONLY:-} && " $ONLY " != *" $name "* ]]; then continue; fi
   runs=$(( runs * scale ))
@@ -45,16 +35,11 @@ for row in "${rows[@]}"; do
   for build in "$@"; do
     work=$tmp/$name-$(basename "$(dirname "$(readlink -f "$build")")")-$(basename "$build")
     rm -rf "$work" && mkdir -p "$work/corpus" "$work/findings" "$work/known" "$work/engine"
-    env_vars=(LEPP_FUZZ_KNOWN_DIR="$work/known")
-    # shellcheck disable=SC2206
-    [[ -n ${vars:-} ]] && env_vars+=($vars)
-    if [[ $target == fuzz_engine ]]; then
-      env_vars+=("LEPP_ENGINE_CMD=$lepp refine {in} -o {out} --min-angle {theta} --method {method} --trace -q"
-                 LEPP_ENGINE_TIMEOUT=60 LEPP_ENGINE_WORK="$work/engine")
-    fi
+    # shellcheck disable=SC2086
+    fuzz_row_env "$work" "$target" "$lepp" ${vars:-}
     start=$(date +%s.%N)
     status=0
-    env "${env_vars[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "$build/fuzz/$target" -seed=1 -runs="$runs" \
+    env "${row_env[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "$build/fuzz/$target" -seed=1 -runs="$runs" \
       -timeout=300 -rss_limit_mb=4096 -malloc_limit_mb=2048 -print_final_stats=1 "${dict[@]}" \
       -artifact_prefix="$work/findings/" "$work/corpus" "$seeds" >"$work/log" 2>&1 || status=$?
     end=$(date +%s.%N)

@@ -26,17 +26,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
-# NAME TARGET [VAR=VALUE ...]: scripts/ci.d/35-fuzz-bands.sh's rows.
-rows=(
-  "parse fuzz_parse"
-  "cdt fuzz_cdt"
-  "refine-centroid fuzz_refine LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
-  "refine-midpoint fuzz_refine LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
-  "refine-precision fuzz_refine LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
-  "differential fuzz_differential"
-  "engine-lepp fuzz_engine LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
-  "audit fuzz_audit"
-)
+source fuzz/ci_rows.sh  # CI's rows (their run counts unused: a replay runs each input once)
 
 # One replay: prints "WALL CPU" in seconds, or fails with the log's finding lines.
 replay() {  # MODE NAME TARGET VARS...
@@ -44,11 +34,8 @@ replay() {  # MODE NAME TARGET VARS...
   shift 3
   local work=$tmp/$mode-$name
   rm -rf "$work" && mkdir -p "$work/known" "$work/engine"
-  local env_vars=(LEPP_FUZZ_KNOWN_DIR="$work/known" "$@")
-  if [[ $target == fuzz_engine ]]; then
-    env_vars+=("LEPP_ENGINE_CMD=$lepp refine {in} -o {out} --min-angle {theta} --method {method} --trace -q"
-               LEPP_ENGINE_TIMEOUT=60 LEPP_ENGINE_WORK="$work/engine")
-  fi
+  local row_env
+  fuzz_row_env "$work" "$target" "$lepp" "$@"
   local cmd
   if [[ $mode == release ]]; then
     cmd=("$build/fuzz/${target}_replay" --as-fuzzer "$corpus/$name")
@@ -58,7 +45,7 @@ replay() {  # MODE NAME TARGET VARS...
   fi
   local start end status=0
   start=$(date +%s.%N)
-  env "${env_vars[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "${cmd[@]}" > "$work/log" 2>&1 || status=$?
+  env "${row_env[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "${cmd[@]}" > "$work/log" 2>&1 || status=$?
   end=$(date +%s.%N)
   if [[ $status -ne 0 ]]; then
     echo "fuzz_throughput: $mode $name ($target) stopped, exit $status:" >&2
@@ -83,8 +70,8 @@ done
 echo "| row | build | inputs | wall s | CPU s | exec/s (CPU) | exec/s (wall) |"
 echo "|---|---|---:|---:|---:|---:|---:|"
 failed=0
-for row in "${rows[@]}"; do
-  read -r name target vars <<<"$row"
+for row in "${fuzz_ci_rows[@]}"; do
+  read -r name target _runs vars <<<"$row"
   if [[ -n ${ONLY:-} && " $ONLY " != *" $name "* ]]; then continue; fi
   [[ -d $corpus/$name ]] || { echo "fuzz_throughput: $corpus/$name is missing" >&2; exit 2; }
   inputs=$(find "$corpus/$name" -maxdepth 1 -type f | wc -l)

@@ -28,19 +28,8 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 failed=0
-# NAME TARGET RUNS [VAR=VALUE ...]: the bands where the paper claims termination
-# (centroid 10 to 30 degrees, midpoint 10 to 22), the precision families in the mix.
-rows=(
-  "parse fuzz_parse 20000"
-  "cdt fuzz_cdt 2000"
-  "refine-centroid fuzz_refine 500 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30"
-  "refine-midpoint fuzz_refine 500 LEPP_FUZZ_METHOD=midpoint LEPP_FUZZ_THETA=10:22"
-  "refine-precision fuzz_refine 300 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=10:30 LEPP_FUZZ_PRECISION=1"
-  "differential fuzz_differential 1000"
-  "engine-lepp fuzz_engine 200 LEPP_FUZZ_METHOD=centroid LEPP_FUZZ_THETA=20:30"
-  "audit fuzz_audit 5000"
-)
-for row in "${rows[@]}"; do
+source fuzz/ci_rows.sh
+for row in "${fuzz_ci_rows[@]}"; do
   read -r name target runs vars <<<"$row"
   [[ -n ${LEPP_CI_FUZZ_ONLY:-} && $name != "$LEPP_CI_FUZZ_ONLY" ]] && continue
   runs=$(( runs * scale ))
@@ -48,18 +37,13 @@ for row in "${rows[@]}"; do
   mkdir -p "$work/corpus" "$work/findings" "$work/known" "$work/engine"
   seeds=$root/corpus/fuzz/$target
   [[ -d $seeds ]] || seeds=$root/corpus/fuzz/fuzz_refine
-  env_vars=(LEPP_FUZZ_KNOWN_DIR="$work/known")
-  # shellcheck disable=SC2206
-  [[ -n ${vars:-} ]] && env_vars+=($vars)
-  if [[ $target == fuzz_engine ]]; then
-    env_vars+=("LEPP_ENGINE_CMD=$lepp refine {in} -o {out} --min-angle {theta} --method {method} --trace -q"
-               LEPP_ENGINE_TIMEOUT=60 LEPP_ENGINE_WORK="$work/engine")
-  fi
+  # shellcheck disable=SC2086
+  fuzz_row_env "$work" "$target" "$lepp" ${vars:-}
   dict=()
   [[ -f fuzz/$target.dict ]] && dict=(-dict="fuzz/$target.dict")
   start=$(date +%s)
   status=0
-  env "${env_vars[@]}" "$build/fuzz/$target" -seed=1 -runs="$runs" -timeout=300 -rss_limit_mb=4096 -malloc_limit_mb=2048 \
+  env "${row_env[@]}" "$build/fuzz/$target" -seed=1 -runs="$runs" -timeout=300 -rss_limit_mb=4096 -malloc_limit_mb=2048 \
     "${dict[@]}" -artifact_prefix="$work/findings/" "$work/corpus" "$seeds" >"$work/log" 2>&1 || status=$?
   secs=$(( $(date +%s) - start ))
   if [[ $status -ne 0 ]]; then
