@@ -53,16 +53,28 @@ struct Built {
   std::size_t violations = 0;
 };
 
-Built build(const Mesh& mesh, int threads) {
+// A certification of `mesh` alone (no input) on `threads` threads, with its triangle
+// and half-edge indexes built.
+struct Indexed {
   Pslg pslg;
-  Options o;
-  o.threads = threads;
+  Options options;
   Report report;
-  Certification cert(pslg, mesh, o, report);
-  pass::index_triangles(cert);
-  pass::index_half_edges(cert);
-  const MeshIndex& ix = cert.index;
-  Built b{ix.twin, ix.half_begin, {}, {}, ix.used, report.violations.size()};
+  Certification cert;
+  Indexed(const Mesh& mesh, int threads) : options(on_threads(threads)), cert(pslg, mesh, options, report) {
+    pass::index_triangles(cert);
+    pass::index_half_edges(cert);
+  }
+  static Options on_threads(int threads) {
+    Options o;
+    o.threads = threads;
+    return o;
+  }
+};
+
+Built build(const Mesh& mesh, int threads) {
+  const Indexed indexed(mesh, threads);
+  const MeshIndex& ix = indexed.cert.index;
+  Built b{ix.twin, ix.half_begin, {}, {}, ix.used, indexed.report.violations.size()};
   ix.each_edge([&b](int x, int y, std::size_t) { b.edges.push_back({x, y}); });
   EXPECT_EQ(b.edges.size(), ix.edge_count);
   for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h(), h.up()});
@@ -96,14 +108,8 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
     Mesh mesh = damaged_grid(17, seed);
     mesh.triangles.push_back({0, 1, static_cast<int>(mesh.vertices.size())});  // an id out of range: no half-edges
     for (int threads : {1, 2, 3}) {
-      Pslg pslg;
-      Options o;
-      o.threads = threads;
-      Report report;
-      Certification cert(pslg, mesh, o, report);
-      pass::index_triangles(cert);
-      pass::index_half_edges(cert);
-      const MeshIndex& ix = cert.index;
+      const Indexed indexed(mesh, threads);
+      const MeshIndex& ix = indexed.cert.index;
       std::map<std::uint64_t, std::vector<int>> by_edge;
       for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
         if (ix.tri_ok[t])
@@ -141,15 +147,9 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
 TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
   const Mesh mesh = damaged_grid(13, 7);
   for (int threads : {1, 2}) {
-    Pslg pslg;
-    Options o;
-    o.threads = threads;
-    Report report;
-    Certification cert(pslg, mesh, o, report);
-    pass::index_triangles(cert);
-    pass::index_half_edges(cert);
-    pass::index_adjacency(cert);
-    const MeshIndex& ix = cert.index;
+    Indexed indexed(mesh, threads);
+    pass::index_adjacency(indexed.cert);
+    const MeshIndex& ix = indexed.cert.index;
     std::vector<std::set<int>> around(mesh.vertices.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int i = 0; i < 3; ++i) {
