@@ -54,9 +54,7 @@ bool MeshIndex::adjacent(int v, int w) const {
 std::vector<int> MeshIndex::neighbors(int v) const {
   const std::size_t u = static_cast<std::size_t>(v);
   std::vector<int> out(lower.begin() + lower_begin[u], lower.begin() + lower_begin[u + 1]);
-  for (int k = half_begin[u]; k < half_begin[u + 1]; ++k)
-    if (k == half_begin[u] || halves[static_cast<std::size_t>(k)].other != halves[static_cast<std::size_t>(k) - 1].other)
-      out.push_back(halves[static_cast<std::size_t>(k)].other);
+  each_edge_up_from(u, [&out](int b, std::size_t) { out.push_back(b); });
   return out;
 }
 

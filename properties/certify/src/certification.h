@@ -77,13 +77,18 @@ struct MeshIndex {
   };
   std::vector<int> half_begin;
   std::vector<Half> halves;
-  // Each unique edge (a < b) of valid triangles, in key order: f(a, b, k) on the first
-  // half-edge k of each group of halves (the edges are not stored apart).
+  // The edges from v to its larger neighbours, ascending: f(b, k) on the first half-edge
+  // k of each group of halves in v's bucket (the edges are not stored apart).
+  template <class F>
+  void each_edge_up_from(std::size_t v, F&& f) const {
+    for (std::size_t k = static_cast<std::size_t>(half_begin[v]); k < static_cast<std::size_t>(half_begin[v + 1]); ++k)
+      if (k == static_cast<std::size_t>(half_begin[v]) || halves[k].other != halves[k - 1].other) f(halves[k].other, k);
+  }
+  // Each unique edge (a < b) of valid triangles, in key order: f(a, b, k), k as above.
   template <class F>
   void each_edge(F&& f) const {
     for (std::size_t v = 0; v + 1 < half_begin.size(); ++v)
-      for (std::size_t k = static_cast<std::size_t>(half_begin[v]); k < static_cast<std::size_t>(half_begin[v + 1]); ++k)
-        if (k == static_cast<std::size_t>(half_begin[v]) || halves[k].other != halves[k - 1].other) f(static_cast<int>(v), halves[k].other, k);
+      each_edge_up_from(v, [&f, v](int b, std::size_t k) { f(static_cast<int>(v), b, k); });
   }
   std::vector<char> merged;            // an unused exact duplicate of an input vertex (merge_duplicate_vertices)
   std::vector<int> input_to_mesh;      // input vertex id -> mesh vertex id, -1 missing
