@@ -42,24 +42,24 @@ inline void sort3(int& a, int& b, int& c) {
   if (a > b) std::swap(a, b);
 }
 
-inline Keyed keyed(const TriMesh& m, int ti) {
+// k becomes triangle ti's key and item, in its place.
+inline void set_keyed(Keyed& k, const TriMesh& m, int ti) {
   const FTri& f = m.t(ti);
   int a = f.v(0), b = f.v(1), c = f.v(2);
   sort3(a, b, c);
-  return Keyed{{a, b, c}, Item{ti, m.stamp[static_cast<std::size_t>(ti)]}, 0};
-}
-// keyed(m, ti) appended to `batch`, made in its place: a Keyed made apart and
-// copied in was stored in 4-byte parts and read back in wider ones at once, a
-// stalled store forwarding (issue 40: about 40 % of the star walk's time).
-inline void append_keyed(std::vector<Keyed>& batch, const TriMesh& m, int ti) {
-  const FTri& f = m.t(ti);
-  int a = f.v(0), b = f.v(1), c = f.v(2);
-  sort3(a, b, c);
-  Keyed& k = batch.emplace_back();
   k.k[0] = a, k.k[1] = b, k.k[2] = c;
   k.item.tri = ti, k.item.stamp = m.stamp[static_cast<std::size_t>(ti)];
   k.created = 0;
 }
+inline Keyed keyed(const TriMesh& m, int ti) {
+  Keyed k;
+  set_keyed(k, m, ti);
+  return k;
+}
+// keyed(m, ti) appended to `batch`, made in its place: a Keyed made apart and
+// copied in was stored in 4-byte parts and read back in wider ones at once, a
+// stalled store forwarding (issue 40: about 40 % of the star walk's time).
+inline void append_keyed(std::vector<Keyed>& batch, const TriMesh& m, int ti) { set_keyed(batch.emplace_back(), m, ti); }
 inline bool key_less(const Keyed& x, const Keyed& y) {
   if (x.k[0] != y.k[0]) return x.k[0] < y.k[0];
   if (x.k[1] != y.k[1]) return x.k[1] < y.k[1];
