@@ -11,7 +11,7 @@ void add_refine_command(CLI::App& app, int& status);
 void add_certify_command(CLI::App& app, int& status);
 void add_render_command(CLI::App& app, int& status);
 void add_paper_command(CLI::App& app, int& status);
-void add_theorems_command(CLI::App& app, int& status);
+void add_theorems_command(CLI::App& app, int& status, char** argv);  // runs lepp-theorems with argv
 void add_audit_command(CLI::App& app, int& status);
 
 }  // namespace lepp::cli

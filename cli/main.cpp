@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   lepp::cli::add_certify_command(app, status);
   lepp::cli::add_render_command(app, status);
   lepp::cli::add_paper_command(app, status);
-  lepp::cli::add_theorems_command(app, status);
+  lepp::cli::add_theorems_command(app, status, argv);
   lepp::cli::add_audit_command(app, status);
   try {
     app.parse(argc, argv);

@@ -3,7 +3,8 @@
 # lepp as Debian packages: cpack -G DEB from the existing build directory makes lepp,
 # lepp-dev and python3-lepp (cmake/LeppDebian.cmake); check that every dependency they declare
 # is installed here, unpack them into a throwaway root (dpkg -x: nothing touches the system),
-# then run the installed command (--version, refine and certify on a paper problem, `lepp audit`
+# then run the installed command (--version, refine and certify on a paper problem, `lepp theorems
+# --prove` on one row through its helper, `lepp audit`
 # from an empty directory on the packaged corpus), build and run examples/outside_project with
 # find_package(lepp) against that root only, and import the installed Python package from an
 # empty directory (refine and certify through it).
@@ -102,6 +103,13 @@ if ldd "$lepp" | grep -q "not found"; then
   echo "40-package: the installed lepp misses a shared library" >&2
   exit 1
 fi
+# Z3 and MPFI are the helper's (lepp theorems, cli/helper.h), never lepp's own start.
+helper="$root/usr/libexec/lepp/lepp-theorems"
+if [ ! -x "$helper" ] || ldd "$helper" | grep -q "not found" || ldd "$lepp" | grep -q "libz3\|libmpfi"; then
+  ldd "$lepp" "$helper" >&2
+  echo "40-package: the installed lepp links Z3 or MPFI, or its helper $helper is missing or misses a library" >&2
+  exit 1
+fi
 
 # 5. The installed command.
 "$lepp" --version | tee "$work/version.txt"
@@ -113,6 +121,10 @@ fi
 grep -q "\"lepp_version\": \"$version\"" "$work/refine.json" || { cat "$work/refine.json"; exit 1; }
 "$lepp" certify corpus/paper/A.poly "$work/A" --min-angle 30 > "$work/certify.txt" || { cat "$work/certify.txt"; exit 1; }
 echo "installed lepp refine + certify on corpus/paper/A.poly at 30 degrees: ok"
+row=Lemma7.AcuteAlpha1AtLeast079Alpha0  # proved by MPFI and Z3 in 0.2 s
+"$lepp" theorems --prove --only $row > "$work/theorems.txt" 2>&1 || { cat "$work/theorems.txt"; exit 1; }
+grep -q "\`$row\`.*\*\*proved\*\*" "$work/theorems.txt" || { cat "$work/theorems.txt"; exit 1; }
+echo "installed lepp theorems --prove (its helper in libexec/lepp) on $row: ok"
 
 # The installed `lepp audit` finds its built-in inputs beside itself (share/lepp/corpus, no
 # --root): from an empty directory, --engine fast runs the paper's problems and the hostile
