@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The --cmd template adapter: any program, run by /bin/sh once per case, as an audit engine.
+// The --cmd template adapter: any program, run as /bin/sh runs it once per case, as an audit engine.
 #include "lepp/engines/command_engine.h"
 
 #include <sys/stat.h>

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// One shell command or forked function run with a process group, a timeout, a memory cap and capped stderr.
+// One command (directly when it is only words, else by /bin/sh) or forked function run
+// with a process group, a timeout, a memory cap and capped stderr.
 #include "lepp/audit/run/subprocess.h"
 
 #include "child_process.h"
+#include "lepp/audit/run/shell_words.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -15,7 +17,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <vector>
 
 namespace lepp::audit {
 namespace {
@@ -221,7 +225,7 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
   return r;
 }
 
-SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits) {
+SubprocessResult run_shell_command(const std::string& shell_command, const SubprocessLimits& limits) {
   const char* command = shell_command.c_str();
   return run_forked(
       [command](int) {
@@ -229,6 +233,34 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
         return 127;
       },
       limits);
+}
+
+SubprocessResult run_program(const std::vector<std::string>& words, const SubprocessLimits& limits) {
+  // Everything the child needs is made here: after fork it only calls execvp and write.
+  std::vector<char*> argv;
+  for (const std::string& w : words) argv.push_back(const_cast<char*>(w.c_str()));
+  argv.push_back(nullptr);
+  const std::string not_found = words.at(0) + ": not found\n";
+  const std::string denied = words[0] + ": Permission denied\n";
+  const std::string cannot = words[0] + ": cannot execute\n";
+  return run_forked(
+      [&](int) {
+        execvp(argv[0], argv.data());
+        // As sh reports a program it cannot run: 127 not found, 126 found but not executable.
+        const int e = errno;
+        const std::string& m = e == ENOENT || e == ENOTDIR ? not_found : e == EACCES ? denied : cannot;
+        [[maybe_unused]] const ssize_t written = write(2, m.data(), m.size());  // nothing to do if it fails
+        return e == ENOENT || e == ENOTDIR ? 127 : 126;
+      },
+      limits);
+}
+
+SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits) {
+  // Only words: the program itself, without a shell in between (as sh would have run
+  // it; PATH searched as sh searches it, so sh keeps the case of no PATH at all).
+  if (auto words = simple_command_words(shell_command))
+    if (words->front().find('/') != std::string::npos || std::getenv("PATH")) return run_program(*words, limits);
+  return run_shell_command(shell_command, limits);
 }
 
 }  // namespace lepp::audit

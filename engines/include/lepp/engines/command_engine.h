@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The command adapter: any program, in any language, audited through a command
-// template run once per case by /bin/sh. Placeholders:
+// template run once per case as /bin/sh runs it (directly, without the shell, when
+// it is only words: lepp/audit/run/shell_words.h). Placeholders:
 //   {in}      the input, a Triangle .poly file (1-based, %.17g coordinates)
 //   {out}     an output prefix: the program writes {out}.node and {out}.ele
 //             (Triangle's formats, 0- or 1-based), optionally {out}.poly (its

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Runs one shell command, or one function in a forked child, as the audit needs
+// Runs one command line, or one function in a forked child, as the audit needs
 // it: its own process group, stdin and stdout on /dev/null, stderr kept (capped),
 // the whole group killed at the timeout, the address space capped with
 // setrlimit(RLIMIT_AS) in the child. Never blocks past the timeout, whatever the
@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace lepp::audit {
 
@@ -30,7 +31,19 @@ struct SubprocessResult {
   std::string detail;
 };
 
+// Runs a command line as `/bin/sh -c shell_command` would. A command that is only
+// words (shell_words.h: the command adapter's templates mostly are) runs as
+// run_program runs them, without the shell; any other, by run_shell_command.
 SubprocessResult run_subprocess(const std::string& shell_command, const SubprocessLimits& limits);
+
+// `/bin/sh -c shell_command`, always.
+SubprocessResult run_shell_command(const std::string& shell_command, const SubprocessLimits& limits);
+
+// The program words[0] (searched in PATH when it has no '/', execvp) with the
+// arguments words[1...]. One it cannot run ends as sh reports it: exit 127 and
+// "PROGRAM: not found" on stderr when it is not there, 126 when it is but cannot
+// be executed. A file without "#!" runs as a shell script, as under sh.
+SubprocessResult run_program(const std::vector<std::string>& words, const SubprocessLimits& limits);
 
 // What a forked child runs, after the limits are set: it may write its result to
 // result_fd (read by the parent while it runs, into SubprocessResult::output) and
@@ -44,7 +57,7 @@ SubprocessResult run_subprocess(const std::string& shell_command, const Subproce
 using ChildFunction = std::function<int(int result_fd)>;
 
 // Runs `child` in a forked process under the same rules and the same wait loop
-// as run_subprocess (which is run_forked with a child that execs /bin/sh).
+// as run_subprocess (which is run_forked with a child that execs the program, or /bin/sh).
 SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& limits);
 
 // Single-quotes s for /bin/sh.
