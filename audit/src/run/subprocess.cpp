@@ -19,6 +19,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 #include <vector>
 
 namespace lepp::audit {
@@ -99,6 +101,24 @@ class WaitpidEnd : public ChildEnd {
  private:
   pid_t pid_;
 };
+
+// The environment sh would give the program: sh (dash, Debian's) sets PWD to the
+// working directory when the inherited PWD does not name it (stale, relative or
+// unset). Empty when the environment needs no change.
+std::vector<std::string> environment_as_sh_gives_it(const std::string& directory) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path here = directory.empty() ? fs::path(".") : fs::path(directory);
+  const char* pwd = std::getenv("PWD");
+  if (pwd && pwd[0] == '/' && fs::equivalent(pwd, here, ec)) return {};
+  const fs::path physical = fs::canonical(here, ec);
+  if (ec) return {};  // sh would not start there either: the child's chdir fails first
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "PWD=", 4) != 0) env.emplace_back(*e);
+  env.push_back("PWD=" + physical.string());
+  return env;
+}
 
 }  // namespace
 
@@ -236,16 +256,21 @@ SubprocessResult run_shell_command(const std::string& shell_command, const Subpr
 }
 
 SubprocessResult run_program(const std::vector<std::string>& words, const SubprocessLimits& limits) {
-  // Everything the child needs is made here: after fork it only calls execvp and write.
+  // Everything the child needs is made here: after fork it only calls execvp(e) and write.
   std::vector<char*> argv;
   for (const std::string& w : words) argv.push_back(const_cast<char*>(w.c_str()));
   argv.push_back(nullptr);
+  const std::vector<std::string> env = environment_as_sh_gives_it(limits.directory);
+  std::vector<char*> envp;
+  for (const std::string& e : env) envp.push_back(const_cast<char*>(e.c_str()));
+  envp.push_back(nullptr);
   const std::string not_found = words.at(0) + ": not found\n";
   const std::string denied = words[0] + ": Permission denied\n";
   const std::string cannot = words[0] + ": cannot execute\n";
   return run_forked(
       [&](int) {
-        execvp(argv[0], argv.data());
+        if (env.empty()) execvp(argv[0], argv.data());
+        else execvpe(argv[0], argv.data(), envp.data());
         // As sh reports a program it cannot run: 127 not found, 126 found but not executable.
         const int e = errno;
         const std::string& m = e == ENOENT || e == ENOTDIR ? not_found : e == EACCES ? denied : cannot;

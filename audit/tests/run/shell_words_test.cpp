@@ -5,7 +5,10 @@
 // adapter's verdicts on programs that misbehave (programs/*.sh).
 #include <signal.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -77,6 +80,32 @@ TEST(ShellWords, WordsRunWithoutAShellAndGetSameArguments) {
   // With shell syntax, the shell runs it.
   const SubprocessResult via_shell = run_subprocess(c + " # a comment", quick());
   EXPECT_EQ(via_shell.stderr_text, args + "parent: sh\n");
+}
+
+// The program's whole environment is the one sh gives it: sh sets PWD to the working
+// directory when the inherited one does not name it, and the program run without sh
+// sees the same (a Python program prints its environment, then PWD).
+TEST(ShellWords, TheProgramSeesTheEnvironmentAsUnderTheShell) {
+  // Debian's python3 itself: a python3 earlier in PATH may be a shell script (pyenv's shims), which sets PWD.
+  const std::string c =
+      "/usr/bin/python3 -c 'import os, sys; sys.stderr.write(repr(sorted(os.environ.items())) + os.environ.get(\"PWD\", \"(unset)\"))'";
+  ASSERT_TRUE(simple_command_words(c).has_value());
+  const char* saved = std::getenv("PWD");
+  const std::string kept = saved ? saved : "";
+  const std::string here = fs::current_path().string();
+  for (const char* pwd : {static_cast<const char*>(nullptr), "/", "relative/dir", here.c_str()}) {
+    if (pwd) setenv("PWD", pwd, 1);
+    else unsetenv("PWD");
+    const SubprocessResult direct = run_subprocess(c, quick());
+    const SubprocessResult shell = run_shell_command(c, quick());
+    EXPECT_EQ(direct.stderr_text, shell.stderr_text) << "PWD " << (pwd ? pwd : "unset");
+    const std::string physical = fs::canonical(".").string();
+    EXPECT_EQ(direct.stderr_text.substr(direct.stderr_text.size() - std::min(direct.stderr_text.size(), physical.size())),
+              physical)
+        << "PWD " << (pwd ? pwd : "unset");
+  }
+  if (saved) setenv("PWD", kept.c_str(), 1);
+  else unsetenv("PWD");
 }
 
 TEST(ShellWords, MissingProgramIsExit127EitherWay) {

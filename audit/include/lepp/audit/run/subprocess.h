@@ -42,7 +42,9 @@ SubprocessResult run_shell_command(const std::string& shell_command, const Subpr
 // The program words[0] (searched in PATH when it has no '/', execvp) with the
 // arguments words[1...]. One it cannot run ends as sh reports it: exit 127 and
 // "PROGRAM: not found" on stderr when it is not there, 126 when it is but cannot
-// be executed. A file without "#!" runs as a shell script, as under sh.
+// be executed. A file without "#!" runs as a shell script, as under sh. Its
+// environment is ours, with PWD set as sh sets it (the working directory's
+// physical path, when ours does not name that directory).
 SubprocessResult run_program(const std::vector<std::string>& words, const SubprocessLimits& limits);
 
 // What a forked child runs, after the limits are set: it may write its result to
