@@ -36,12 +36,13 @@ class ExactDoubles {
   bool exact() const { return exact_; }
   // The sign of v, a value this evaluation computed: -1, 0, +1, or 2 if a step was inexact.
   int sign(double v) const { return exact_ ? (v > 0) - (v < 0) : 2; }
-
- private:
+  // A factor whose products' error terms are doubles (the range above).
   static bool fits(double v) {
     const double m = std::fabs(v);
     return m == 0 || (m >= 0x1p-480 && m <= 0x1p480);
   }
+
+ private:
   bool exact_ = true;
 };
 
@@ -124,14 +125,10 @@ class ExactSum {
 // decided without Mpzf. 2: a factor out of that range.
 inline int compare_sqlen_by_expansion(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double diff[4][2] = {{b.x, a.x}, {b.y, a.y}, {d.x, c.x}, {d.y, c.y}};
-  auto fits = [](double v) {
-    const double m = std::fabs(v);
-    return m == 0 || (m >= 0x1p-480 && m <= 0x1p480);
-  };
   ExactSum<24> sum;  // 4 differences, 6 terms each: each term adds at most one component
   for (int i = 0; i < 4; ++i) {
     const double x = diff[i][0], y = -diff[i][1], h = x + y, yy = h - x, l = (x - (h - yy)) + (y - yy);
-    if (!fits(h) || !fits(l)) return 2;
+    if (!ExactDoubles::fits(h) || !ExactDoubles::fits(l)) return 2;
     const double sign = i < 2 ? 1 : -1;
     const double hh = h * h, hl = h * l, ll = l * l;
     for (const double term : {hh, std::fma(h, h, -hh), 2 * hl, 2 * std::fma(h, l, -hl), ll, std::fma(l, l, -ll)})

@@ -207,6 +207,13 @@ TEST(ExactDoubles, LengthsByDominanceAgreeWithExactArithmetic) {
   EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0x1.8p-160}, {1.5, 1.125}, {1.5, 1.125}, {0, 0x1.8p-159}), 1);
   EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {1 + 0x1p-30, 0}, {0, 0}, {1 + 0x1p-30 - 0x1p-52, 0}), 1);
   EXPECT_EQ(detail::compare_sqlen_by_expansion({1, 0}, {-0x1p-60, 0}, {-0x1p-60, 0}, {1, 0}), 0);
+  // u^2 against v^2 + w^2, apart by less than u^2's rounding error (fma's term decides).
+  const double u = 0x1.2194b2b8fe000p+0, v = 0x1.06be000000000p+0, w = 0x1.e702506f59beep-2;
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {u, 0}, {0, 0}, {v, w}), 1);
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {v, w}, {0, 0}, {u, 0}), -1);
+  // (p - q)^2 = (h + l)^2 against h^2 + z^2, apart by less than the rounding of 2hl.
+  const double p = 0x1.442f7dbc496ccp+0, q = -0x1.d69964a23d596p-55, z = 0x1.869755127fb44p-27;
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({q, 0}, {p, 0}, {0, 0}, {p, z}), 1);
   EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {1, 0x1p-600}, {0, 0}, {1, 0}), 2);
   EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {0x1p500, 0}, {0, 0}, {1, 0}), 2);
   int decided = 0, by_expansion = 0;
