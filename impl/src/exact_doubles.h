@@ -13,6 +13,8 @@
 // overflows, and an overflow leaves NaN in the check, which fails it.
 #pragma once
 #include <cmath>
+#include <cstddef>
+#include <utility>
 
 #include "lepp/pslg.h"
 
@@ -34,12 +36,13 @@ class ExactDoubles {
   bool exact() const { return exact_; }
   // The sign of v, a value this evaluation computed: -1, 0, +1, or 2 if a step was inexact.
   int sign(double v) const { return exact_ ? (v > 0) - (v < 0) : 2; }
-
- private:
+  // A factor whose products' error terms are doubles (the range above).
   static bool fits(double v) {
     const double m = std::fabs(v);
     return m == 0 || (m >= 0x1p-480 && m <= 0x1p480);
   }
+
+ private:
   bool exact_ = true;
 };
 
@@ -69,6 +72,69 @@ inline double squared_length(ExactDoubles& e, const Point& a, const Point& b) {
 inline int compare_sqlen_in_doubles(const Point& a, const Point& b, const Point& c, const Point& d) {
   ExactDoubles e;
   return e.sign(e.sub(squared_length(e, a, b), squared_length(e, c, d)));
+}
+
+// |ab|^2 - |cd|^2 without a product: with every difference exact, each pair of components
+// sorted by size, (p^2 - r^2) + (q^2 - s^2) has the sign both comparisons agree on (p
+// against r, q against s), or that of one where the other ties. Near-ties across scales
+// (1.5 and 2^-150 against 1.5 and 2^-151: the ulp clusters of the fuzzers) need 2^300 in
+// a product's range and went to Mpzf; here they are two comparisons. 2: undecided (the
+// comparisons disagree, or a difference was inexact).
+inline int compare_sqlen_by_dominance(const Point& a, const Point& b, const Point& c, const Point& d) {
+  ExactDoubles e;
+  double p = std::fabs(e.sub(b.x, a.x)), q = std::fabs(e.sub(b.y, a.y));
+  double r = std::fabs(e.sub(d.x, c.x)), s = std::fabs(e.sub(d.y, c.y));
+  if (!e.exact()) return 2;
+  if (p < q) std::swap(p, q);
+  if (r < s) std::swap(r, s);
+  const int larger = (p > r) - (p < r), smaller = (q > s) - (q < s);
+  if (larger == smaller || smaller == 0) return larger;
+  return larger == 0 ? smaller : 2;
+}
+
+// The exact sign of a sum of doubles, as a nonoverlapping expansion (Shewchuk's
+// Grow-Expansion with zero elimination, from "Adaptive Precision Floating-Point
+// Arithmetic and Fast Robust Geometric Predicates", 1997): components of increasing
+// size, so the sign is the last one's. TwoSum is exact in gradual underflow too; no
+// input here comes near overflow (callers' ranges).
+template <std::size_t N>
+class ExactSum {
+ public:
+  void add(double b) {
+    std::size_t m = 0;
+    double q = b;
+    for (std::size_t i = 0; i < n_; ++i) {
+      const double s = q + e_[i], bv = s - q, av = s - bv, err = (q - av) + (e_[i] - bv);
+      q = s;
+      if (err != 0) e_[m++] = err;
+    }
+    if (q != 0) e_[m++] = q;
+    n_ = m;
+  }
+  int sign() const { return n_ == 0 ? 0 : (e_[n_ - 1] > 0) - (e_[n_ - 1] < 0); }
+
+ private:
+  double e_[N];  // e_[0, n_) only: not zeroed, each call pays for what it uses
+  std::size_t n_ = 0;
+};
+
+// |ab|^2 - |cd|^2 as an exact sum: each difference h + l by TwoSum, each square
+// h^2 + 2hl + l^2 by fma's error terms, every factor 0 or in [2^-480, 2^480] (above:
+// ExactDoubles' range, so that each error term is a double). Differences rounded, and
+// near-ties across scales that no single double holds (1.5 and 1.125 - 2^-160), are
+// decided without Mpzf. 2: a factor out of that range.
+inline int compare_sqlen_by_expansion(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double diff[4][2] = {{b.x, a.x}, {b.y, a.y}, {d.x, c.x}, {d.y, c.y}};
+  ExactSum<24> sum;  // 4 differences, 6 terms each: each term adds at most one component
+  for (int i = 0; i < 4; ++i) {
+    const double x = diff[i][0], y = -diff[i][1], h = x + y, yy = h - x, l = (x - (h - yy)) + (y - yy);
+    if (!ExactDoubles::fits(h) || !ExactDoubles::fits(l)) return 2;
+    const double sign = i < 2 ? 1 : -1;
+    const double hh = h * h, hl = h * l, ll = l * l;
+    for (const double term : {hh, std::fma(h, h, -hh), 2 * hl, 2 * std::fma(h, l, -hl), ll, std::fma(l, l, -ll)})
+      if (term != 0) sum.add(sign * term);
+  }
+  return sum.sign();
 }
 
 inline int skinny_sign_in_doubles(const Point& apex, const Point& b, const Point& c, double s) {

@@ -128,11 +128,13 @@ int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& 
 }
 
 int compare_sqlen_exact(const Point& a, const Point& b, const Point& c, const Point& d) {
+  if (const int s = compare_sqlen_by_dominance(a, b, c, d); s != 2) return s;  // exact at any scale
   if (const Scale t = tiny_scale({a, b, c, d}); t.k) {
     const Point sa = t.of(a), sb = t.of(b), sc = t.of(c), sd = t.of(d);
     return compare_sqlen(sa, sb, sqlen(sa, sb), sc, sd, sqlen(sc, sd));
   }
-  const int s = compare_sqlen_in_doubles(a, b, c, d);
+  if (const int s = compare_sqlen_in_doubles(a, b, c, d); s != 2) return s;
+  const int s = compare_sqlen_by_expansion(a, b, c, d);
   return s != 2 ? s : compare_sqlen_mpzf(a, b, c, d);
 }
 

@@ -176,6 +176,65 @@ TEST(ExactDoubles, EveryInexactStepIsUndecided) {
   EXPECT_EQ(detail::dot_sign_in_doubles({0, 0}, {1, 0x1p-30}, {1, 0x1p-30}), 2);
 }
 
+// The length comparisons before Mpzf (exact_doubles.h): by dominance, a sign only where
+// both sorted component comparisons agree (or one ties); as a sum of expansions, a sign
+// where every factor is in range; always the exact one. The near-ties across scales of
+// the fuzzers' ulp clusters are decided without Mpzf.
+TEST(ExactDoubles, LengthsByDominanceAgreeWithExactArithmetic) {
+  using detail::compare_sqlen_by_dominance;
+  auto q_compare = [](const Point& a, const Point& b, const Point& c, const Point& d) {
+    const Q abx = Q(b.x) - Q(a.x), aby = Q(b.y) - Q(a.y), cdx = Q(d.x) - Q(c.x), cdy = Q(d.y) - Q(c.y);
+    const Q diff = abx * abx + aby * aby - cdx * cdx - cdy * cdy;
+    return diff > 0 ? 1 : diff < 0 ? -1 : 0;
+  };
+  // A fuzzer's case: 1.5 and 1.5 * 2^-150 against 1.5 and 1.5 * 2^-151, the components swapped.
+  EXPECT_EQ(compare_sqlen_by_dominance({1.5, 0}, {0, 0x1.8p-150}, {0, 0x1.8p-151}, {1.5, 0}), 1);
+  EXPECT_EQ(compare_sqlen_by_dominance({0, 0}, {3, 4}, {0, 0}, {4, -3}), 0);   // the same components
+  EXPECT_EQ(compare_sqlen_by_dominance({0, 0}, {3, 4}, {0, 0}, {5, 0}), 2);    // 5 > 4 but 0 < 3
+  EXPECT_EQ(compare_sqlen_by_dominance({0, 0}, {1, 1}, {0, 0}, {1, 2}), -1);   // one ties, one less
+  EXPECT_EQ(compare_sqlen_by_dominance({1, 0}, {-0x1p-60, 0}, {0, 0}, {1, 0}), 2);  // a difference rounded
+  std::mt19937_64 rng(41);
+  std::uniform_int_distribution<int> scale(-1074, 40), pick(0, 5);
+  std::uniform_real_distribution<double> unit(1, 2);
+  const double shared[3] = {1.5, 0x1.8p-150, 3.0};
+  auto coordinate = [&]() {
+    const int k = pick(rng);  // a shared value (ties), zero, or a value of any scale and sign
+    if (k < 3) return shared[k];
+    if (k == 3) return 0.0;
+    return (k == 4 ? 1 : -1) * std::ldexp(unit(rng), scale(rng));
+  };
+  // As sums of expansions: differences rounded (1.125 - 2^-160), and factors out of range.
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0x1.8p-160}, {1.5, 1.125}, {1.5, 1.125}, {0, 0x1.8p-159}), 1);
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {1 + 0x1p-30, 0}, {0, 0}, {1 + 0x1p-30 - 0x1p-52, 0}), 1);
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({1, 0}, {-0x1p-60, 0}, {-0x1p-60, 0}, {1, 0}), 0);
+  // u^2 against v^2 + w^2, apart by less than u^2's rounding error (fma's term decides).
+  const double u = 0x1.2194b2b8fe000p+0, v = 0x1.06be000000000p+0, w = 0x1.e702506f59beep-2;
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {u, 0}, {0, 0}, {v, w}), 1);
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {v, w}, {0, 0}, {u, 0}), -1);
+  // (p - q)^2 = (h + l)^2 against h^2 + z^2, apart by less than the rounding of 2hl.
+  const double p = 0x1.442f7dbc496ccp+0, q = -0x1.d69964a23d596p-55, z = 0x1.869755127fb44p-27;
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({q, 0}, {p, 0}, {0, 0}, {p, z}), 1);
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {1, 0x1p-600}, {0, 0}, {1, 0}), 2);
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {0x1p500, 0}, {0, 0}, {1, 0}), 2);
+  int decided = 0, by_expansion = 0;
+  for (int trial = 0; trial < 50000; ++trial) {
+    const Point a{coordinate(), coordinate()}, b{coordinate(), coordinate()}, c{coordinate(), coordinate()},
+        d{coordinate(), coordinate()};
+    const int exact = q_compare(a, b, c, d);
+    if (const int s = compare_sqlen_by_dominance(a, b, c, d); s != 2) {
+      ++decided;
+      ASSERT_EQ(s, exact) << "trial " << trial;
+    }
+    if (const int s = detail::compare_sqlen_by_expansion(a, b, c, d); s != 2) {
+      ++by_expansion;
+      ASSERT_EQ(s, exact) << "trial " << trial;
+    }
+    ASSERT_EQ(detail::compare_sqlen_exact(a, b, c, d), exact) << "trial " << trial;
+  }
+  EXPECT_GT(decided, 1000);  // the shortcut is reached: 1,872 of these 50,000 with this seed
+  EXPECT_GT(by_expansion, 1000) << by_expansion;
+}
+
 // Exact signs, zero included, for the predicates whose callers see only a test.
 int q_sign(const Q& v) { return v > 0 ? 1 : v < 0 ? -1 : 0; }
 int q_skinny_sign(const Point& o, const Point& p, const Point& q, double s) {

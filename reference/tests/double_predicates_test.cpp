@@ -180,6 +180,41 @@ TEST(ReferenceSkinny, NearTiesAgreeWithTheOracle) {
   EXPECT_GT(wrong_in_doubles, 0);
 }
 
+// Lengths compared by their components (compare_lengths_by_components): a sign only
+// where both sorted comparisons agree or one ties, always the oracle's; the ulp
+// clusters' near-ties across scales decided without Mpzf.
+TEST(ReferenceDoubleLengths, ComponentsDecideOnlyWhereTheyAgree) {
+  using lepp::reference::detail::compare_lengths_by_components;
+  EXPECT_EQ(compare_lengths_by_components({1.5, 0}, {0, 0x1.8p-150}, {0, 0x1.8p-151}, {1.5, 0}), 1);
+  expect_compare({1.5, 0}, {0, 0x1.8p-150}, {0, 0x1.8p-151}, {1.5, 0}, 1);
+  EXPECT_EQ(compare_lengths_by_components({0, 0}, {3, 4}, {0, 0}, {4, -3}), 0);   // the larger against the larger
+  EXPECT_EQ(compare_lengths_by_components({0, 0}, {1, 1}, {0, 0}, {2, 1}), -1);   // the smaller ones tie
+  EXPECT_EQ(compare_lengths_by_components({0, 0}, {1, 3}, {0, 0}, {1, 2}), 1);    // the larger decide
+  EXPECT_EQ(compare_lengths_by_components({0, 0}, {3, 4}, {0, 0}, {5, 0}), 2);    // 5 > 4 but 0 < 3
+  EXPECT_EQ(compare_lengths_by_components({1, 0}, {-0x1p-60, 0}, {0, 0}, {1, 0}), 2);  // a difference rounded
+  EXPECT_EQ(compare_lengths_by_components({0, 0}, {1, 0}, {-1e308, 0}, {1e308, 0}), 2);  // an overflow
+  std::mt19937_64 rng(29);
+  std::uniform_int_distribution<int> scale(-1074, 40), pick(0, 5);
+  std::uniform_real_distribution<double> unit(1, 2);
+  const double shared[3] = {1.5, 0x1.8p-150, 3.0};
+  auto coordinate = [&]() {
+    const int k = pick(rng);  // a shared value (ties), zero, or a value of any scale and sign
+    if (k < 3) return shared[k];
+    if (k == 3) return 0.0;
+    return (k == 4 ? 1 : -1) * std::ldexp(unit(rng), scale(rng));
+  };
+  int decided = 0;
+  for (int trial = 0; trial < 50000; ++trial) {
+    const Point a{coordinate(), coordinate()}, b{coordinate(), coordinate()}, c{coordinate(), coordinate()},
+        d{coordinate(), coordinate()};
+    if (const int s = compare_lengths_by_components(a, b, c, d); s != 2) {
+      ++decided;
+      ASSERT_EQ(s, oracle_compare(a, b, c, d)) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(decided, 1000) << decided;
+}
+
 }  // namespace
 
 namespace {
