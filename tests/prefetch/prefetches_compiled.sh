@@ -14,7 +14,7 @@ objdump=$1 binary=$2
     if (fn ~ /Refiner::run(_queue)?\(/) queue++  # run_queue, or run where it is inlined
     if (fn ~ /BadQueue::pop/) pop++
     if (fn ~ /check_terminal_edges/) theorem2++
-    if (fn ~ /average_lepp/) lepp_size++
+    if (fn ~ /average_lepp|lepp_size_sum/) lepp_size++
     if (fn ~ /Inserter::insert/) insert++
   }
   END {
