@@ -50,12 +50,14 @@ Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
   Certification cert(pslg, mesh, options, report);
   // 1. Topology (and the index's half-edges), 2. input vertices.
   pass::index_triangles(cert);
-  // With threads, the statistics' angles and edges beside every other pass (they read
-  // only the valid triangles).
+  pass::index_half_edges(cert);
+  // With threads, the statistics' angles and edges beside the passes that follow (they
+  // read only the valid triangles): after the half-edge index, whose passes use both
+  // threads, so that they fill the second thread while the steps up to the chains run
+  // on one.
   std::optional<std::future<MeshStats>> stats_ahead;
   if (threads_or_cores(options.threads) > 1)
     stats_ahead = std::async(std::launch::async, [&cert] { return pass::valid_triangle_stats(cert.index); });
-  pass::index_half_edges(cert);
   pass::merge_duplicate_vertices(cert);
   pass::index_domain(cert);
   pass::index_input_vertices(cert);
