@@ -15,6 +15,7 @@
 #include "certification.h"
 #include "index/index_limits.h"
 #include "passes.h"
+#include "ranges.h"
 
 namespace lepp::certify {
 namespace {
@@ -143,13 +144,21 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
 }
 
 // The vertex adjacency (the smaller neighbours stored, the larger ones read from the
-// buckets) against the neighbours of each vertex collected from the triangles.
+// buckets, built over ranges of smaller ends) against the neighbours of each vertex
+// collected from the triangles, and the same arrays for any thread count.
 TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
   const Mesh mesh = damaged_grid(13, 7);
-  for (int threads : {1, 2}) {
+  std::vector<int> one_begin, one_lower;
+  for (int threads : {1, 2, 3, 7}) {
     Indexed indexed(mesh, threads);
     pass::index_adjacency(indexed.cert);
     const MeshIndex& ix = indexed.cert.index;
+    if (threads == 1) {
+      one_begin = ix.lower_begin, one_lower = ix.lower;
+    } else {
+      EXPECT_EQ(ix.lower_begin, one_begin) << threads;
+      EXPECT_EQ(ix.lower, one_lower) << threads;
+    }
     std::vector<std::set<int>> around(mesh.vertices.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int i = 0; i < 3; ++i) {
@@ -164,6 +173,34 @@ TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
         ASSERT_EQ(ix.adjacent(static_cast<int>(v), static_cast<int>(w)), around[v].count(static_cast<int>(w)) > 0) << v << " " << w;
     }
   }
+}
+
+// The passes over the buckets split the vertices where the half-edges split evenly:
+// consecutive ranges from 0 to the vertex count, each bucket in one range, and each
+// range's half-edges within a bucket's size of an even share.
+TEST(HalfEdgeIndex, VertexRangesHoldAboutAsManyHalfEdgesEach) {
+  const Mesh mesh = damaged_grid(21, 11);
+  for (int threads : {1, 2, 3, 7}) {
+    const Indexed indexed(mesh, threads);
+    const MeshIndex& ix = indexed.cert.index;
+    const std::vector<std::size_t> first = vertex_ranges_by_halves(indexed.cert);
+    ASSERT_EQ(first.size(), static_cast<std::size_t>(threads) + 1);
+    EXPECT_EQ(first.front(), 0u);
+    EXPECT_EQ(first.back(), mesh.vertices.size());
+    std::size_t largest_bucket = 0;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      largest_bucket = std::max(largest_bucket, static_cast<std::size_t>(ix.half_begin[v + 1] - ix.half_begin[v]));
+    const double share = static_cast<double>(ix.halves.size()) / threads;
+    for (std::size_t r = 0; r + 1 < first.size(); ++r) {
+      ASSERT_LE(first[r], first[r + 1]) << threads;
+      const double in_range = ix.half_begin[first[r + 1]] - ix.half_begin[first[r]];
+      EXPECT_NEAR(in_range, share, static_cast<double>(largest_bucket)) << "range " << r << " of " << threads;
+    }
+  }
+  // Lower vertices hold more half-edges here (the smaller end of each edge): an even
+  // split of the vertices would not be even in half-edges.
+  const Indexed two(mesh, 2);
+  EXPECT_LT(vertex_ranges_by_halves(two.cert)[1], mesh.vertices.size() / 2);
 }
 
 // The 32-bit limit, at its boundary: through the seam with a small limit (the same

@@ -23,10 +23,6 @@ struct RangeFindings {
   void add(Violation v) { violations.push_back(std::move(v)); }
 };
 
-// Calls body(begin, end, findings) on consecutive ranges covering [0, n): one range per
-// thread (a single call on one thread, or when n is small), then adds each range's
-// violations through cert.add in range order. Returns the counters summed.
-// body may read the index and the options only: the report is written here, after.
 // How many ranges over_ranges splits [0, n) into.
 inline std::size_t range_count(const Certification& cert, std::size_t n) {
   // One range per thread, however small n is: a thread costs microseconds, and small
@@ -35,15 +31,17 @@ inline std::size_t range_count(const Certification& cert, std::size_t n) {
   return std::max<std::size_t>(1, std::min(threads, n));
 }
 
+// over_ranges (below) with the ranges' bounds given: range r is [first[r], first[r + 1])
+// (first ascending, first.size() - 1 ranges): for passes whose work per item is uneven.
 template <class Body>
-std::array<std::size_t, 2> over_ranges(Certification& cert, std::size_t n, const Body& body) {
-  const std::size_t ranges = range_count(cert, n);
+std::array<std::size_t, 2> over_bounds(Certification& cert, const std::vector<std::size_t>& first, const Body& body) {
+  const std::size_t ranges = first.size() - 1;
   std::vector<RangeFindings> found(ranges);
   for (std::size_t r = 0; r < ranges; ++r) found[r].range = r;
   std::vector<std::exception_ptr> failed(ranges);
   auto range = [&](std::size_t r) {
     try {
-      body(n * r / ranges, n * (r + 1) / ranges, found[r]);
+      body(first[r], first[r + 1], found[r]);
     } catch (...) {
       failed[r] = std::current_exception();  // rethrown below, on the calling thread
     }
@@ -64,6 +62,32 @@ std::array<std::size_t, 2> over_ranges(Certification& cert, std::size_t n, const
     for (std::size_t i = 0; i < sums.size(); ++i) sums[i] += f.counters[i];
   }
   return sums;
+}
+
+// Calls body(begin, end, findings) on consecutive ranges covering [0, n): one range per
+// thread (a single call on one thread, or when n is small), then adds each range's
+// violations through cert.add in range order. Returns the counters summed.
+// body may read the index and the options only: the report is written here, after.
+template <class Body>
+std::array<std::size_t, 2> over_ranges(Certification& cert, std::size_t n, const Body& body) {
+  const std::size_t ranges = range_count(cert, n);
+  std::vector<std::size_t> first(ranges + 1);
+  for (std::size_t r = 0; r <= ranges; ++r) first[r] = n * r / ranges;
+  return over_bounds(cert, first, body);
+}
+
+// Ranges of vertices [0, nv) with about as many half-edges of the index in each (the
+// half-edges whose smaller end is v are v's bucket: MeshIndex::half_begin): for the
+// passes over the buckets, whose lower vertices hold most edges (the smaller end of each).
+inline std::vector<std::size_t> vertex_ranges_by_halves(const Certification& cert) {
+  const std::vector<int>& begin = cert.index.half_begin;  // nv + 1 entries
+  const std::size_t nv = begin.size() - 1, ranges = range_count(cert, nv);
+  const std::size_t halves = static_cast<std::size_t>(begin.back());
+  std::vector<std::size_t> first(ranges + 1, nv);
+  first[0] = 0;
+  for (std::size_t r = 1; r < ranges; ++r)  // the first vertex whose bucket starts at or past r / ranges of the halves
+    first[r] = static_cast<std::size_t>(std::lower_bound(begin.begin(), begin.end() - 1, static_cast<int>(halves * r / ranges)) - begin.begin());
+  return first;
 }
 
 }  // namespace lepp::certify

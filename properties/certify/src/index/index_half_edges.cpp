@@ -18,10 +18,11 @@ void index_half_edges(Certification& cert) {
   // half-edge order), then each bucket, a vertex's few edges, sorted by the larger end.
   // The same order as a sort of (key, id), in linear time. With threads, each range of
   // triangles counts and places its own half-edges (a bucket holds range 0's, then range
-  // 1's, ..., so still by id), then each range of smaller ends sorts and pairs its buckets
-  // alone; the edges and violations merge in range order. Each step's scattered reads and
-  // writes (counts, bucket slots, twins) are asked for a few triangles or half-edges ahead
-  // (prefetch.h): at 10^7 triangles nearly every one is a cache miss.
+  // 1's, ..., so still by id), then each range of smaller ends (ranges of about as many
+  // half-edges each) sorts and pairs its buckets alone; the edges and violations merge in
+  // range order. Each step's scattered reads and writes (counts, bucket slots, twins) are
+  // asked for a few triangles or half-edges ahead (prefetch.h): at 10^7 triangles nearly
+  // every one is a cache miss.
   const std::size_t nv = ix.mesh.vertices.size(), nt = ix.mesh.triangles.size();
   const std::size_t tri_ranges = range_count(cert, nt);
   std::vector<std::vector<int>> next(tri_ranges);  // per range of triangles: counts per smaller end, then where its next half goes
@@ -69,7 +70,7 @@ void index_half_edges(Certification& cert) {
       for (int v : ix.T(t)) ix.used[static_cast<std::size_t>(v)] = 1;
   ix.twin.assign(nt * 3, -1);
   // counters: [0] edges.
-  ix.edge_count = over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  ix.edge_count = over_bounds(cert, vertex_ranges_by_halves(cert), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
     // edges, the library's merge sort for a vertex of high degree (a fan's centre).
     auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
