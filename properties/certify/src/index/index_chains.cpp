@@ -39,10 +39,13 @@ void build_adjacency(Certification& cert) {
       });
   });
   ix.lower_begin.resize(nv + 1);
+  ix.used.resize(nv);
   std::size_t at = 0;
   for (std::size_t v = 0; v < nv; ++v) {
     ix.lower_begin[v] = static_cast<int>(at);
     for (std::vector<int>& count : next) at += static_cast<std::size_t>(std::exchange(count[v], static_cast<int>(at)));
+    // In a valid triangle: an end of one of its edges, the smaller (a bucket) or the larger.
+    ix.used[v] = ix.half_begin[v + 1] > ix.half_begin[v] || at > static_cast<std::size_t>(ix.lower_begin[v]);
   }
   ix.lower_begin[nv] = static_cast<int>(at);
   ix.lower.resize(at);

@@ -52,9 +52,14 @@ void index_half_edges(Certification& cert) {
     ix.half_begin[v + 1] = static_cast<int>(at);
   }
   ix.halves.resize(static_cast<std::size_t>(ix.half_begin[nv]));
+  // Not written here (UnwrittenVector): the ranges below write every twin, an invalid
+  // triangle's -1 while placing, the others' while pairing. At 10^7 triangles a
+  // fill on one thread first took as long as the pairing's two ranges.
+  ix.twin.resize(nt * 3);
   over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& at = next[found.range];
     for (std::size_t t = begin; t < end; ++t) {
+      if (!ix.tri_ok[t]) ix.twin[3 * t] = ix.twin[3 * t + 1] = ix.twin[3 * t + 2] = -1;
       if (t + kAhead < end && ix.tri_ok[t + kAhead])
         for (std::size_t v : smaller_ends(t + kAhead)) prefetch_write(&at[v]);
       if (t + kAhead / 2 < end && ix.tri_ok[t + kAhead / 2])  // its slots, where those counts now point
@@ -64,11 +69,6 @@ void index_half_edges(Certification& cert) {
     }
   });
   next.clear();
-  ix.used.assign(nv, 0);
-  for (std::size_t t = 0; t < nt; ++t)
-    if (ix.tri_ok[t])
-      for (int v : ix.T(t)) ix.used[static_cast<std::size_t>(v)] = 1;
-  ix.twin.assign(nt * 3, -1);
   // counters: [0] edges.
   ix.edge_count = over_bounds(cert, vertex_ranges_by_halves(cert), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
@@ -115,6 +115,8 @@ void index_half_edges(Certification& cert) {
             ix.twin[static_cast<std::size_t>(h0)] = h1;
             ix.twin[static_cast<std::size_t>(h1)] = h0;
           }
+        } else {
+          ix.twin[static_cast<std::size_t>(i->h())] = -1;  // a boundary edge
         }
         i = j;
       }
