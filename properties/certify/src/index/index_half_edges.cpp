@@ -24,8 +24,8 @@ void index_half_edges(Certification& cert) {
   // asked for a few triangles or half-edges ahead (prefetch.h): at 10^7 triangles nearly
   // every one is a cache miss.
   const std::size_t nv = ix.mesh.vertices.size(), nt = ix.mesh.triangles.size();
-  const std::size_t tri_ranges = range_count(cert, nt);
-  std::vector<std::vector<int>> next(tri_ranges);  // per range of triangles: counts per smaller end, then where its next half goes
+  const std::vector<std::size_t> tri_ranges = even_ranges(nt, thread_count(cert, nt));  // one a thread: each keeps nv counts
+  std::vector<std::vector<int>> next(tri_ranges.size() - 1);  // per range of triangles: counts per smaller end, then where its next half goes
   // The two smaller ends of triangle t's three edges (its smallest vertex is the smaller end of two).
   auto smaller_ends = [&ix](std::size_t t) {
     const Tri& x = ix.T(t);
@@ -36,7 +36,7 @@ void index_half_edges(Certification& cert) {
     const Tri& x = ix.T(t);
     for (std::size_t i = 0; i < 3; ++i) f(static_cast<int>(3 * t + i), x[i], x[(i + 1) % 3]);
   };
-  over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  over_bounds(cert, tri_ranges, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& count = next[found.range];
     count.assign(nv, 0);
     for (std::size_t t = begin; t < end; ++t) {
@@ -56,7 +56,7 @@ void index_half_edges(Certification& cert) {
   // triangle's -1 while placing, the others' while pairing. At 10^7 triangles a
   // fill on one thread first took as long as the pairing's two ranges.
   ix.twin.resize(nt * 3);
-  over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  over_bounds(cert, tri_ranges, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& at = next[found.range];
     for (std::size_t t = begin; t < end; ++t) {
       if (!ix.tri_ok[t]) ix.twin[3 * t] = ix.twin[3 * t + 1] = ix.twin[3 * t + 2] = -1;
