@@ -91,6 +91,15 @@ def medians(samples):
     }
 
 
+def minima(samples):
+    """{name: {"wall": s, "cpu": s}}: each the smallest over the rounds (on a shared
+    machine, the round least disturbed by the others' work)."""
+    return {
+        name: {"wall": min(x[0] for x in rows), "cpu": min(x[1] for x in rows)}
+        for name, rows in samples.items()
+    }
+
+
 def markdown_table(steps, med, columns):
     """A markdown table, a row per step: columns is a list of (header, function(step, medians) -> str)."""
     lines = ["| program | " + " | ".join(h for h, _ in columns) + " |",
