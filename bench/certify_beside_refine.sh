@@ -12,7 +12,9 @@
 # Needs no Triangle (beside_triangle.sh measures the same certify ratios beside Triangle).
 # usage: bench/certify_beside_refine.sh LEPP
 # environment: AREA=0.015 (about 10^6 triangles; 0.0015: 10^7), RUNS=5, BEFORE=path to
-#   another lepp, OUT=/tmp (the mesh, about 60 bytes a triangle).
+#   another lepp, OUT=/tmp (the mesh, about 60 bytes a triangle), LEPP_BENCH_QUIET=1
+#   (each round waits, up to 2 minutes, until the machine is 90 % idle: on a machine
+#   shared with other work, rounds that start when nothing else runs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 lepp=$(readlink -f "${1:?usage: bench/certify_beside_refine.sh LEPP}")
