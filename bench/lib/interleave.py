@@ -51,13 +51,39 @@ def timed(argv):
     return proc.returncode, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss * 1024, err
 
 
+def idle_share(seconds=0.5):
+    """The machine's idle share of CPU time over the next `seconds` (/proc/stat)."""
+    def snapshot():
+        with open("/proc/stat") as f:
+            ticks = [int(x) for x in f.readline().split()[1:]]
+        return ticks[3] + ticks[4], sum(ticks)  # idle + iowait, all
+    idle0, all0 = snapshot()
+    time.sleep(seconds)
+    idle1, all1 = snapshot()
+    return (idle1 - idle0) / max(1, all1 - all0)
+
+
+def wait_until_idle(share=0.9, limit=120.0):
+    """With LEPP_BENCH_QUIET set: waits (at most `limit` seconds) until the machine is
+    idle (`share` of its CPU time over half a second), so that a round on a machine
+    shared with other work starts when no other program runs. Returns the seconds waited."""
+    if not os.environ.get("LEPP_BENCH_QUIET"):
+        return 0.0
+    start = time.monotonic()
+    while time.monotonic() - start < limit and idle_share() < share:
+        pass
+    return time.monotonic() - start
+
+
 def run_rounds(steps, rounds, progress=""):
     """Every step once per round, `rounds` times; {name: [(wall, cpu, peak), ...]}.
+    With LEPP_BENCH_QUIET set, each round first waits for an idle machine (wait_until_idle).
 
     Exits 1 with the program's stderr when a step fails."""
     samples = {s.name: [] for s in steps}
     tty = sys.stderr.isatty()
     for r in range(rounds):
+        wait_until_idle()
         if tty and progress:
             sys.stderr.write(f"\r{progress}: round {r + 1} of {rounds}")
             sys.stderr.flush()
@@ -87,6 +113,15 @@ def medians(samples):
             "cpu": statistics.median(x[1] for x in rows),
             "peak": statistics.median(x[2] for x in rows),
         }
+        for name, rows in samples.items()
+    }
+
+
+def minima(samples):
+    """{name: {"wall": s, "cpu": s}}: each the smallest over the rounds (on a shared
+    machine, the round least disturbed by the others' work)."""
+    return {
+        name: {"wall": min(x[0] for x in rows), "cpu": min(x[1] for x in rows)}
         for name, rows in samples.items()
     }
 

@@ -15,6 +15,7 @@
 #include "certification.h"
 #include "index/index_limits.h"
 #include "passes.h"
+#include "ranges.h"
 
 namespace lepp::certify {
 namespace {
@@ -54,7 +55,7 @@ struct Built {
 };
 
 // A certification of `mesh` alone (no input) on `threads` threads, with its triangle
-// and half-edge indexes built.
+// and half-edge indexes and its adjacency built.
 struct Indexed {
   Pslg pslg;
   Options options;
@@ -63,6 +64,7 @@ struct Indexed {
   Indexed(const Mesh& mesh, int threads) : options(on_threads(threads)), cert(pslg, mesh, options, report) {
     pass::index_triangles(cert);
     pass::index_half_edges(cert);
+    pass::index_adjacency(cert);  // and the used vertices
   }
   static Options on_threads(int threads) {
     Options o;
@@ -74,7 +76,7 @@ struct Indexed {
 Built build(const Mesh& mesh, int threads) {
   const Indexed indexed(mesh, threads);
   const MeshIndex& ix = indexed.cert.index;
-  Built b{ix.twin, ix.half_begin, {}, {}, ix.used, indexed.report.violations.size()};
+  Built b{{ix.twin.begin(), ix.twin.end()}, ix.half_begin, {}, {}, ix.used, indexed.report.violations.size()};
   ix.each_edge([&b](int x, int y, std::size_t) { b.edges.push_back({x, y}); });
   EXPECT_EQ(b.edges.size(), ix.edge_count);
   for (const MeshIndex::Half& h : ix.halves) b.halves.push_back({h.other, h.h(), h.up()});
@@ -101,11 +103,13 @@ TEST(HalfEdgeIndex, SameForAnyThreadCountInEdgeKeyOrder) {
 }
 
 // The index against its definition, built the plain way: a map from each edge of a valid
-// triangle to its half-edges by id. Twins, -1 and -2, the edges in key order, each
-// half-edge's way (Half::up, kept so that pairing loads no triangle) and every lookup.
+// triangle to its half-edges by id. Twins, -1 and -2 (-1 on an invalid triangle too),
+// the used vertices, the edges in key order, each half-edge's way (Half::up, kept so
+// that pairing loads no triangle) and every lookup.
 TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     Mesh mesh = damaged_grid(17, seed);
+    mesh.vertices.push_back({-5, -5});                                          // in no triangle: not used
     mesh.triangles.push_back({0, 1, static_cast<int>(mesh.vertices.size())});  // an id out of range: no half-edges
     for (int threads : {1, 2, 3}) {
       const Indexed indexed(mesh, threads);
@@ -117,6 +121,12 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
             const int h = static_cast<int>(3 * t) + i;
             by_edge[edge_key(ix.from(h), ix.to(h))].push_back(h);
           }
+      std::vector<char> used(mesh.vertices.size(), 0);  // in a valid triangle
+      for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        if (ix.tri_ok[t])
+          for (int v : mesh.triangles[t]) used[static_cast<std::size_t>(v)] = 1;
+      EXPECT_EQ(ix.used, used) << threads;
+      EXPECT_EQ(used.back(), 0);
       std::vector<int> twin(3 * mesh.triangles.size(), -1);
       std::vector<std::array<int, 2>> edges;
       for (const auto& [key, halves] : by_edge) {
@@ -133,7 +143,7 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
         EXPECT_EQ(found, halves) << e[0] << "-" << e[1] << ", " << threads << " threads";
       }
       EXPECT_GT(std::count(twin.begin(), twin.end(), -2), 0);  // the repeated triangles' edges
-      EXPECT_EQ(ix.twin, twin) << threads;
+      EXPECT_EQ(std::vector<int>(ix.twin.begin(), ix.twin.end()), twin) << threads;
       std::vector<std::array<int, 2>> each;
       ix.each_edge([&each](int x, int y, std::size_t) { each.push_back({x, y}); });
       EXPECT_EQ(each, edges) << threads;
@@ -143,13 +153,20 @@ TEST(HalfEdgeIndex, SameAsAMapFromEachEdgeToItsHalfEdges) {
 }
 
 // The vertex adjacency (the smaller neighbours stored, the larger ones read from the
-// buckets) against the neighbours of each vertex collected from the triangles.
+// buckets, built over ranges of smaller ends) against the neighbours of each vertex
+// collected from the triangles, and the same arrays for any thread count.
 TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
   const Mesh mesh = damaged_grid(13, 7);
-  for (int threads : {1, 2}) {
-    Indexed indexed(mesh, threads);
-    pass::index_adjacency(indexed.cert);
+  std::vector<int> one_begin, one_lower;
+  for (int threads : {1, 2, 3, 7}) {
+    const Indexed indexed(mesh, threads);
     const MeshIndex& ix = indexed.cert.index;
+    if (threads == 1) {
+      one_begin = ix.lower_begin, one_lower = ix.lower;
+    } else {
+      EXPECT_EQ(ix.lower_begin, one_begin) << threads;
+      EXPECT_EQ(ix.lower, one_lower) << threads;
+    }
     std::vector<std::set<int>> around(mesh.vertices.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int i = 0; i < 3; ++i) {
@@ -164,6 +181,34 @@ TEST(HalfEdgeIndex, NeighboursAreEachVertexsNeighboursAscending) {
         ASSERT_EQ(ix.adjacent(static_cast<int>(v), static_cast<int>(w)), around[v].count(static_cast<int>(w)) > 0) << v << " " << w;
     }
   }
+}
+
+// The passes over the buckets split the vertices where the half-edges split evenly:
+// consecutive ranges from 0 to the vertex count, each bucket in one range, and each
+// range's half-edges within a bucket's size of an even share.
+TEST(HalfEdgeIndex, VertexRangesHoldAboutAsManyHalfEdgesEach) {
+  const Mesh mesh = damaged_grid(21, 11);
+  for (int threads : {1, 2, 3, 7}) {
+    const Indexed indexed(mesh, threads);
+    const MeshIndex& ix = indexed.cert.index;
+    const std::vector<std::size_t> first = vertex_ranges_by_halves(indexed.cert);
+    ASSERT_EQ(first.size(), static_cast<std::size_t>(threads) + 1);
+    EXPECT_EQ(first.front(), 0u);
+    EXPECT_EQ(first.back(), mesh.vertices.size());
+    std::size_t largest_bucket = 0;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      largest_bucket = std::max(largest_bucket, static_cast<std::size_t>(ix.half_begin[v + 1] - ix.half_begin[v]));
+    const double share = static_cast<double>(ix.halves.size()) / threads;
+    for (std::size_t r = 0; r + 1 < first.size(); ++r) {
+      ASSERT_LE(first[r], first[r + 1]) << threads;
+      const double in_range = ix.half_begin[first[r + 1]] - ix.half_begin[first[r]];
+      EXPECT_NEAR(in_range, share, static_cast<double>(largest_bucket)) << "range " << r << " of " << threads;
+    }
+  }
+  // Lower vertices hold more half-edges here (the smaller end of each edge): an even
+  // split of the vertices would not be even in half-edges.
+  const Indexed two(mesh, 2);
+  EXPECT_LT(vertex_ranges_by_halves(two.cert)[1], mesh.vertices.size() / 2);
 }
 
 // The 32-bit limit, at its boundary: through the seam with a small limit (the same

@@ -18,6 +18,7 @@
 #include "expected_domain.h"
 #include "lepp/boundary_sliver.h"
 #include "lepp/certify.h"
+#include "unwritten.h"
 
 namespace lepp::certify {
 
@@ -61,9 +62,9 @@ struct MeshIndex {
 
   std::vector<char> tri_ok;            // ids valid (orientation may still be wrong)
   std::vector<char> ccw;               // valid and strictly counter-clockwise (index_triangles)
-  std::vector<int> twin;               // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
+  UnwrittenVector<int> twin;           // half-edge 3t+i (t[i] -> t[i+1]): opposite half, -1 boundary, -2 bad edge
   std::size_t edge_count = 0;          // unique edges of valid triangles (the groups of halves)
-  std::vector<char> used;
+  std::vector<char> used;              // in a valid triangle (index_adjacency: an end of an edge of one)
   // The half-edges of valid triangles by edge (index_half_edges): the ones whose smaller
   // end is v at [half_begin[v], half_begin[v + 1]) of halves, by larger end, then by id.
   struct Half {

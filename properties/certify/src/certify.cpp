@@ -17,10 +17,10 @@ namespace pass {
 void build_index(Certification& cert) {
   index_triangles(cert);
   index_half_edges(cert);
+  index_adjacency(cert);
   merge_duplicate_vertices(cert);
   index_domain(cert);
   index_input_vertices(cert);
-  index_adjacency(cert);
   index_chains(cert);
 }
 
@@ -48,21 +48,22 @@ double segment_tolerance(const Point& a, const Point& b, std::size_t interior_ve
 Report certify(const Pslg& pslg, const Mesh& mesh, const Options& options) {
   Report report;
   Certification cert(pslg, mesh, options, report);
-  // 1. Topology (and the index's half-edges), 2. input vertices.
+  // 1. Topology (and the index's half-edges and adjacency), 2. input vertices.
   pass::index_triangles(cert);
-  // With threads, the statistics' angles and edges beside every other pass (they read
-  // only the valid triangles).
+  pass::index_half_edges(cert);
+  pass::index_adjacency(cert);
+  // With threads, the statistics' angles and edges beside the passes that follow (they
+  // read only the valid triangles): after the passes above, which use every thread, so
+  // that they fill the second one while the steps up to the chains' embedding run on one.
   std::optional<std::future<MeshStats>> stats_ahead;
   if (threads_or_cores(options.threads) > 1)
     stats_ahead = std::async(std::launch::async, [&cert] { return pass::valid_triangle_stats(cert.index); });
-  pass::index_half_edges(cert);
   pass::merge_duplicate_vertices(cert);
   pass::index_domain(cert);
   pass::index_input_vertices(cert);
   pass::check_unused_vertices(cert);
   pass::check_outside_vertices_uncovered(cert);
   // 3. Constrained edges (and the index's chains); the coverage checks need the chains.
-  pass::index_adjacency(cert);
   pass::index_chains(cert);
   pass::check_split_points(cert);
   pass::check_listed_constrained_edges(cert);

@@ -12,11 +12,11 @@ namespace lepp::certify::pass {
 
 // --- The mesh index (index/): each step builds a part and reports what it finds on the way.
 void index_triangles(Certification& cert);           // tri_ok, ccw, longest, below_theta; bad and clockwise triangles (topology)
-void index_half_edges(Certification& cert);          // twin, edges, used; overused and same-direction edges (topology)
+void index_half_edges(Certification& cert);          // twin, edges; overused and same-direction edges (topology)
+void index_adjacency(Certification& cert);           // vertex adjacency, used, listed constrained edges (reports nothing)
 void merge_duplicate_vertices(Certification& cert);  // merged; duplicate mesh vertices (topology)
 void index_domain(Certification& cert);              // the expected domain and the input outside it
 void index_input_vertices(Certification& cert);      // input <-> mesh vertex ids; moved and missing input vertices
-void index_adjacency(Certification& cert);           // vertex adjacency, listed constrained edges (reports nothing)
 void index_chains(Certification& cert);              // segment chains; missing segments, chain vertices off them
 // Every index step above, in that order.
 void build_index(Certification& cert);

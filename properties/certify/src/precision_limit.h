@@ -16,6 +16,7 @@
 #include "lepp/mesh.h"
 #include "lepp/refine.h"
 #include "lepp/rounding.h"
+#include "unwritten.h"
 
 namespace lepp::certify {
 
@@ -28,7 +29,7 @@ namespace lepp::certify {
 struct PrecisionView {
   const Mesh& mesh;
   const std::vector<char>& tri_ok;
-  const std::vector<int>& twin;
+  const UnwrittenVector<int>& twin;
   const std::vector<char>& chain;
   const OutsideInput& outside;
   const OutsideInput& chains;

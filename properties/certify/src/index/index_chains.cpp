@@ -5,6 +5,7 @@
 
 #include "../passes.h"
 #include "../prefetch.h"
+#include "../ranges.h"
 #include "chain_predicates.h"
 #include "segment_walk.h"
 
@@ -12,34 +13,57 @@ namespace lepp::certify::pass {
 namespace {
 
 // Each vertex's smaller neighbours (its larger ones are its bucket's edges, not copied):
-// from the half-edges grouped by edge (MeshIndex::each_edge's order, smaller ends
-// ascending, so each list comes out ascending). The larger ends are scattered (a cache
-// miss each at 10^7 triangles): their counts and slots are asked for kAhead halves ahead.
-void build_adjacency(MeshIndex& ix) {
+// the buckets' edges (MeshIndex::each_edge's order) placed by their larger end, a
+// counting sort. Over ranges of smaller ends, as the half-edge index's pairing: each
+// range counts and places its own edges, and a vertex's list holds range 0's, then
+// range 1's, ...: ascending, as one pass in edge order makes it. The larger ends are
+// scattered (a cache miss each at 10^7 triangles): their counts and slots are asked for
+// kAhead halves ahead.
+void build_adjacency(Certification& cert) {
+  MeshIndex& ix = cert.index;
   const std::vector<MeshIndex::Half>& halves = ix.halves;
   // The larger end of the half-edge `ahead` places on, if there is one.
   auto larger_end = [&halves](std::size_t k, std::size_t ahead) {
     return k + ahead < halves.size() ? static_cast<std::size_t>(halves[k + ahead].other) : 0;
   };
-  ix.lower_begin.assign(ix.mesh.vertices.size() + 1, 0);
-  ix.each_edge([&](int, int b, std::size_t k) {
-    prefetch_write(&ix.lower_begin[larger_end(k, kAhead) + 1]);
-    ++ix.lower_begin[static_cast<std::size_t>(b) + 1];
+  const std::size_t nv = ix.mesh.vertices.size();
+  const std::vector<std::size_t> ranges = vertex_ranges_by_halves(cert);
+  std::vector<std::vector<int>> next(ranges.size() - 1);  // per range: counts per larger end, then where its next goes
+  over_bounds(cert, ranges, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    std::vector<int>& count = next[found.range];
+    count.assign(nv, 0);
+    for (std::size_t a = begin; a < end; ++a)
+      ix.each_edge_up_from(a, [&](int b, std::size_t k) {
+        prefetch_write(&count[larger_end(k, kAhead)]);
+        ++count[static_cast<std::size_t>(b)];
+      });
   });
-  for (std::size_t i = 1; i < ix.lower_begin.size(); ++i) ix.lower_begin[i] += ix.lower_begin[i - 1];
-  ix.lower.assign(static_cast<std::size_t>(ix.lower_begin.back()), 0);
-  std::vector<int> fill(ix.lower_begin.begin(), ix.lower_begin.end() - 1);
-  ix.each_edge([&](int a, int b, std::size_t k) {
-    prefetch_write(&fill[larger_end(k, kAhead)]);
-    prefetch_write(ix.lower.data() + fill[larger_end(k, kAhead / 2)]);  // may be one past a full list
-    ix.lower[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+  ix.lower_begin.resize(nv + 1);
+  ix.used.resize(nv);
+  std::size_t at = 0;
+  for (std::size_t v = 0; v < nv; ++v) {
+    ix.lower_begin[v] = static_cast<int>(at);
+    for (std::vector<int>& count : next) at += static_cast<std::size_t>(std::exchange(count[v], static_cast<int>(at)));
+    // In a valid triangle: an end of one of its edges, the smaller (a bucket) or the larger.
+    ix.used[v] = ix.half_begin[v + 1] > ix.half_begin[v] || at > static_cast<std::size_t>(ix.lower_begin[v]);
+  }
+  ix.lower_begin[nv] = static_cast<int>(at);
+  ix.lower.resize(at);
+  over_bounds(cert, ranges, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+    std::vector<int>& fill = next[found.range];
+    for (std::size_t a = begin; a < end; ++a)
+      ix.each_edge_up_from(a, [&](int b, std::size_t k) {
+        prefetch_write(&fill[larger_end(k, kAhead)]);
+        prefetch_write(ix.lower.data() + fill[larger_end(k, kAhead / 2)]);  // may be one past a full list
+        ix.lower[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = static_cast<int>(a);
+      });
   });
   for (const ConstrainedEdge& e : ix.mesh.constrained_edges) ix.listed[edge_key(e.a, e.b)] = e.segment;
 }
 
 }  // namespace
 
-void index_adjacency(Certification& cert) { build_adjacency(cert.index); }
+void index_adjacency(Certification& cert) { build_adjacency(cert); }
 
 // Each segment's chain of mesh edges (segment_walk.h), its edges and its Steiner vertices.
 void index_chains(Certification& cert) {

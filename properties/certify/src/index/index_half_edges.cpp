@@ -18,13 +18,14 @@ void index_half_edges(Certification& cert) {
   // half-edge order), then each bucket, a vertex's few edges, sorted by the larger end.
   // The same order as a sort of (key, id), in linear time. With threads, each range of
   // triangles counts and places its own half-edges (a bucket holds range 0's, then range
-  // 1's, ..., so still by id), then each range of smaller ends sorts and pairs its buckets
-  // alone; the edges and violations merge in range order. Each step's scattered reads and
-  // writes (counts, bucket slots, twins) are asked for a few triangles or half-edges ahead
-  // (prefetch.h): at 10^7 triangles nearly every one is a cache miss.
+  // 1's, ..., so still by id), then each range of smaller ends (ranges of about as many
+  // half-edges each) sorts and pairs its buckets alone; the edges and violations merge in
+  // range order. Each step's scattered reads and writes (counts, bucket slots, twins) are
+  // asked for a few triangles or half-edges ahead (prefetch.h): at 10^7 triangles nearly
+  // every one is a cache miss.
   const std::size_t nv = ix.mesh.vertices.size(), nt = ix.mesh.triangles.size();
-  const std::size_t tri_ranges = range_count(cert, nt);
-  std::vector<std::vector<int>> next(tri_ranges);  // per range of triangles: counts per smaller end, then where its next half goes
+  const std::vector<std::size_t> tri_ranges = even_ranges(nt, thread_count(cert, nt));  // one a thread: each keeps nv counts
+  std::vector<std::vector<int>> next(tri_ranges.size() - 1);  // per range of triangles: counts per smaller end, then where its next half goes
   // The two smaller ends of triangle t's three edges (its smallest vertex is the smaller end of two).
   auto smaller_ends = [&ix](std::size_t t) {
     const Tri& x = ix.T(t);
@@ -35,7 +36,7 @@ void index_half_edges(Certification& cert) {
     const Tri& x = ix.T(t);
     for (std::size_t i = 0; i < 3; ++i) f(static_cast<int>(3 * t + i), x[i], x[(i + 1) % 3]);
   };
-  over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  over_bounds(cert, tri_ranges, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& count = next[found.range];
     count.assign(nv, 0);
     for (std::size_t t = begin; t < end; ++t) {
@@ -51,9 +52,14 @@ void index_half_edges(Certification& cert) {
     ix.half_begin[v + 1] = static_cast<int>(at);
   }
   ix.halves.resize(static_cast<std::size_t>(ix.half_begin[nv]));
-  over_ranges(cert, nt, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  // Not written here (UnwrittenVector): the ranges below write every twin, an invalid
+  // triangle's -1 while placing, the others' while pairing. At 10^7 triangles a
+  // fill on one thread first took as long as the pairing's two ranges.
+  ix.twin.resize(nt * 3);
+  over_bounds(cert, tri_ranges, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     std::vector<int>& at = next[found.range];
     for (std::size_t t = begin; t < end; ++t) {
+      if (!ix.tri_ok[t]) ix.twin[3 * t] = ix.twin[3 * t + 1] = ix.twin[3 * t + 2] = -1;
       if (t + kAhead < end && ix.tri_ok[t + kAhead])
         for (std::size_t v : smaller_ends(t + kAhead)) prefetch_write(&at[v]);
       if (t + kAhead / 2 < end && ix.tri_ok[t + kAhead / 2])  // its slots, where those counts now point
@@ -63,13 +69,8 @@ void index_half_edges(Certification& cert) {
     }
   });
   next.clear();
-  ix.used.assign(nv, 0);
-  for (std::size_t t = 0; t < nt; ++t)
-    if (ix.tri_ok[t])
-      for (int v : ix.T(t)) ix.used[static_cast<std::size_t>(v)] = 1;
-  ix.twin.assign(nt * 3, -1);
   // counters: [0] edges.
-  ix.edge_count = over_ranges(cert, nv, [&](std::size_t begin, std::size_t end, RangeFindings& found) {
+  ix.edge_count = over_bounds(cert, vertex_ranges_by_halves(cert), [&](std::size_t begin, std::size_t end, RangeFindings& found) {
     // Stable (ids stay increasing within an edge): insertion for a vertex's usual few
     // edges, the library's merge sort for a vertex of high degree (a fan's centre).
     auto by_other = [](const Half& x, const Half& y) { return x.other < y.other; };
@@ -114,6 +115,8 @@ void index_half_edges(Certification& cert) {
             ix.twin[static_cast<std::size_t>(h0)] = h1;
             ix.twin[static_cast<std::size_t>(h1)] = h0;
           }
+        } else {
+          ix.twin[static_cast<std::size_t>(i->h())] = -1;  // a boundary edge
         }
         i = j;
       }
