@@ -20,11 +20,20 @@
 
 namespace lepp::fast::detail {
 
+// Knuth's TwoSum: the rounded sum, and in err what it lost (x + y = sum + err exactly,
+// unless the sum overflows: then err is NaN).
+inline double two_sum(double x, double y, double& err) {
+  const double s = x + y, yy = s - x;
+  err = (x - (s - yy)) + (y - yy);
+  return s;
+}
+
 class ExactDoubles {
  public:
   double add(double x, double y) {
-    const double s = x + y, yy = s - x;
-    exact_ = exact_ && (x - (s - yy)) + (y - yy) == 0;
+    double err;
+    const double s = two_sum(x, y, err);
+    exact_ = exact_ && err == 0;
     return s;
   }
   double sub(double x, double y) { return add(x, -y); }
@@ -104,8 +113,8 @@ class ExactSum {
     std::size_t m = 0;
     double q = b;
     for (std::size_t i = 0; i < n_; ++i) {
-      const double s = q + e_[i], bv = s - q, av = s - bv, err = (q - av) + (e_[i] - bv);
-      q = s;
+      double err;
+      q = two_sum(q, e_[i], err);
       if (err != 0) e_[m++] = err;
     }
     if (q != 0) e_[m++] = q;
@@ -127,7 +136,8 @@ inline int compare_sqlen_by_expansion(const Point& a, const Point& b, const Poin
   const double diff[4][2] = {{b.x, a.x}, {b.y, a.y}, {d.x, c.x}, {d.y, c.y}};
   ExactSum<24> sum;  // 4 differences, 6 terms each: each term adds at most one component
   for (int i = 0; i < 4; ++i) {
-    const double x = diff[i][0], y = -diff[i][1], h = x + y, yy = h - x, l = (x - (h - yy)) + (y - yy);
+    double l;
+    const double h = two_sum(diff[i][0], -diff[i][1], l);
     if (!ExactDoubles::fits(h) || !ExactDoubles::fits(l)) return 2;
     const double sign = i < 2 ? 1 : -1;
     const double hh = h * h, hl = h * l, ll = l * l;

@@ -25,9 +25,6 @@ constexpr std::size_t kRememberAfter = 16;
 // the one crossed), so they end; `size <= nt` only guards a broken index.
 std::array<std::size_t, 2> lepp_size_sum(const MeshIndex& ix, std::size_t begin, std::size_t end) {
   const std::size_t nt = ix.mesh.triangles.size();
-  const int* twin = ix.twin.data();
-  const char* constrained = ix.constrained_half.data();
-  const signed char* longest = ix.longest.data();
   std::unordered_map<std::size_t, std::size_t> remembered;  // triangle -> its Lepp size
   std::vector<std::size_t> path;                            // the walk's triangles past kRememberAfter
   std::size_t total = 0, count = 0;
@@ -45,11 +42,11 @@ std::array<std::size_t, 2> lepp_size_sum(const MeshIndex& ix, std::size_t begin,
         }
         path.push_back(cur);
       }
-      const int h = static_cast<int>(3 * cur) + longest[cur], g = twin[static_cast<std::size_t>(h)];
-      if (g < 0 || constrained[static_cast<std::size_t>(h)]) break;  // constrained or boundary terminal edge
+      const int h = ix.longest_half(cur), g = ix.twin[static_cast<std::size_t>(h)];
+      if (g < 0 || ix.constrained_half[static_cast<std::size_t>(h)]) break;  // constrained or boundary terminal edge
       const std::size_t next = static_cast<std::size_t>(g / 3);
       ++size;
-      if (static_cast<int>(3 * next) + longest[next] == g) break;  // terminal pair: t2 counted
+      if (ix.longest_half(next) == g) break;  // terminal pair: t2 counted
       cur = next;
     }
     total += size;
