@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // lepp: quality triangulation by the Lepp-centroid method, and the tools to prove it right.
-#include <cstdio>
-#include <exception>
 #include <string>
 
 #include "commands.h"
-#include "message.h"
+#include "run_app.h"
 #include "lepp/version.h"
 
 int main(int argc, char** argv) {
@@ -23,14 +21,5 @@ int main(int argc, char** argv) {
   lepp::cli::add_paper_command(app, status);
   lepp::cli::add_theorems_command(app, status, argv);
   lepp::cli::add_audit_command(app, status);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    int code = app.exit(e);
-    return code == 0 ? 0 : 2;  // a usage error is bad input
-  } catch (const std::exception& e) {
-    lepp::cli::message("lepp: internal error: %s\n", e.what());
-    return 1;
-  }
-  return status;
+  return lepp::cli::parse_and_run(app, argc, argv, status);
 }

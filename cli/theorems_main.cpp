@@ -7,7 +7,6 @@
 // holds or is a documented finding whose narrowed statement holds, 1 otherwise,
 // 2 bad input.
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -15,6 +14,7 @@
 
 #include "lepp/prove/certificate.h"
 #include "message.h"
+#include "run_app.h"
 #include "theorems_options.h"
 
 namespace lepp::cli {
@@ -72,14 +72,5 @@ int main(int argc, char** argv) {
   lepp::cli::TheoremsArgs args;
   int status = 0;
   lepp::cli::add_theorems_subcommand(app, args)->callback([&] { status = lepp::cli::run_theorems(args); });
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    int code = app.exit(e);
-    return code == 0 ? 0 : 2;  // a usage error is bad input
-  } catch (const std::exception& e) {
-    lepp::cli::message("lepp: internal error: %s\n", e.what());
-    return 1;
-  }
-  return status;
+  return lepp::cli::parse_and_run(app, argc, argv, status);
 }
