@@ -40,6 +40,8 @@ int run_refine(const engines::RefineRequest& args) {
   if (!args.quiet && !args.json && isatty(STDERR_FILENO)) {
     options.on_progress = [](std::int64_t n) { message("\rlepp refine: %lld Steiner points", static_cast<long long>(n)); };
   }
+  // The .node's lines made beside the refinement, where a thread is free for them.
+  const std::unique_ptr<NodeTextStream> node_text = engines::stream_node_text(args, options);
   RefineResult result;
   try {
     result = engines::refine(engines::refine_engine(args), input.pslg, options);
@@ -53,7 +55,7 @@ int run_refine(const engines::RefineRequest& args) {
   if (options.on_progress) message("\r\033[K");
   engines::RefineWritten written;
   try {
-    written = engines::write_refine_files(args, result, input.pslg);
+    written = engines::write_refine_files(args, result, input.pslg, node_text.get());
   } catch (const InputError& e) {
     // An output that cannot be written (a directory in the way, a full disk, a
     // folder that does not exist) is the user's to fix: bad usage, naming the file.

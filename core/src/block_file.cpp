@@ -2,10 +2,14 @@
 // The definitions behind block_file.h: an output file written in large blocks.
 #include "block_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <system_error>
+#include <vector>
+
+#include <unistd.h>
 
 namespace lepp::detail {
 namespace {
@@ -42,6 +46,31 @@ void BlockFile::flush() {
   errno = 0;
   if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) fail(path_, "write");
   buffer_.clear();
+}
+
+void BlockFile::copy_from(int fd, std::size_t n) {
+  flush();
+  errno = 0;
+  if (std::fflush(file_) != 0) fail(path_, "write");
+  const int out = ::fileno(file_);
+  off_t at = 0;
+  while (n > 0) {
+    const ssize_t c = ::copy_file_range(fd, &at, out, nullptr, n, 0);
+    if (c < 0 && errno == EINTR) continue;
+    if (c <= 0) break;  // not here (another file system, an old kernel): by hand below
+    n -= static_cast<std::size_t>(c);
+  }
+  std::vector<char> block(n > 0 ? kBlock : 0);
+  while (n > 0) {
+    const ssize_t r = ::pread(fd, block.data(), std::min(n, kBlock), at);
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) fail(path_, "copy the lines made beside the refinement into");
+    if (std::fwrite(block.data(), 1, static_cast<std::size_t>(r), file_) != static_cast<std::size_t>(r)) fail(path_, "write");
+    at += r;
+    n -= static_cast<std::size_t>(r);
+  }
+  // The stream's position after the bytes written past it.
+  if (std::fseek(file_, 0, SEEK_END) != 0) fail(path_, "write");
 }
 
 void BlockFile::close() {

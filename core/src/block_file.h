@@ -52,6 +52,11 @@ class BlockFile {
   void raw(const T& value) {
     bytes(&value, sizeof value);
   }
+  // Appends `n` bytes of file `fd` from its offset 0 (the .node's lines made beside
+  // the refinement, node_text_stream.h): copied in the kernel where it can
+  // (copy_file_range), else read and written. Throws std::system_error naming this
+  // file's path on a failed write.
+  void copy_from(int fd, std::size_t n);
   // Writes what is left and closes; throws std::system_error on any failure
   // (a full disk shows here).
   void close();

@@ -45,7 +45,7 @@ const std::vector<TriangleMeasure>& triangle_measures() {
 void write_mesh(const std::string& prefix, const Mesh& mesh, MeshFormat format, const MeshLabels& labels,
                 const MeshWriteOptions& options) {
   switch (format) {
-    case MeshFormat::Triangle: write_mesh(prefix, mesh, options.threads); return;
+    case MeshFormat::Triangle: write_mesh(prefix, mesh, options.threads, options.node_text); return;
     case MeshFormat::Vtu: write_vtu(prefix + ".vtu", mesh, labels); return;
     case MeshFormat::Msh2: write_msh2(prefix + ".msh", mesh, labels, options.binary); return;
     case MeshFormat::Msh4: write_msh4(prefix + ".msh", mesh, labels, options.binary); return;

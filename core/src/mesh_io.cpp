@@ -18,6 +18,8 @@
 #include "lepp/mesh_read.h"
 #include "block_file.h"
 #include "double_text.h"
+#include "lepp/node_text_stream.h"
+#include "node_line.h"
 #include "line_reader.h"
 #include "node_reader.h"
 
@@ -200,23 +202,22 @@ Mesh read_mesh(const std::string& prefix, int threads) {
 
 namespace {
 
-void write_node_file(const std::string& prefix, const Mesh& mesh) {
+// `streamed`: lines made beside the refinement (node_text_stream.h), copied behind
+// the header; the vertices past them formatted here.
+void write_node_file(const std::string& prefix, const Mesh& mesh, NodeTextStream* streamed) {
   BlockFile out(prefix + ".node");
   out.print("# lepp mesh: marker 1 = input vertex, 0 = Steiner point\n");
   out.print("{} 2 0 1\n", mesh.vertices.size());
-  // A line: a 20-digit number, two doubles of at most 24 characters, a digit, 4 separators.
-  constexpr std::size_t kNodeLine = 128;
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    out.line(kNodeLine, [&](char* at) {
-      // The coordinates as fmt's "{}" writes them, by a cheaper layout (double_text.h).
-      at = fmt::format_to(at, FMT_COMPILE("{} "), i + 1);
-      at = detail::write_double(at, mesh.vertices[i].x);
-      *at++ = ' ';
-      at = detail::write_double(at, mesh.vertices[i].y);
-      *at++ = ' ';
-      *at++ = i < mesh.input_vertices ? '1' : '0';
-      *at++ = '\n';
-      return at;
+  std::size_t from = 0;
+  if (streamed)
+    if (const NodeTextStream::Made made = streamed->finish(mesh.input_vertices);
+        made.lines > 0 && made.lines <= mesh.vertices.size()) {
+      out.copy_from(streamed->fd(), made.bytes);
+      from = made.lines;
+    }
+  for (std::size_t i = from; i < mesh.vertices.size(); ++i)
+    out.line(detail::kNodeLine, [&](char* at) {
+      return detail::write_node_line(at, i, mesh.vertices[i], i < mesh.input_vertices);
     });
   out.close();
 }
@@ -245,12 +246,12 @@ void write_ele_and_poly_files(const std::string& prefix, const Mesh& mesh) {
 
 }  // namespace
 
-void write_mesh(const std::string& prefix, const Mesh& mesh, int threads) {
+void write_mesh(const std::string& prefix, const Mesh& mesh, int threads, NodeTextStream* node_text) {
   try {
     if (threads > 1) {
       // Each file is written by one thread alone; the .node's error, if any, is
       // rethrown here after the others are written (get waits for it).
-      std::future<void> node = std::async(std::launch::async, write_node_file, std::cref(prefix), std::cref(mesh));
+      std::future<void> node = std::async(std::launch::async, write_node_file, std::cref(prefix), std::cref(mesh), node_text);
       std::exception_ptr other;
       try {
         write_ele_and_poly_files(prefix, mesh);
@@ -260,7 +261,7 @@ void write_mesh(const std::string& prefix, const Mesh& mesh, int threads) {
       node.get();
       if (other) std::rethrow_exception(other);
     } else {
-      write_node_file(prefix, mesh);
+      write_node_file(prefix, mesh, node_text);
       write_ele_and_poly_files(prefix, mesh);
     }
   } catch (const std::system_error& e) {

@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "lepp/io.h"
+#include "lepp/node_text_stream.h"
 
 namespace lepp {
 namespace {
@@ -145,6 +146,97 @@ TEST(MeshIo, TwoThreadsThatCannotWriteThrowOneInputError) {
       EXPECT_NE(std::string(e.what()).find(prefix), std::string::npos) << e.what();
     }
   }
+}
+
+// The .node's lines made beside the refinement (node_text_stream.h): handed over in
+// growing prefixes, as the engine does, then the header, the copied lines and the
+// rest formatted: the bytes of a .node written whole. 60,000 awkward points are
+// about 3 MiB of text: the stream's thread writes several blocks, and the copy
+// crosses the writer's own.
+TEST(NodeTextStream, StreamedNodeIsTheWholeWritesBytes) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(60000);
+  mesh.input_vertices = 1000;
+  for (int i = 0; i + 2 < 60000; i += 3) mesh.triangles.push_back({i, i + 2, i + 1});
+  const std::string whole = temp_prefix("whole");
+  write_mesh(whole, mesh, 1);
+  const std::string expected = file_bytes(whole + ".node");
+  // Handed over: nothing, some, all but a tail, all (each then written with one and two threads).
+  for (std::size_t handed : {std::size_t{0}, std::size_t{3}, std::size_t{41000}, std::size_t{59993}, std::size_t{60000}})
+    for (int threads : {1, 2}) {
+      const std::string prefix = temp_prefix("streamed");
+      std::unique_ptr<NodeTextStream> stream = NodeTextStream::open(prefix);
+      ASSERT_TRUE(stream);
+      for (std::size_t n : {handed / 3, handed / 3, handed / 2, handed}) {  // one hand-over of nothing new
+        std::vector<Point> prefix_points(mesh.vertices.begin(), mesh.vertices.begin() + static_cast<std::ptrdiff_t>(n));
+        stream->add(prefix_points, mesh.input_vertices);
+      }
+      write_mesh(prefix, mesh, threads, stream.get());
+      EXPECT_TRUE(file_bytes(prefix + ".node") == expected) << handed << " handed over, " << threads << " thread(s)";
+      EXPECT_EQ(file_bytes(prefix + ".ele"), file_bytes(whole + ".ele"));
+      EXPECT_EQ(stream->finish(mesh.input_vertices).lines, handed);  // finish again: the same answer
+      for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+    }
+  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(whole + ext);
+}
+
+// The lines copied are the stream's, not formatted again: a vertex handed over with
+// other coordinates than the mesh's shows in the file. (The engine never does this;
+// the test tells that the copy is what writes those lines.)
+TEST(NodeTextStream, TheHandedOverLinesAreTheOnesWritten) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(100);
+  mesh.input_vertices = 10;
+  mesh.triangles.push_back({0, 1, 2});
+  const std::string prefix = temp_prefix("copied");
+  std::unique_ptr<NodeTextStream> stream = NodeTextStream::open(prefix);
+  ASSERT_TRUE(stream);
+  std::vector<Point> handed(mesh.vertices.begin(), mesh.vertices.begin() + 50);
+  handed[20] = {1.5, -2.25};
+  stream->add(handed, mesh.input_vertices);
+  write_mesh(prefix, mesh, 1, stream.get());
+  const std::string node = file_bytes(prefix + ".node");
+  EXPECT_NE(node.find("\n21 1.5 -2.25 0\n"), std::string::npos);
+  EXPECT_NE(node.find(fmt::format("\n51 {} {} 0\n", mesh.vertices[50].x, mesh.vertices[50].y)), std::string::npos);
+  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+}
+
+// Lines whose markers were made for another count of input vertices are not used:
+// the .node is formatted whole, with the mesh's markers.
+TEST(NodeTextStream, AnotherInputVertexCountIsNotUsed) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(200);
+  mesh.input_vertices = 30;
+  mesh.triangles.push_back({0, 1, 2});
+  const std::string whole = temp_prefix("markers_whole");
+  write_mesh(whole, mesh, 1);
+  for (int differ : {0, 1}) {  // the count differs from the mesh's, or between two hand-overs
+    const std::string prefix = temp_prefix("markers");
+    std::unique_ptr<NodeTextStream> stream = NodeTextStream::open(prefix);
+    ASSERT_TRUE(stream);
+    std::vector<Point> half(mesh.vertices.begin(), mesh.vertices.begin() + 100);
+    stream->add(half, differ ? 30 : 29);
+    stream->add(mesh.vertices, 29);
+    write_mesh(prefix, mesh, 2, stream.get());
+    EXPECT_EQ(file_bytes(prefix + ".node"), file_bytes(whole + ".node")) << differ;
+    EXPECT_EQ(stream->finish(mesh.input_vertices).lines, 0u) << differ;
+    for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+  }
+  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(whole + ext);
+}
+
+// A run that ends without writing (an error, a capacity stop) drops its stream: the
+// thread stops and the temporary file goes, with blocks still waiting. Where no
+// temporary file can be made, there is no stream.
+TEST(NodeTextStream, DroppedUnfinishedAndUnopenable) {
+  const std::vector<Point> pts = awkward_points(50000);
+  for (int i = 0; i < 20; ++i) {
+    std::unique_ptr<NodeTextStream> stream = NodeTextStream::open(temp_prefix("dropped"));
+    ASSERT_TRUE(stream);
+    for (std::size_t n = 1000; n <= pts.size(); n += 7000)
+      stream->add(std::vector<Point>(pts.begin(), pts.begin() + static_cast<std::ptrdiff_t>(n)), 5);
+  }
+  EXPECT_FALSE(NodeTextStream::open("/nonexistent-lepp-directory/mesh"));
 }
 
 TEST(MeshIo, WritePolyThenReadPoly) {

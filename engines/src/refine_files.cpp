@@ -2,6 +2,7 @@
 // `lepp refine`'s files: the input read and validated, the refined mesh (and trace) written.
 #include "lepp/engines/refine_files.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <future>
@@ -41,12 +42,14 @@ RefineInput read_refine_input(const RefineRequest& request) {
   return in;
 }
 
-void write_refine_outputs(const RefineRequest& request, const RefineResult& result, const MeshLabels& labels) {
+void write_refine_outputs(const RefineRequest& request, const RefineResult& result, const MeshLabels& labels,
+                          NodeTextStream* node_text) {
   // The names were checked by refine_request_error (msh2 with msh4) and the option parser.
   const MeshFormatChoice output = choose_mesh_formats(request.formats);
   MeshWriteOptions write_options;
   write_options.binary = request.binary;
   write_options.threads = output_threads(request);
+  write_options.node_text = node_text;
   // A file that cannot be written is the user's to fix (exit 2 in lepp refine), as
   // Triangle's files already are (their InputError): the writers' std::system_error
   // (the other formats, the .unimprovable, the trace) names the file.
@@ -62,7 +65,8 @@ int output_threads(const RefineRequest& request) {
   return threads_or_cores(request.threads);
 }
 
-RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input) {
+RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input,
+                                 NodeTextStream* node_text) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const MeshLabels labels = label_refined_mesh(result.mesh, input, request.domain);
@@ -76,11 +80,24 @@ RefineWritten write_refine_files(const RefineRequest& request, RefineResult& res
   };
   std::future<RefineWritten> beside;
   if (output_threads(request) > 1) beside = std::async(std::launch::async, measure);
-  write_refine_outputs(request, result, labels);
+  write_refine_outputs(request, result, labels, node_text);
   const double write_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   RefineWritten written = beside.valid() ? beside.get() : measure();
   written.write_seconds = write_seconds;
   return written;
+}
+
+std::unique_ptr<NodeTextStream> stream_node_text(const RefineRequest& request, RefineOptions& options) {
+  if (output_threads(request) < 2 || options.order == QueueOrder::Batch) return nullptr;
+  const MeshFormatChoice output = choose_mesh_formats(request.formats);
+  if (std::find(output.formats.begin(), output.formats.end(), MeshFormat::Triangle) == output.formats.end())
+    return nullptr;
+  std::unique_ptr<NodeTextStream> stream = NodeTextStream::open(request.output);
+  if (stream)
+    options.on_vertices = [s = stream.get()](const std::vector<Point>& vertices, std::size_t input_vertices) {
+      s->add(vertices, input_vertices);
+    };
+  return stream;
 }
 
 }  // namespace lepp::engines

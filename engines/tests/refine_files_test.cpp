@@ -29,7 +29,8 @@ struct Written {
   RefineWritten written;
 };
 
-Written refine_and_write(int threads, const std::string& formats) {
+Written refine_and_write(int threads, const std::string& formats, bool stream = false,
+                         std::size_t* streamed_lines = nullptr, std::string order = "fifo") {
   RefineRequest request;
   request.input = std::string(LEPP_SOURCE_DIR) + "/corpus/paper/square400.poly";
   request.output = (std::filesystem::temp_directory_path() /
@@ -38,10 +39,16 @@ Written refine_and_write(int threads, const std::string& formats) {
   request.max_area = 0.2;
   request.threads = threads;
   request.formats = {formats};
+  request.order = order;
   const RefineInput input = read_refine_input(request);
-  RefineResult result = refine(refine_engine(request), input.pslg, refine_options(request));
+  RefineOptions options = refine_options(request);
+  std::unique_ptr<NodeTextStream> node_text = stream ? stream_node_text(request, options) : nullptr;
+  EXPECT_EQ(!!node_text, stream && threads > 1 && formats.find("triangle") != std::string::npos && order != "batch")
+      << threads << " threads, " << formats << ", " << order;
+  RefineResult result = refine(refine_engine(request), input.pslg, options);
   Written w;
-  w.written = write_refine_files(request, result, input.pslg);
+  w.written = write_refine_files(request, result, input.pslg, node_text.get());
+  if (node_text && streamed_lines) *streamed_lines = node_text->finish(result.mesh.input_vertices).lines;
   for (const char* ext : {".node", ".ele", ".poly", ".vtu"}) {
     w.files += bytes(request.output + ext);
     std::filesystem::remove(request.output + ext);
@@ -64,6 +71,22 @@ TEST(RefineFiles, OutputThreadsChangeNothingButTheTime) {
     EXPECT_GT(two.written.write_seconds, 0.0);
     EXPECT_GT(two.written.statistics_seconds, 0.0);
   }
+}
+
+// lepp refine's .node made beside the refinement (stream_node_text): only where a
+// thread is free for it and Triangle's files are asked for; then every line of the
+// .node is the stream's, and the files are those of one thread.
+TEST(RefineFiles, TheNodeMadeBesideTheRefinementIsTheSame) {
+  const Written one = refine_and_write(1, "triangle");
+  std::size_t lines = 0;
+  const Written two = refine_and_write(2, "triangle", true, &lines);
+  EXPECT_TRUE(one.files == two.files) << "the files differ";
+  EXPECT_EQ(one.text, two.text);
+  EXPECT_EQ(lines, one.written.stats.vertices) << "the .node's lines were not all made beside the refinement";
+  EXPECT_GT(lines, 10000u);
+  refine_and_write(1, "triangle", true);              // no stream: one thread
+  refine_and_write(2, "vtu", true);                   // no stream: no .node
+  refine_and_write(2, "triangle", true, nullptr, "batch");  // no stream: the batch order's selection takes the threads
 }
 
 }  // namespace

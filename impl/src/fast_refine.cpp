@@ -168,6 +168,7 @@ class Refiner {
     result.outcome = outcome;
     result.steiner_points = steiner;
     result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
+    if (opt_.on_vertices) opt_.on_vertices(mesh_.pts, static_cast<std::size_t>(mem_.input_vertices));
     result.mesh = mesh_.take_canonical_mesh(mem_);
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
@@ -397,6 +398,9 @@ class Refiner {
       opt_.on_insertion(now);
     }
     if (opt_.on_progress && (steiner_ & 0xffff) == 0) opt_.on_progress(steiner_);
+    // 8192 points a block: the writer's last block, formatted during the canonical
+    // sort, stays small beside the run.
+    if (opt_.on_vertices && (steiner_ & 0x1fff) == 0) opt_.on_vertices(mesh_.pts, static_cast<std::size_t>(mem_.input_vertices));
     if (!below_floor) return true;
     outcome_ = Outcome::EdgeFloor;
     result.stuck = describe(mesh_, item, lepp_) + fmt::format("; Steiner point {} made an edge below the floor", p);

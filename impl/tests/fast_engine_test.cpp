@@ -265,6 +265,38 @@ TEST(FastEngine, OnInsertionSeesEveryIntermediateCdt) {
   EXPECT_EQ(problems, "");
 }
 
+// The vertices the engine hands to a writer beside the refinement (lepp refine's .node,
+// node_text_stream.h) must be the output's, in its numbering: each call's array a prefix
+// of the mesh's vertices, the calls' sizes never shrinking, the last call all of them.
+TEST(FastEngine, OnVerticesHandsOverPrefixesOfTheOutputVertices) {
+  for (QueueOrder order : {QueueOrder::Fifo, QueueOrder::Lifo, QueueOrder::Random, QueueOrder::Batch}) {
+    Pslg p = load("square400");
+    RefineOptions o;
+    o.max_area = 0.2;  // some 20,000 Steiner points: two calls on the way and the last
+    o.order = order;
+    o.threads = 1;
+    std::vector<std::vector<Point>> calls;
+    std::vector<std::size_t> inputs;
+    o.on_vertices = [&](const std::vector<Point>& v, std::size_t input_vertices) {
+      calls.push_back(v);
+      inputs.push_back(input_vertices);
+    };
+    RefineResult r = fast::refine(p, o);
+    ASSERT_GE(calls.size(), 3u) << to_string(order);
+    EXPECT_EQ(calls.back().size(), r.mesh.vertices.size()) << to_string(order);
+    for (std::size_t c = 0; c < calls.size(); ++c) {
+      EXPECT_EQ(inputs[c], r.mesh.input_vertices);
+      if (c > 0) EXPECT_GE(calls[c].size(), calls[c - 1].size()) << to_string(order) << " call " << c;
+      ASSERT_LE(calls[c].size(), r.mesh.vertices.size());
+      for (std::size_t i = 0; i < calls[c].size(); ++i)
+        if (calls[c][i].x != r.mesh.vertices[i].x || calls[c][i].y != r.mesh.vertices[i].y) {
+          ADD_FAILURE() << to_string(order) << ": call " << c << " vertex " << i << " is not the output's";
+          break;
+        }
+    }
+  }
+}
+
 TEST(FastEngine, LifoOrderAlsoConverges) {
   Pslg p = load("square400");
   RefineOptions o;

@@ -12,6 +12,8 @@
 
 namespace lepp {
 
+class NodeTextStream;
+
 // Bad input: names the file and line and what is wrong. CLI exit status 2.
 class InputError : public std::runtime_error {
  public:
@@ -34,8 +36,10 @@ Pslg read_node(const std::string& path);
 Mesh read_mesh(const std::string& prefix);
 // Writes PREFIX.node, PREFIX.ele, PREFIX.poly with 1-based numbering, as Triangle does.
 // threads > 1: the .node (its coordinates cost the most to format) on a second
-// thread beside the .ele and .poly; the same files.
-void write_mesh(const std::string& prefix, const Mesh& mesh, int threads = 1);
+// thread beside the .ele and .poly; the same files. `node_text`: the .node's lines
+// made beside the refinement (node_text_stream.h), used where they are whole and the
+// mesh's; the same files with it or without.
+void write_mesh(const std::string& prefix, const Mesh& mesh, int threads = 1, NodeTextStream* node_text = nullptr);
 // Writes a .poly file of a PSLG (used by tests, fuzzers and generators).
 void write_poly(const std::string& path, const Pslg& pslg);
 

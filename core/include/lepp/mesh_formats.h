@@ -22,9 +22,13 @@ enum class MeshFormat {
   Msh4,      // PREFIX.msh: Gmsh 4.1 (deal.II, libMesh, Gmsh's default)
 };
 
+class NodeTextStream;
+
 struct MeshWriteOptions {
   bool binary = false;  // .msh only: Gmsh's binary variant instead of ASCII (.vtu is always binary)
   int threads = 1;      // Triangle's files: > 1 writes the .node beside the .ele (write_mesh in lepp/io.h)
+  // Triangle's .node: its lines made beside the refinement (lepp/node_text_stream.h), or nullptr.
+  NodeTextStream* node_text = nullptr;
 };
 
 // "triangle", "vtu", "msh2", "msh4": the names `lepp refine --format` takes.

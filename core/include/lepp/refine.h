@@ -86,6 +86,12 @@ struct RefineOptions {
   std::function<void(const Mesh&)> on_insertion;
   // Called now and then on long runs with the number of Steiner points so far.
   std::function<void(std::int64_t)> on_progress;
+  // The fast engine: called now and then during the refinement, and once before
+  // its mesh is made, with the vertices so far (valid during the call only: the
+  // array moves as it grows) and how many of them are the input's. The engine only
+  // appends vertices, in the output's numbering, so a writer can format the new
+  // ones beside the refinement (lepp/node_text_stream.h).
+  std::function<void(const std::vector<Point>& vertices, std::size_t input_vertices)> on_vertices;
 };
 
 struct TraceStep {

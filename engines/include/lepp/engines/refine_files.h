@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `lepp refine`'s files: the input read and validated, the refined mesh (and trace) written.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "lepp/engines/refine_request.h"
 #include "lepp/mesh_labels.h"
+#include "lepp/node_text_stream.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
 #include "lepp/stats.h"
@@ -27,7 +29,8 @@ RefineInput read_refine_input(const RefineRequest& request);
 // PREFIX (request.output) in the formats asked for, PREFIX.unimprovable, and with
 // request.trace PREFIX.trace. `labels`: label_refined_mesh of the result's mesh.
 // Throws std::exception naming the file that cannot be written.
-void write_refine_outputs(const RefineRequest& request, const RefineResult& result, const MeshLabels& labels);
+void write_refine_outputs(const RefineRequest& request, const RefineResult& result, const MeshLabels& labels,
+                          NodeTextStream* node_text = nullptr);
 
 // What writing a run leaves for its summary (refine_summary.h): the statistics of
 // the labelled mesh, and the wall seconds of the two phases.
@@ -46,6 +49,15 @@ int output_threads(const RefineRequest& request);
 // more than one output thread the statistics run beside the writing, and Triangle's
 // .node is written beside its .ele: the same files and numbers. Throws as
 // write_refine_outputs.
-RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input);
+// `node_text`: stream_node_text's, for the .node.
+RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input,
+                                 NodeTextStream* node_text = nullptr);
+
+// The .node's lines made beside the refinement (lepp/node_text_stream.h), fed by
+// options.on_vertices: with more than one output thread, Triangle's files among the
+// formats and an order that refines on one thread (the batch order's selection takes
+// the threads). nullptr otherwise, or where no temporary file can be made; the files
+// are the same either way. Give it to write_refine_files.
+std::unique_ptr<NodeTextStream> stream_node_text(const RefineRequest& request, RefineOptions& options);
 
 }  // namespace lepp::engines
