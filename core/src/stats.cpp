@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace lepp {
 
@@ -134,23 +135,19 @@ double area_quality(const Point& a, const Point& b, const Point& c) {
   return l > 0 ? (2.0 / std::sqrt(3.0)) * area2 / (l * l) : 0.0;
 }
 
-MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
-  MeshStats s;
-  s.vertices = mesh.vertices.size();
-  s.triangles = mesh.triangles.size();
-  double min_angle = 180, sum = 0, min_q = std::numeric_limits<double>::infinity();
+namespace {
+
+// The statistics' running values over some of the triangles: smallest values, which
+// merge in any order to the same numbers. (The mean's sum does not: MeshStatsJob adds
+// the smallest angles in the triangles' order.)
+struct StatsPass {
+  double min_angle = 180, min_q = std::numeric_limits<double>::infinity();
   double shortest = std::numeric_limits<double>::infinity();
+  // Triangles that cannot lower `shortest` or `min_q` are not measured for them.
   double shortest_bound = kNone, quality_bound = kNone;
-  // The triangles come in order of their smallest vertex, so their other two
-  // vertices are loads from anywhere in the array: fetched kAhead triangles early.
-  constexpr std::size_t kAhead = 8;
-  const std::size_t nt = mesh.triangles.size();
-  for (std::size_t i = 0; i < nt; ++i) {
-    if (i + kAhead < nt) {
-      const Tri& later = mesh.triangles[i + kAhead];
-      __builtin_prefetch(&mesh.vertices[static_cast<std::size_t>(later[1])]);
-      __builtin_prefetch(&mesh.vertices[static_cast<std::size_t>(later[2])]);
-    }
+
+  // Triangle i's smallest angle, counted into the smallest values.
+  double add(const Mesh& mesh, std::size_t i) {
     const Tri& t = mesh.triangles[i];
     const Point &a = mesh.vertices[static_cast<std::size_t>(t[0])], &b = mesh.vertices[static_cast<std::size_t>(t[1])],
                 &c = mesh.vertices[static_cast<std::size_t>(t[2])];
@@ -158,7 +155,6 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
     const double m = smallest_angle(a, b, c, sides);
     const double ab = sides.ab, bc = sides.bc, ca = sides.ca;
     min_angle = std::min(min_angle, m);
-    sum += m;
     const bool well_scaled = safe_square(ab) && safe_square(bc) && safe_square(ca);  // false for a NaN too
     const double lo = std::min({ab, bc, ca}), hi = std::max({ab, bc, ca});
     if (!(well_scaled && lo > shortest_bound)) {
@@ -170,19 +166,81 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
       min_q = std::min(min_q, area_quality(a, b, c));
       quality_bound = area_quality_bound(min_q);
     }
+    return m;
   }
+  void merge(const StatsPass& other) {
+    min_angle = std::min(min_angle, other.min_angle);
+    min_q = std::min(min_q, other.min_q);
+    shortest = std::min(shortest, other.shortest);
+  }
+};
+
+}  // namespace
+
+MeshStatsJob::MeshStatsJob(const Mesh& mesh, const Pslg& input) : mesh_(mesh), input_(input) {}
+
+void MeshStatsJob::work() {
+  StatsPass pass;
+  std::vector<double> angles(kChunk);
+  // The triangles come in order of their smallest vertex, so their other two
+  // vertices are loads from anywhere in the array: fetched kAhead triangles early.
+  constexpr std::size_t kAhead = 8;
+  const std::size_t nt = mesh_.triangles.size();
+  for (;;) {
+    const std::size_t chunk = next_chunk_.fetch_add(1, std::memory_order_relaxed);
+    const std::size_t begin = chunk * kChunk;
+    if (begin >= nt) break;
+    const std::size_t end = std::min(nt, begin + kChunk);
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i + kAhead < nt) {
+        const Tri& later = mesh_.triangles[i + kAhead];
+        __builtin_prefetch(&mesh_.vertices[static_cast<std::size_t>(later[1])]);
+        __builtin_prefetch(&mesh_.vertices[static_cast<std::size_t>(later[2])]);
+      }
+      angles[i - begin] = pass.add(mesh_, i);
+    }
+    // The sum in the triangles' order, whichever thread measured them: chunk c's
+    // angles are added after chunk c - 1's.
+    std::unique_lock<std::mutex> lock(mutex_);
+    summed_.wait(lock, [&] { return next_sum_ == chunk; });
+    for (std::size_t i = begin; i < end; ++i) sum_ += angles[i - begin];
+    ++next_sum_;
+    lock.unlock();
+    summed_.notify_all();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  StatsPass merged;
+  merged.min_angle = min_angle_;
+  merged.min_q = min_q_;
+  merged.shortest = shortest_;
+  merged.merge(pass);
+  min_angle_ = merged.min_angle;
+  min_q_ = merged.min_q;
+  shortest_ = merged.shortest;
+}
+
+MeshStats MeshStatsJob::result() const {
+  MeshStats s;
+  s.vertices = mesh_.vertices.size();
+  s.triangles = mesh_.triangles.size();
   double input_shortest = std::numeric_limits<double>::infinity();
-  for (const Segment& seg : input.segments)
-    input_shortest = std::min(input_shortest, len(input.vertices[static_cast<std::size_t>(seg.a)],
-                                                  input.vertices[static_cast<std::size_t>(seg.b)]));
-  if (!mesh.triangles.empty()) {
-    s.min_angle_deg = min_angle;
-    s.avg_min_angle_deg = sum / static_cast<double>(mesh.triangles.size());
-    s.min_area_quality = min_q;
-    s.shortest_edge = shortest;
-    s.shortest_edge_ratio = std::isfinite(input_shortest) && input_shortest > 0 ? shortest / input_shortest : 0;
+  for (const Segment& seg : input_.segments)
+    input_shortest = std::min(input_shortest, len(input_.vertices[static_cast<std::size_t>(seg.a)],
+                                                  input_.vertices[static_cast<std::size_t>(seg.b)]));
+  if (!mesh_.triangles.empty()) {
+    s.min_angle_deg = min_angle_;
+    s.avg_min_angle_deg = sum_ / static_cast<double>(mesh_.triangles.size());
+    s.min_area_quality = min_q_;
+    s.shortest_edge = shortest_;
+    s.shortest_edge_ratio = std::isfinite(input_shortest) && input_shortest > 0 ? shortest_ / input_shortest : 0;
   }
   return s;
+}
+
+MeshStats mesh_stats(const Mesh& mesh, const Pslg& input) {
+  MeshStatsJob job(mesh, input);
+  job.work();
+  return job.result();
 }
 
 }  // namespace lepp

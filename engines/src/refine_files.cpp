@@ -70,20 +70,20 @@ RefineWritten write_refine_files(const RefineRequest& request, RefineResult& res
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const MeshLabels labels = label_refined_mesh(result.mesh, input, request.domain);
-  // Both only read the labelled mesh.
-  auto measure = [&result, &input] {
-    const auto begin = Clock::now();
-    RefineWritten w;
-    w.stats = mesh_stats(result.mesh, input);
-    w.statistics_seconds = std::chrono::duration<double>(Clock::now() - begin).count();
-    return w;
-  };
-  std::future<RefineWritten> beside;
-  if (output_threads(request) > 1) beside = std::async(std::launch::async, measure);
+  // Both only read the labelled mesh. With more than one thread the statistics start
+  // beside the writing, and this thread joins them once the files are written.
+  MeshStatsJob statistics(result.mesh, input);
+  Clock::time_point statistics_start = Clock::now();
+  std::future<void> beside;
+  if (output_threads(request) > 1) beside = std::async(std::launch::async, [&statistics] { statistics.work(); });
   write_refine_outputs(request, result, labels, node_text);
-  const double write_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  RefineWritten written = beside.valid() ? beside.get() : measure();
-  written.write_seconds = write_seconds;
+  RefineWritten written;
+  written.write_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (!beside.valid()) statistics_start = Clock::now();
+  statistics.work();
+  if (beside.valid()) beside.get();
+  written.stats = statistics.result();
+  written.statistics_seconds = std::chrono::duration<double>(Clock::now() - statistics_start).count();
   return written;
 }
 

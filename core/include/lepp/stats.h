@@ -2,7 +2,11 @@
 // The statistics `lepp refine` prints and the paper plots, in double precision
 // (for display; decisions about angles are made exactly elsewhere).
 #pragma once
+#include <atomic>
+#include <condition_variable>
 #include <cstddef>
+#include <limits>
+#include <mutex>
 
 #include "lepp/mesh.h"
 #include "lepp/pslg.h"
@@ -26,6 +30,32 @@ struct MeshStats {
 };
 
 MeshStats mesh_stats(const Mesh& mesh, const Pslg& input);
+
+// mesh_stats on more than one thread: each calls work(), which takes chunks of
+// triangles in turn until none is left; result() once every work() has returned
+// gives mesh_stats's numbers to the bit (the smallest values merge in any order, and
+// the smallest angles are summed in the triangles' order, chunk after chunk). lepp
+// refine's writing thread joins the statistics' once its files are written.
+class MeshStatsJob {
+ public:
+  MeshStatsJob(const Mesh& mesh, const Pslg& input);  // both must outlive the job
+  MeshStatsJob(const MeshStatsJob&) = delete;
+  MeshStatsJob& operator=(const MeshStatsJob&) = delete;
+  void work();
+  MeshStats result() const;
+
+ private:
+  static constexpr std::size_t kChunk = std::size_t{1} << 14;  // 128 KiB of angles, kept in cache
+  const Mesh& mesh_;
+  const Pslg& input_;
+  std::atomic<std::size_t> next_chunk_{0};
+  std::mutex mutex_;
+  std::condition_variable summed_;
+  std::size_t next_sum_ = 0;  // under mutex_: the chunk whose angles are added next
+  double sum_ = 0;            // under mutex_
+  double min_angle_ = 180, min_q_ = std::numeric_limits<double>::infinity();  // under mutex_
+  double shortest_ = std::numeric_limits<double>::infinity();                  // under mutex_
+};
 
 // The angle at o between o->p and o->q, degrees in [0, 180], and its signed form
 // (counter-clockwise from o->p to o->q, in (-180, 180]). Right at any magnitude:

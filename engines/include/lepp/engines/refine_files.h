@@ -46,10 +46,10 @@ int output_threads(const RefineRequest& request);
 
 // The result's mesh labelled (label_refined_mesh, with the request's domain options)
 // and written (write_refine_outputs), and its statistics computed (mesh_stats). With
-// more than one output thread the statistics run beside the writing, and Triangle's
-// .node is written beside its .ele: the same files and numbers. Throws as
-// write_refine_outputs.
-// `node_text`: stream_node_text's, for the .node.
+// more than one output thread the statistics run beside the writing (this thread
+// joins them when the files are written), and Triangle's .node is written beside its
+// .ele: the same files and numbers. Throws as write_refine_outputs. `node_text`:
+// stream_node_text's, for the .node.
 RefineWritten write_refine_files(const RefineRequest& request, RefineResult& result, const Pslg& input,
                                  NodeTextStream* node_text = nullptr);
 
