@@ -177,20 +177,21 @@ struct StatsPass {
 
 }  // namespace
 
-MeshStatsJob::MeshStatsJob(const Mesh& mesh, const Pslg& input) : mesh_(mesh), input_(input) {}
+MeshStatsJob::MeshStatsJob(const Mesh& mesh, const Pslg& input, std::size_t chunk)
+    : mesh_(mesh), input_(input), chunk_(std::max<std::size_t>(chunk, 1)) {}
 
 void MeshStatsJob::work() {
   StatsPass pass;
-  std::vector<double> angles(kChunk);
+  std::vector<double> angles(chunk_);
   // The triangles come in order of their smallest vertex, so their other two
   // vertices are loads from anywhere in the array: fetched kAhead triangles early.
   constexpr std::size_t kAhead = 8;
   const std::size_t nt = mesh_.triangles.size();
   for (;;) {
     const std::size_t chunk = next_chunk_.fetch_add(1, std::memory_order_relaxed);
-    const std::size_t begin = chunk * kChunk;
+    const std::size_t begin = chunk * chunk_;
     if (begin >= nt) break;
-    const std::size_t end = std::min(nt, begin + kChunk);
+    const std::size_t end = std::min(nt, begin + chunk_);
     for (std::size_t i = begin; i < end; ++i) {
       if (i + kAhead < nt) {
         const Tri& later = mesh_.triangles[i + kAhead];

@@ -22,6 +22,6 @@ start=$(date +%s)
 TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" "$build/impl/tests/impl_batch_threads_tests" \
   --gtest_filter='-*rect162*:*circles240*:*A_midpoint*'
 TSAN_OPTIONS="halt_on_error=1" "$build/engines/tests/engine_refine_files_tests"
-TSAN_OPTIONS="halt_on_error=1" "$build/core/tests/core_tests" --gtest_filter='MeshIo.TwoThreads*:MeshReadThreads.*:NodeTextStream.*'
+TSAN_OPTIONS="halt_on_error=1" "$build/core/tests/core_tests" --gtest_filter='MeshIo.TwoThreads*:MeshReadThreads.*:NodeTextStream.*:MeshStatistics.Threads*'
 TSAN_OPTIONS="halt_on_error=1" "$build/properties/tests/certify_tests" --gtest_filter='CertifyThreads.*'
 echo "thread sanitizer tests: $(( $(date +%s) - start )) s"

@@ -38,7 +38,8 @@ MeshStats mesh_stats(const Mesh& mesh, const Pslg& input);
 // refine's writing thread joins the statistics' once its files are written.
 class MeshStatsJob {
  public:
-  MeshStatsJob(const Mesh& mesh, const Pslg& input);  // both must outlive the job
+  // Both must outlive the job. `chunk`: triangles a turn (tests take tiny ones).
+  MeshStatsJob(const Mesh& mesh, const Pslg& input, std::size_t chunk = kChunk);
   MeshStatsJob(const MeshStatsJob&) = delete;
   MeshStatsJob& operator=(const MeshStatsJob&) = delete;
   void work();
@@ -48,6 +49,7 @@ class MeshStatsJob {
   static constexpr std::size_t kChunk = std::size_t{1} << 14;  // 128 KiB of angles, kept in cache
   const Mesh& mesh_;
   const Pslg& input_;
+  const std::size_t chunk_;
   std::atomic<std::size_t> next_chunk_{0};
   std::mutex mutex_;
   std::condition_variable summed_;
