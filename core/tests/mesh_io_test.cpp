@@ -148,6 +148,20 @@ TEST(MeshIo, TwoThreadsThatCannotWriteThrowOneInputError) {
   }
 }
 
+// n awkward points, the first `inputs` of them the input's, and one triangle: enough
+// for a .node.
+Mesh points_mesh(std::size_t n, std::size_t inputs) {
+  Mesh mesh;
+  mesh.vertices = awkward_points(n);
+  mesh.input_vertices = inputs;
+  mesh.triangles.push_back({0, 1, 2});
+  return mesh;
+}
+
+void remove_mesh_files(const std::string& prefix) {
+  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+}
+
 // The .node's lines made beside the refinement (node_text_stream.h): handed over in
 // growing prefixes, as the engine does, then the header, the copied lines and the
 // rest formatted: the bytes of a .node written whole. 60,000 awkward points are
@@ -175,19 +189,16 @@ TEST(NodeTextStream, StreamedNodeIsTheWholeWritesBytes) {
       EXPECT_TRUE(file_bytes(prefix + ".node") == expected) << handed << " handed over, " << threads << " thread(s)";
       EXPECT_EQ(file_bytes(prefix + ".ele"), file_bytes(whole + ".ele"));
       EXPECT_EQ(stream->finish(mesh.input_vertices).lines, handed);  // finish again: the same answer
-      for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+      remove_mesh_files(prefix);
     }
-  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(whole + ext);
+  remove_mesh_files(whole);
 }
 
 // The lines copied are the stream's, not formatted again: a vertex handed over with
 // other coordinates than the mesh's shows in the file. (The engine never does this;
 // the test tells that the copy is what writes those lines.)
 TEST(NodeTextStream, TheHandedOverLinesAreTheOnesWritten) {
-  Mesh mesh;
-  mesh.vertices = awkward_points(100);
-  mesh.input_vertices = 10;
-  mesh.triangles.push_back({0, 1, 2});
+  const Mesh mesh = points_mesh(100, 10);
   const std::string prefix = temp_prefix("copied");
   std::unique_ptr<NodeTextStream> stream = NodeTextStream::open(prefix);
   ASSERT_TRUE(stream);
@@ -198,16 +209,13 @@ TEST(NodeTextStream, TheHandedOverLinesAreTheOnesWritten) {
   const std::string node = file_bytes(prefix + ".node");
   EXPECT_NE(node.find("\n21 1.5 -2.25 0\n"), std::string::npos);
   EXPECT_NE(node.find(fmt::format("\n51 {} {} 0\n", mesh.vertices[50].x, mesh.vertices[50].y)), std::string::npos);
-  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+  remove_mesh_files(prefix);
 }
 
 // Lines whose markers were made for another count of input vertices are not used:
 // the .node is formatted whole, with the mesh's markers.
 TEST(NodeTextStream, AnotherInputVertexCountIsNotUsed) {
-  Mesh mesh;
-  mesh.vertices = awkward_points(200);
-  mesh.input_vertices = 30;
-  mesh.triangles.push_back({0, 1, 2});
+  const Mesh mesh = points_mesh(200, 30);
   const std::string whole = temp_prefix("markers_whole");
   write_mesh(whole, mesh, 1);
   for (int differ : {0, 1}) {  // the count differs from the mesh's, or between two hand-overs
@@ -220,9 +228,9 @@ TEST(NodeTextStream, AnotherInputVertexCountIsNotUsed) {
     write_mesh(prefix, mesh, 2, stream.get());
     EXPECT_EQ(file_bytes(prefix + ".node"), file_bytes(whole + ".node")) << differ;
     EXPECT_EQ(stream->finish(mesh.input_vertices).lines, 0u) << differ;
-    for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(prefix + ext);
+    remove_mesh_files(prefix);
   }
-  for (const char* ext : {".node", ".ele", ".poly"}) std::filesystem::remove(whole + ext);
+  remove_mesh_files(whole);
 }
 
 // A run that ends without writing (an error, a capacity stop) drops its stream: the
