@@ -54,11 +54,13 @@ void BlockFile::copy_from(int fd, std::size_t n) {
   if (std::fflush(file_) != 0) fail(path_, "write");
   const int out = ::fileno(file_);
   off_t at = 0;
+  bool copied = false;  // past stdio, by the kernel
   while (n > 0) {
     const ssize_t c = ::copy_file_range(fd, &at, out, nullptr, n, 0);
     if (c < 0 && errno == EINTR) continue;
-    if (c <= 0) break;  // not here (another file system, an old kernel): by hand below
+    if (c <= 0) break;  // not here (a pipe, a device, an old kernel): by hand below
     n -= static_cast<std::size_t>(c);
+    copied = true;
   }
   std::vector<char> block(n > 0 ? kBlock : 0);
   while (n > 0) {
@@ -69,8 +71,9 @@ void BlockFile::copy_from(int fd, std::size_t n) {
     at += r;
     n -= static_cast<std::size_t>(r);
   }
-  // The stream's position after the bytes written past it.
-  if (std::fseek(file_, 0, SEEK_END) != 0) fail(path_, "write");
+  // The stream's position after the bytes the kernel wrote past it (a regular file:
+  // copy_file_range writes nothing else).
+  if (copied && std::fseek(file_, 0, SEEK_END) != 0) fail(path_, "write");
 }
 
 void BlockFile::close() {

@@ -36,9 +36,10 @@ class NodeTextStream {
   // number at every call.
   void add(const std::vector<Point>& vertices, std::size_t input_vertices);
 
-  // Waits for the thread, once. The lines of vertices [0, lines) are then in fd()
-  // from offset 0, bytes() of them. lines is 0 when anything went wrong (a failed
-  // write, input_vertices not the mesh's): the .node is then formatted whole.
+  // Waits for the thread (once; later calls give the same answer). The lines of
+  // vertices [0, lines) are then in fd() from offset 0, `bytes` of them. lines is 0
+  // when anything went wrong (a failed write, input_vertices not the mesh's): the
+  // .node is then formatted whole.
   struct Made {
     std::size_t lines = 0, bytes = 0;
   };
