@@ -47,7 +47,10 @@ TEST(MeshStatistics, ThreadsGiveTheNumbersOfOne) {
   input.vertices = {{0, 0}, {0.5, 0}};
   input.segments = {{0, 1}};
   const MeshStats one = mesh_stats(mesh, input);
-  for (std::size_t chunk : {std::size_t{1}, std::size_t{7}, std::size_t{16384}})
+  // Chunks of one triangle, a few, the default, and at the count's boundary: two
+  // exact chunks, one exact chunk, one chunk with room to spare.
+  for (std::size_t chunk : {std::size_t{1}, std::size_t{7}, std::size_t{16384}, std::size_t{30000}, std::size_t{60000},
+                            std::size_t{60001}})
     for (int threads : {1, 2, 4}) {
       MeshStatsJob job(mesh, input, chunk);
       std::vector<std::thread> others;
@@ -78,6 +81,16 @@ TEST(MeshStatistics, ThreadsGiveTheNumbersOfOne) {
   for (auto a = angles.rbegin(); a != angles.rend(); ++a) backward += *a;
   EXPECT_EQ(bits(forward / 60000), bits(one.avg_min_angle_deg));
   EXPECT_NE(bits(backward / 60000), bits(one.avg_min_angle_deg));
+  // No triangle: the job's numbers are mesh_stats's zeros, on two threads too.
+  const Mesh empty;
+  MeshStatsJob job(empty, input, 7);
+  std::thread other([&job] { job.work(); });
+  job.work();
+  other.join();
+  const MeshStats none = job.result(), none_one = mesh_stats(empty, input);
+  EXPECT_EQ(none.triangles, 0u);
+  EXPECT_EQ(bits(none.avg_min_angle_deg), bits(none_one.avg_min_angle_deg));
+  EXPECT_EQ(bits(none.min_angle_deg), bits(none_one.min_angle_deg));
 }
 
 }  // namespace
