@@ -15,6 +15,8 @@
 #include "lepp/io.h"
 #include "lepp/validate.h"
 
+#include "validated_square.h"
+
 namespace fs = std::filesystem;
 using namespace lepp;
 using namespace lepp::audit;
@@ -23,13 +25,7 @@ namespace {
 
 const std::string kPrograms = LEPP_AUDIT_PROGRAMS;
 
-Pslg square() {
-  Pslg p;
-  p.vertices = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-  p.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  std::vector<std::string> w;
-  return validate(p, w);
-}
+Pslg square() { return audit_test::validated_square(); }
 
 struct Scratch {
   fs::path dir;

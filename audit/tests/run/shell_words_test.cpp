@@ -22,6 +22,8 @@
 #include "lepp/engines/command_engine.h"
 #include "lepp/validate.h"
 
+#include "validated_square.h"
+
 namespace fs = std::filesystem;
 using namespace lepp;
 using namespace lepp::audit;
@@ -144,13 +146,7 @@ TEST(ShellWords, MemoryCapAppliesWithoutTheShell) {
   EXPECT_NE(r.stderr_text.find("MemoryError"), std::string::npos) << r.stderr_text;
 }
 
-Pslg square() {
-  Pslg p;
-  p.vertices = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-  p.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  std::vector<std::string> w;
-  return validate(p, w);
-}
+Pslg square() { return audit_test::validated_square(); }
 
 EngineRun run_template(const std::string& templ, const fs::path& dir, double timeout) {
   EngineRequest r;
