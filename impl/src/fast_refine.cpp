@@ -150,7 +150,7 @@ class Refiner {
       if (angle_rule) stopped_at.erase(ti);
       if (angle_rule || stopped_in(ti)) left.push_back(keyed(mesh_, ti));
     }
-    std::sort(left.begin(), left.end(), key_less);
+    std::sort(left.begin(), left.end(), KeyLess{});
     for (const Keyed& k : left) {
       UnimprovableTriangle u;
       if (const Stopped* s = stopped_in(k.item.tri)) {
@@ -203,7 +203,7 @@ class Refiner {
   // With several threads each window of the round is looked at on all threads
   // first (round_picks.h); the members are the same.
   void run_rounds(std::vector<Keyed>& initial, RefineResult& result) {
-    std::sort(initial.begin(), initial.end(), key_less);
+    std::sort(initial.begin(), initial.end(), KeyLess{});
     std::vector<Item> round, next, ahead;  // ahead: the next round's queue as it is built
     for (const Keyed& k : initial) round.push_back(k.item);
     std::vector<Keyed> tails;
@@ -312,7 +312,7 @@ class Refiner {
         const bool go_on = insert_choice(item, choice, true, result);
         mesh_.for_each_in_star(around_, [&](int ti) { marks.mark(ti); });
         if (const int k = inserter_.kept(); k >= 0) marks.mark(k), kept = true;
-        std::sort(fresh_.begin(), fresh_.end(), key_less);
+        std::sort(fresh_.begin(), fresh_.end(), KeyLess{});
         tails.insert(tails.end(), fresh_.begin(), fresh_.end());
         if (still_there(mesh_, item)) next.push_back(item);
         if (!go_on) break;
@@ -421,7 +421,7 @@ class Refiner {
     for (const Stopped& s : stopped_)
       if (still_there(mesh_, s.item)) again.push_back(keyed(mesh_, s.item.tri));
     stopped_.clear();
-    std::sort(again.begin(), again.end(), key_less);
+    std::sort(again.begin(), again.end(), KeyLess{});
     again.erase(std::unique(again.begin(), again.end(), [](const Keyed& x, const Keyed& y) { return !key_less(x, y) && !key_less(y, x); }),
                 again.end());
     return again;
