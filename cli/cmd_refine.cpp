@@ -108,7 +108,8 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->add_option("--order-seed", args->order_seed, "Seed of --order random (SplitMix64, docs/ALGORITHM.md)")->default_val(0);
   cmd->add_option("--threads", args->threads,
                   "Threads for --order batch's selection (fast engine; 0: the machine's cores), and for the output: "
-                  "the statistics beside the writing, Triangle's .node beside its .ele. The mesh and files are the "
+                  "the statistics beside the writing, Triangle's .node beside its .ele (its lines made during the "
+                  "refinement, except with batch). The mesh and files are the "
                   "same for every number; the other orders refine on one")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);

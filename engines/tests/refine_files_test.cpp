@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // lepp refine's output (write_refine_files): with more than one thread the
-// statistics run beside the writing and Triangle's .node beside its .ele; the files,
+// statistics run beside the writing (joined by the writing thread) and Triangle's .node
+// beside its .ele, its lines made during the refinement (stream_node_text); the files,
 // the statistics and the printed summary are those of one thread. Run under
 // ThreadSanitizer in CI (scripts/ci.d/15-threads-tsan.sh).
 #include <gtest/gtest.h>
