@@ -3,6 +3,7 @@
 #include "lepp/node_text_stream.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <filesystem>
 #include <utility>
 
@@ -35,7 +36,13 @@ bool write_all(int fd, const char* data, std::size_t n) {
 }  // namespace
 
 std::unique_ptr<NodeTextStream> NodeTextStream::open(const std::string& prefix) {
-  const int fd = ::open(directory_of(prefix).c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  const std::string directory = directory_of(prefix);
+  int fd = ::open(directory.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  if (fd < 0) {  // a file system without O_TMPFILE (an overlay, NFS): a named file, unlinked at once
+    std::string name = directory + "/.lepp-node-XXXXXX";
+    fd = ::mkostemp(name.data(), O_CLOEXEC);
+    if (fd >= 0) ::unlink(name.c_str());
+  }
   if (fd < 0) return nullptr;
   return std::unique_ptr<NodeTextStream>(new NodeTextStream(fd));
 }

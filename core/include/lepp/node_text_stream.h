@@ -23,8 +23,9 @@ namespace lepp {
 
 class NodeTextStream {
  public:
-  // Starts the thread. nullptr when PREFIX's directory takes no unnamed temporary
-  // file (O_TMPFILE): the .node is then written whole at the end, as without one.
+  // Starts the thread. The file is unnamed (O_TMPFILE; where the file system has none,
+  // a file made and unlinked at once). nullptr when PREFIX's directory takes no file:
+  // the .node is then written whole at the end, as without a stream.
   static std::unique_ptr<NodeTextStream> open(const std::string& prefix);
   ~NodeTextStream();  // stops the thread; the temporary file goes with it
   NodeTextStream(const NodeTextStream&) = delete;
