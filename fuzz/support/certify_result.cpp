@@ -2,7 +2,10 @@
 // The definitions behind certify_result.h: the certifier as the fuzz targets use it.
 #include "certify_result.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
+#include <set>
 #include <string>
 
 #include <fmt/format.h>
@@ -12,6 +15,17 @@
 #endif
 
 namespace lepp::fuzz {
+#ifdef LEPP_FUZZ_HAVE_CERTIFIER
+namespace {
+
+std::array<int, 3> sorted_ids(const Tri& t) {
+  std::array<int, 3> s{t[0], t[1], t[2]};
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+}  // namespace
+#endif
 
 bool have_certifier() {
 #ifdef LEPP_FUZZ_HAVE_CERTIFIER
@@ -46,7 +60,18 @@ std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_de
   if (!report.certified()) {
     std::size_t violations = 0;
     for (std::size_t c : report.count_by_reason) violations += c;
-    std::string text = violations == report.precision_undecided ? std::string(kPrecisionUndecided) : std::string();
+    // The tie search's bound: a claim undecided at it, or rejected on a triangle the
+    // engine left with its own search cut at it (docs/THEOREMS.md, "Where the claim fails").
+    std::set<std::array<int, 3>> cut;
+    for (const UnimprovableTriangle& u : unimprovable)
+      if (u.search_cut) cut.insert(sorted_ids(u.triangle));
+    std::size_t at_bound = report.precision_undecided;
+    for (const certify::PrecisionClaim& c : report.precision_claims)
+      if (c.outcome == certify::PrecisionOutcome::Rejected && c.triangle >= 0 &&
+          static_cast<std::size_t>(c.triangle) < mesh.triangles.size() &&
+          cut.count(sorted_ids(mesh.triangles[static_cast<std::size_t>(c.triangle)])) > 0)
+        ++at_bound;
+    std::string text = violations == at_bound ? std::string(kPrecisionUndecided) : std::string();
     for (std::size_t i = 0; i < report.violations.size() && i < 3; ++i)
       text += fmt::format("[{}] {}; ", certify::to_string(report.violations[i].reason), report.violations[i].message);
     return text.empty() ? "not certified" : text;

@@ -22,8 +22,10 @@ bool have_certifier();
 
 // The prefix of certify_problems' text when every violation is a claim of double
 // precision the certifier's search of tie resolutions could not decide within its
-// bound (docs/THEOREMS.md, "The precision stop and exact length ties"): a known,
-// documented class, kept once and gone past (precision_undecided below).
+// bound, or one it rejects on a triangle the engine left with its own search cut at
+// its bound (UnimprovableTriangle::search_cut; docs/THEOREMS.md, "The precision stop
+// and exact length ties"): a known, documented class, kept once and gone past
+// (precision_undecided below).
 inline constexpr const char* kPrecisionUndecided = "precision-undecided: ";
 inline bool precision_undecided(const std::string& problems) { return problems.rfind(kPrecisionUndecided, 0) == 0; }
 

@@ -157,6 +157,7 @@ class Refiner {
         u.reason = LeftReason::DoublePrecision;
         u.rule = s->rule;
         u.point = s->point;
+        u.search_cut = s->cut;
       } else {
         quality_.unimprovable(mesh_, k.item.tri, quality_.shortest_edge(mesh_, k.item.tri), &u);
       }
@@ -348,9 +349,10 @@ class Refiner {
   // *at: where the formula's point lies, when settle_choice found it there.
   bool settle(const Item& item, Choice& choice, RefineResult& result, Located* at = nullptr) {
     if (settle_choice(mesh_, lepp_, opt_.method, choice, obstacles_, at)) return true;
-    if (!other_tie_resolution(mesh_, item.tri, opt_.method, opt_.tie_search_states, lepp_, choice, obstacles_)) {
+    bool cut = false;
+    if (!other_tie_resolution(mesh_, item.tri, opt_.method, opt_.tie_search_states, lepp_, choice, obstacles_, &cut)) {
       ++result.precision_stops;
-      stopped_.push_back({item, choice.rule, choice.point});
+      stopped_.push_back({item, choice.rule, choice.point, cut});
       return false;
     }
     ++result.tie_resolutions;
@@ -413,6 +415,7 @@ class Refiner {
     Item item;
     Rule rule;
     Point point;
+    bool cut;  // the tie search stopped at its bound
   };
   std::vector<Keyed> take_stopped() {
     std::vector<Keyed> again;

@@ -54,8 +54,12 @@ class TieSearch {
  private:
   // The Lepp goes on from ti (path_'s last triangle) with edge e as its longest.
   bool walk(int ti, int e, Lepp& lepp, Choice& c) {
-    if ((max_states_ > 0 && seen_.size() >= max_states_) || !seen_.insert(3 * static_cast<std::int64_t>(ti) + e).second)
+    const std::int64_t state = 3 * static_cast<std::int64_t>(ti) + e;
+    if (max_states_ > 0 && seen_.size() >= max_states_) {
+      cut_ = cut_ || seen_.count(state) == 0;  // a state never seen: the bound cut the search
       return false;
+    }
+    if (!seen_.insert(state).second) return false;
     const FTri& f = m_.t(ti);
     if (f.seg(e) >= 0 || f.nbr[e] < 0) return terminal(ti, e, -1, -1, lepp, c);  // constrained: one terminal triangle
     const int next = nbr_tri(f.nbr[e]), j = nbr_edge(f.nbr[e]);
@@ -94,13 +98,19 @@ class TieSearch {
   SliverObstacles& obstacles_;
   std::vector<int> path_;  // t ... the current triangle
   std::unordered_set<std::int64_t> seen_;
+
+ public:
+  bool cut_ = false;  // a state left unseen for the bound
 };
 
 }  // namespace
 
 bool other_tie_resolution(TriMesh& m, int t, Method method, std::size_t max_states, Lepp& lepp, Choice& c,
-                          SliverObstacles& obstacles) {
-  return TieSearch(m, method, max_states, obstacles).run(t, lepp, c);
+                          SliverObstacles& obstacles, bool* cut) {
+  TieSearch search(m, method, max_states, obstacles);
+  const bool found = search.run(t, lepp, c);
+  if (cut) *cut = !found && search.cut_;
+  return found;
 }
 
 }  // namespace lepp::fast

@@ -6,6 +6,7 @@
 // certificate's three outcomes for a triangle listed at double precision.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -65,6 +66,8 @@ TEST(TieSearchBound, ClaimsAreExemptOrUndecidedAtTheBoundNamed) {
   ASSERT_FALSE(proved.precision_claims.empty()) << "the input no longer leaves a triangle at double precision";
   EXPECT_EQ(count(proved, certify::PrecisionOutcome::Exempt), proved.precision_claims.size());
   EXPECT_EQ(proved.tie_search_states, kTieSearchStates);
+  // Proved within the bound: the engine's own search saw every state of these too.
+  for (const UnimprovableTriangle& u : r.unimprovable) EXPECT_FALSE(u.search_cut);
 
   const certify::Report bounded = certificate(p, r, 20, Method::Centroid, 1);
   EXPECT_FALSE(bounded.certified());
@@ -105,6 +108,24 @@ TEST(TieSearchBound, UnboundedCertifierRejectsTheDefaultMeshWithAWitness) {
 
   const certify::Report unbounded = certificate(p, r, 10, Method::Centroid, 0);
   EXPECT_FALSE(unbounded.certified());
+  // The rejected claims are on triangles both engines left with their search cut at
+  // the bound (UnimprovableTriangle::search_cut), and only there may a rejection come.
+  const RefineResult rr = reference::refine(p, options(10, Method::Centroid, kTieSearchStates));
+  for (const certify::PrecisionClaim& c : unbounded.precision_claims) {
+    if (c.outcome != certify::PrecisionOutcome::Rejected) continue;
+    Tri t = r.mesh.triangles[static_cast<std::size_t>(c.triangle)];
+    std::sort(t.begin(), t.end());
+    for (const RefineResult* engine : {&r, &rr}) {
+      bool listed_cut = false;
+      for (const UnimprovableTriangle& u : engine->unimprovable) {
+        Tri v = u.triangle;
+        std::sort(v.begin(), v.end());
+        listed_cut |= v == t && u.search_cut;
+      }
+      EXPECT_TRUE(listed_cut) << (engine == &r ? "fast" : "reference") << ": triangle " << c.triangle
+                              << " is rejected but not marked as cut by the bound";
+    }
+  }
   EXPECT_EQ(unbounded.precision_undecided, 0u);
   ASSERT_GT(count(unbounded, certify::PrecisionOutcome::Rejected), 0u) << certify::format_report(unbounded);
   for (const certify::PrecisionClaim& c : unbounded.precision_claims) {

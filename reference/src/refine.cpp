@@ -108,6 +108,7 @@ class Refiner {
       u.reason = LeftReason::DoublePrecision;
       u.rule = st->rule;
       u.point = st->point;
+      u.search_cut = st->cut;
       result_.unimprovable.push_back(u);
     }
     std::sort(result_.unimprovable.begin(), result_.unimprovable.end(),
@@ -305,9 +306,10 @@ class Refiner {
   // inserted (the precision stop leaves the triangle).
   bool settle(const Tri& t, FH f, Lepp& lepp, Selection& s) {
     if (settle_selection(tr_, lepp, options_.method, s)) return true;
-    if (!other_tie_resolution(tr_, f, options_.method, options_.tie_search_states, lepp, s)) {
+    bool cut = false;
+    if (!other_tie_resolution(tr_, f, options_.method, options_.tie_search_states, lepp, s, &cut)) {
       ++result_.precision_stops;
-      stopped_.push_back({t, s.rule, s.point});
+      stopped_.push_back({t, s.rule, s.point, cut});
       return false;
     }
     ++result_.tie_resolutions;
@@ -348,6 +350,7 @@ class Refiner {
     Tri t;
     Rule rule;
     Point point;
+    bool cut;  // the tie search stopped at its bound
   };
   bool requeue_stopped() {
     if (steiner_ == refill_mark_ || stopped_.empty()) return false;

@@ -26,7 +26,11 @@ class TieSearch {
  private:
   // The Lepp goes on from f (the last face of path_) with edge i taken as its longest.
   bool walk(FH f, int i, Lepp& lepp, Selection& s) {
-    if ((max_states_ > 0 && seen_.size() >= max_states_) || !seen_.insert({ccw_ids(f), i}).second) return false;
+    if (max_states_ > 0 && seen_.size() >= max_states_) {
+      cut_ = cut_ || seen_.count({ccw_ids(f), i}) == 0;  // never seen: the bound cut the search
+      return false;
+    }
+    if (!seen_.insert({ccw_ids(f), i}).second) return false;
     if (f->is_constrained(i)) return terminal(f, i, FH(), lepp, s);
     FH n = f->neighbor(i);
     if (!n->info().in_domain) throw std::logic_error("reference: Lepp left the domain across an unconstrained edge");
@@ -64,12 +68,19 @@ class TieSearch {
   std::size_t max_states_;  // 0: no bound
   std::vector<FH> path_;  // t ... the current face
   std::set<std::pair<Tri, int>> seen_;
+
+ public:
+  bool cut_ = false;  // a state left unseen for the bound
 };
 
 }  // namespace
 
-bool other_tie_resolution(const Triangulation& tr, FH t, Method method, std::size_t max_states, Lepp& lepp, Selection& s) {
-  return TieSearch(tr, method, max_states).run(t, lepp, s);
+bool other_tie_resolution(const Triangulation& tr, FH t, Method method, std::size_t max_states, Lepp& lepp, Selection& s,
+                          bool* cut) {
+  TieSearch search(tr, method, max_states);
+  const bool found = search.run(t, lepp, s);
+  if (cut) *cut = !found && search.cut_;
+  return found;
 }
 
 }  // namespace lepp::reference::detail

@@ -122,6 +122,11 @@ struct UnimprovableTriangle {
   LeftReason reason = LeftReason::SmallInputAngle;
   Rule rule = Rule::QuadCentroid;  // DoublePrecision: the branch that chose the point
   Point point;                     // DoublePrecision: the chosen point as rounded
+  // DoublePrecision: the search of the other tie resolutions stopped at
+  // RefineOptions::tie_search_states before it saw every Lepp state (ALGORITHM.md
+  // section 8b). Only such a triangle may have an insertable choice the search did not
+  // reach (docs/THEOREMS.md, "Where the claim fails").
+  bool search_cut = false;
 };
 
 struct RefineResult {
