@@ -138,8 +138,8 @@ double area_quality(const Point& a, const Point& b, const Point& c) {
 namespace {
 
 // The statistics' running values over some of the triangles: smallest values, which
-// merge in any order to the same numbers. (The mean's sum does not: MeshStatsJob adds
-// the smallest angles in the triangles' order.)
+// MeshStatsJob merges in any order to the same numbers. (The mean's sum would not: the
+// job adds the smallest angles in the triangles' order.)
 struct StatsPass {
   double min_angle = 180, min_q = std::numeric_limits<double>::infinity();
   double shortest = std::numeric_limits<double>::infinity();
@@ -167,11 +167,6 @@ struct StatsPass {
       quality_bound = area_quality_bound(min_q);
     }
     return m;
-  }
-  void merge(const StatsPass& other) {
-    min_angle = std::min(min_angle, other.min_angle);
-    min_q = std::min(min_q, other.min_q);
-    shortest = std::min(shortest, other.shortest);
   }
 };
 
@@ -210,14 +205,9 @@ void MeshStatsJob::work() {
     summed_.notify_all();
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  StatsPass merged;
-  merged.min_angle = min_angle_;
-  merged.min_q = min_q_;
-  merged.shortest = shortest_;
-  merged.merge(pass);
-  min_angle_ = merged.min_angle;
-  min_q_ = merged.min_q;
-  shortest_ = merged.shortest;
+  min_angle_ = std::min(min_angle_, pass.min_angle);
+  min_q_ = std::min(min_q_, pass.min_q);
+  shortest_ = std::min(shortest_, pass.shortest);
 }
 
 MeshStats MeshStatsJob::result() const {

@@ -3,7 +3,6 @@
 #include "certify_result.h"
 
 #include <algorithm>
-#include <array>
 #include <cstdlib>
 #include <set>
 #include <string>
@@ -18,10 +17,9 @@ namespace lepp::fuzz {
 #ifdef LEPP_FUZZ_HAVE_CERTIFIER
 namespace {
 
-std::array<int, 3> sorted_ids(const Tri& t) {
-  std::array<int, 3> s{t[0], t[1], t[2]};
-  std::sort(s.begin(), s.end());
-  return s;
+Tri sorted_ids(Tri t) {
+  std::sort(t.begin(), t.end());
+  return t;
 }
 
 }  // namespace
@@ -62,7 +60,7 @@ std::string certify_problems(const Pslg& pslg, const Mesh& mesh, double theta_de
     for (std::size_t c : report.count_by_reason) violations += c;
     // The tie search's bound: a claim undecided at it, or rejected on a triangle the
     // engine left with its own search cut at it (docs/THEOREMS.md, "Where the claim fails").
-    std::set<std::array<int, 3>> cut;
+    std::set<Tri> cut;
     for (const UnimprovableTriangle& u : unimprovable)
       if (u.search_cut) cut.insert(sorted_ids(u.triangle));
     std::size_t at_bound = report.precision_undecided;

@@ -50,6 +50,7 @@ class TieSearch {
       if (walk(t, cand[k], lepp, c)) return true;
     return false;
   }
+  bool cut() const { return cut_; }  // the bound left some state unseen
 
  private:
   // The Lepp goes on from ti (path_'s last triangle) with edge e as its longest.
@@ -98,8 +99,6 @@ class TieSearch {
   SliverObstacles& obstacles_;
   std::vector<int> path_;  // t ... the current triangle
   std::unordered_set<std::int64_t> seen_;
-
- public:
   bool cut_ = false;  // a state left unseen for the bound
 };
 
@@ -109,7 +108,7 @@ bool other_tie_resolution(TriMesh& m, int t, Method method, std::size_t max_stat
                           SliverObstacles& obstacles, bool* cut) {
   TieSearch search(m, method, max_states, obstacles);
   const bool found = search.run(t, lepp, c);
-  if (cut) *cut = !found && search.cut_;
+  if (cut) *cut = !found && search.cut();
   return found;
 }
 

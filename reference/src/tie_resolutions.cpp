@@ -22,6 +22,7 @@ class TieSearch {
       if (walk(t, e, lepp, s)) return true;
     return false;
   }
+  bool cut() const { return cut_; }  // the bound left some state unseen
 
  private:
   // The Lepp goes on from f (the last face of path_) with edge i taken as its longest.
@@ -68,8 +69,6 @@ class TieSearch {
   std::size_t max_states_;  // 0: no bound
   std::vector<FH> path_;  // t ... the current face
   std::set<std::pair<Tri, int>> seen_;
-
- public:
   bool cut_ = false;  // a state left unseen for the bound
 };
 
@@ -79,7 +78,7 @@ bool other_tie_resolution(const Triangulation& tr, FH t, Method method, std::siz
                           bool* cut) {
   TieSearch search(tr, method, max_states);
   const bool found = search.run(t, lepp, s);
-  if (cut) *cut = !found && search.cut_;
+  if (cut) *cut = !found && search.cut();
   return found;
 }
 
