@@ -170,7 +170,7 @@ class Refiner {
     result.steiner_points = steiner;
     result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
     if (opt_.on_vertices) opt_.on_vertices(mesh_.pts, static_cast<std::size_t>(mem_.input_vertices));
-    result.mesh = mesh_.take_canonical_mesh(mem_);
+    result.mesh = mesh_.take_canonical_mesh(mem_, threads_or_cores(opt_.threads));
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return result;
   }

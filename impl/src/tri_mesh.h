@@ -211,8 +211,12 @@ struct TriMesh {
   Mesh to_mesh(const SegmentMembership& membership) const;
   // The mesh in lepp::canonicalize's order (a bucket sort: linear time), taking
   // the arrays' memory as it goes (the triangles packed in place first, so the
-  // peak stays that of the refinement): this TriMesh is empty afterwards.
-  Mesh take_canonical_mesh(const SegmentMembership& membership);
+  // peak stays that of the refinement): this TriMesh is empty afterwards
+  // (canonical_mesh.cpp). With threads > 1 and at least split_from triangles, on
+  // two threads (the same mesh; 4 bytes more per vertex).
+  static constexpr std::size_t kCanonicalSplitFrom = std::size_t{1} << 16;
+  Mesh take_canonical_mesh(const SegmentMembership& membership, int threads = 1,
+                           std::size_t split_from = kCanonicalSplitFrom);
 };
 
 template <class F>
