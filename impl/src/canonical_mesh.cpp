@@ -20,17 +20,56 @@
 namespace lepp::fast {
 namespace {
 
+// The whole pages within [begin, end), as addresses.
+struct Pages {
+  std::uintptr_t from = 0, to = 0;
+};
+Pages pages_within(const unsigned char* begin, const unsigned char* end) {
+#ifdef __linux__
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+#else
+  const std::uintptr_t page = 4096;
+#endif
+  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) & ~(page - 1);
+  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(page - 1);
+  return {from, std::max(from, to)};
+}
+
 // Returns the whole pages within [begin, end) to the system (their contents are
 // no longer needed); elsewhere than on Linux, nothing.
 void release_pages(unsigned char* begin, unsigned char* end) {
 #ifdef __linux__
-  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) & ~(page - 1);
-  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(page - 1);
-  if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+  const Pages p = pages_within(begin, end);
+  if (p.to > p.from) madvise(reinterpret_cast<void*>(p.from), p.to - p.from, MADV_DONTNEED);
 #else
   (void)begin;
   (void)end;
+#endif
+}
+
+// Moves the pages of [from, from_end), whose contents are no longer needed, to back
+// the untouched storage [to, to_end), as far as whole pages of both go. Both must
+// be private anonymous memory (the allocator's): the source stays mapped, empty
+// (MREMAP_DONTUNMAP: zero pages on demand), so the memory already held is reused
+// where fresh pages would each fault (about 2 us a page on the machines measured;
+// issue 40). False where nothing was moved (not Linux, a kernel before 5.13): the
+// caller releases the source instead.
+bool move_pages(unsigned char* from, unsigned char* from_end, unsigned char* to, unsigned char* to_end) {
+#if defined(__linux__) && defined(MREMAP_DONTUNMAP)
+  const Pages source = pages_within(from, from_end), target = pages_within(to, to_end);
+  const std::uintptr_t n = std::min(source.to - source.from, target.to - target.from);
+  if (n == 0) return false;
+  void* const moved = mremap(reinterpret_cast<void*>(source.from), n, n, MREMAP_MAYMOVE | MREMAP_FIXED | MREMAP_DONTUNMAP,
+                             reinterpret_cast<void*>(target.from));
+  if (moved == MAP_FAILED) return false;
+  release_pages(reinterpret_cast<unsigned char*>(source.from + n), from_end);  // a page the target had no room for
+  return true;
+#else
+  (void)from;
+  (void)from_end;
+  (void)to;
+  (void)to_end;
+  return false;
 #endif
 }
 
@@ -69,29 +108,33 @@ void count_and_pack(const FTri* tris, std::size_t from, std::size_t to, std::uin
   }
 }
 
-// count_and_pack's packing alone, in increasing order (each write lies below what
-// is still to be read).
-void pack(const FTri* tris, std::size_t from, std::size_t to, unsigned char* packed) {
-  for (std::size_t ti = from; ti < to; ++ti) {
-    const Tri r = rotated(tris[ti]);
-    std::memcpy(packed + ti * sizeof(Tri), &r, sizeof r);
-  }
-}
-
-// Packed triangles [from, to), in order, each to place[v]++ of its bucket v in out.
-void scatter(const unsigned char* packed, std::size_t from, std::size_t to, std::uint32_t* place, Tri* out) {
-  for (std::size_t ti = from; ti < to; ++ti) {
+// The packed triangles in order, each of buckets [lo, hi) to place[v]++ of its
+// bucket v in out. kAll: every bucket is in the range. Otherwise the others go to a
+// scratch slot, with no branch (which bucket comes next is a coin's toss), and only
+// buckets [lo, hi) of place and out are written: another thread can take the rest.
+template <bool kAll>
+void scatter(const unsigned char* packed, std::size_t nt, std::uint32_t* place, Tri* out, std::uint32_t lo, std::uint32_t hi) {
+  std::uint32_t scratch_place = 0;
+  Tri scratch;
+  auto slot = [&](std::uint32_t v) { return kAll || v - lo < hi - lo ? place + v : &scratch_place; };
+  for (std::size_t ti = 0; ti < nt; ++ti) {
     Tri r;
-    if (ti + 2 * kAhead < to) {
+    if (ti + 2 * kAhead < nt) {
       std::memcpy(&r, packed + (ti + 2 * kAhead) * sizeof(Tri), sizeof r);
-      __builtin_prefetch(place + r[0], 1);
+      __builtin_prefetch(slot(static_cast<std::uint32_t>(r[0])), 1);
     }
-    if (ti + kAhead < to) {
+    if (ti + kAhead < nt) {
       std::memcpy(&r, packed + (ti + kAhead) * sizeof(Tri), sizeof r);
-      __builtin_prefetch(out + place[static_cast<std::size_t>(r[0])], 1);
+      const std::uint32_t v = static_cast<std::uint32_t>(r[0]);
+      if (kAll || v - lo < hi - lo) __builtin_prefetch(out + place[v], 1);
     }
     std::memcpy(&r, packed + ti * sizeof(Tri), sizeof r);
-    out[place[static_cast<std::size_t>(r[0])]++] = r;
+    const std::uint32_t v = static_cast<std::uint32_t>(r[0]);
+    const bool mine = kAll || v - lo < hi - lo;
+    std::uint32_t* const p = mine ? place + v : &scratch_place;
+    Tri* const d = mine ? out + *p : &scratch;
+    *d = r;
+    ++*p;
   }
 }
 
@@ -128,73 +171,51 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership, int threa
   // Freed before the output's arrays are made: the peak memory is here.
   stamp = {};
   region = {};
+  // Below this, the output's few pages are faulted rather than moved (two calls more).
+  constexpr std::size_t kMovedFrom = std::size_t{1} << 16;
   static_assert(sizeof(Tri) <= sizeof(FTri) && std::is_trivially_copyable_v<FTri> && std::is_trivially_copyable_v<Tri>);
   const FTri* const ftris = tris.data();
   unsigned char* const packed = reinterpret_cast<unsigned char*>(tris.data());
-
-  // Two threads split the triangles at h: each pass runs on both halves at once,
-  // with a count (then place) array for each half, so that no two threads write
-  // one word. The output is the same: a bucket's triangles from the first half
-  // go before those from the second, each half in its order, as one pass puts them.
-  const bool split = threads > 1 && nt >= split_from;
-  const std::size_t h = split ? nt / 2 : nt;
-  std::vector<std::uint32_t> start(nv + 1, 0), second(split ? nv + 1 : 0, 0);
+  std::vector<std::uint32_t> start(nv + 1, 0);
   std::vector<ConstrainedEdge> edges;
 
   // First pass: the buckets counted, the constrained edges listed, the triangles
-  // packed in place. The second half's triangles lie beyond the bytes the first
-  // half's packing writes, so its thread counts them as they are, and they are
-  // packed after the first half (in order: each write below what is left to read).
-  if (split) {
-    std::vector<ConstrainedEdge> edges_second;
-    auto rest = std::async(std::launch::async,
-                           [&] { count_and_pack(ftris, h, nt, second.data(), nullptr, membership, edges_second); });
-    count_and_pack(ftris, 0, h, start.data(), packed, membership, edges);
-    rest.get();
-    pack(ftris, h, nt, packed);
-    edges.insert(edges.end(), edges_second.begin(), edges_second.end());
-  } else {
-    count_and_pack(ftris, 0, nt, start.data(), packed, membership, edges);
-  }
-  // The rest of the array is given back before the output's triangles are made,
-  // so the two never hold 24 + 12 bytes per triangle at once.
-  release_pages(packed + nt * sizeof(Tri), packed + nt * sizeof(FTri));
+  // packed in place.
+  count_and_pack(ftris, 0, nt, start.data(), packed, membership, edges);
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];  // start[v]: where bucket v begins
 
-  // Second pass: each triangle to its bucket's next free place. Bucket v begins at
-  // S(v), the triangles of the buckets before it; the second half's part of it
-  // after the first half's. Afterwards bucket v ends at end[v].
-  if (split) {
-    std::uint32_t run = 0;
-    for (std::size_t v = 0; v < nv; ++v) {
-      const std::uint32_t first_half = start[v + 1], second_half = second[v + 1];
-      start[v] = run;
-      second[v] = run + first_half;
-      run += first_half + second_half;
-    }
-  } else {
-    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  }
+  // The rest of the engine's array backs the output's triangles: the two never hold
+  // 24 + 12 bytes per triangle at once, and the output takes no fresh pages.
+  mesh.triangles.reserve(nt);
+  unsigned char* const rest = packed + nt * sizeof(Tri);
+  unsigned char* const storage = reinterpret_cast<unsigned char*>(mesh.triangles.data());
+  if (nt * sizeof(Tri) < kMovedFrom || !move_pages(rest, packed + nt * sizeof(FTri), storage, storage + nt * sizeof(Tri)))
+    release_pages(rest, packed + nt * sizeof(FTri));
   mesh.triangles.resize(nt);
   Tri* const out = mesh.triangles.data();
-  if (split) {
-    auto rest = std::async(std::launch::async, [&] { scatter(packed, h, nt, second.data(), out); });
-    scatter(packed, 0, h, start.data(), out);
-    rest.get();
-  } else {
-    scatter(packed, 0, nt, start.data(), out);
-  }
-  tris = {};
 
-  // Third pass: each bucket sorted; split at the bucket where half the triangles lie below.
-  const std::uint32_t* const end = split ? second.data() : start.data();
+  // Second pass: each triangle to its bucket's next free place; afterwards start[v]
+  // is where bucket v ends. Third: each bucket sorted. On two threads each takes
+  // the buckets on its side of the one where half the triangles lie below (each
+  // reads every triangle and writes only its own buckets, so no memory is added):
+  // the same places, so the same mesh.
+  const bool split = threads > 1 && nt >= split_from;
   if (split) {
-    const std::size_t middle =
-        static_cast<std::size_t>(std::lower_bound(end, end + nv, static_cast<std::uint32_t>(nt / 2)) - end);
-    auto rest = std::async(std::launch::async, [&] { sort_buckets(out, end, middle, nv); });
-    sort_buckets(out, end, 0, middle);
-    rest.get();
+    const auto middle = static_cast<std::uint32_t>(
+        std::lower_bound(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(nv), static_cast<std::uint32_t>(nt / 2)) -
+        start.begin());
+    const auto all = static_cast<std::uint32_t>(nv);
+    auto beside = std::async(std::launch::async, [&] { scatter<false>(packed, nt, start.data(), out, middle, all); });
+    scatter<false>(packed, nt, start.data(), out, 0, middle);
+    beside.get();
+    tris = {};
+    beside = std::async(std::launch::async, [&] { sort_buckets(out, start.data(), middle, nv); });
+    sort_buckets(out, start.data(), 0, middle);
+    beside.get();
   } else {
-    sort_buckets(out, end, 0, nv);
+    scatter<true>(packed, nt, start.data(), out, 0, 0);
+    tris = {};
+    sort_buckets(out, start.data(), 0, nv);
   }
 
   // Constrained edges: few; a plain sort in canonicalize's order.

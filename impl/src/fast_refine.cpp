@@ -22,6 +22,7 @@
 #include "lepp/fast.h"
 #include "lepp_search.h"
 #include "point_selection.h"
+#include "populate_ahead.h"
 #include "precision_stop.h"
 #include "quality.h"
 #include "round_picks.h"
@@ -169,6 +170,7 @@ class Refiner {
     result.outcome = outcome;
     result.steiner_points = steiner;
     result.cocircular_ties = initial_ties + inserter_.cocircular_ties;
+    populate_.finish();  // before the arrays are freed
     if (opt_.on_vertices) opt_.on_vertices(mesh_.pts, static_cast<std::size_t>(mem_.input_vertices));
     result.mesh = mesh_.take_canonical_mesh(mem_, threads_or_cores(opt_.threads));
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -373,6 +375,7 @@ class Refiner {
     around_ = inserter_.insert(mesh_, mem_, choice, split_segment, at);
     if (split_segment >= 0) obstacles_.on_split(mesh_, split_segment, p);
     ++steiner_;
+    if ((steiner_ & (PopulateAhead::kEvery - 1)) == 0) populate_.advance(mesh_);
     if (opt_.trace) {
       step.split_segment = split_segment;
       step.round = result.rounds;
@@ -481,6 +484,8 @@ class Refiner {
   Quality quality_;
   TriMesh mesh_;
   Inserter inserter_;
+  // The arrays' next pages, on a second thread when there is one (after mesh_: destroyed first).
+  PopulateAhead populate_{threads_or_cores(opt_.threads) > 1};
   SliverObstacles obstacles_{pslg_, mem_};  // what the sliver clause tests (section 8b)
   std::vector<Stopped> stopped_;
   std::int64_t refill_mark_ = 0;

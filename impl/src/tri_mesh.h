@@ -212,8 +212,8 @@ struct TriMesh {
   // The mesh in lepp::canonicalize's order (a bucket sort: linear time), taking
   // the arrays' memory as it goes (the triangles packed in place first, so the
   // peak stays that of the refinement): this TriMesh is empty afterwards
-  // (canonical_mesh.cpp). With threads > 1 and at least split_from triangles, on
-  // two threads (the same mesh; 4 bytes more per vertex).
+  // (canonical_mesh.cpp). With threads > 1 and at least split_from triangles, its
+  // second and third passes run on two threads (the same mesh, no more memory).
   static constexpr std::size_t kCanonicalSplitFrom = std::size_t{1} << 16;
   Mesh take_canonical_mesh(const SegmentMembership& membership, int threads = 1,
                            std::size_t split_from = kCanonicalSplitFrom);

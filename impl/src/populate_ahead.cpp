@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The definitions behind populate_ahead.h.
+#include "populate_ahead.h"
+
+#include <algorithm>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+namespace lepp::fast {
+namespace {
+
+std::uintptr_t page_size() {
+#ifdef __linux__
+  static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  return page;
+#else
+  return 4096;
+#endif
+}
+
+// False when the system cannot populate a range (not Linux, a kernel before 5.14).
+bool populate_pages(std::uintptr_t from, std::uintptr_t to) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  return madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE) == 0;
+#else
+  (void)from;
+  (void)to;
+  return false;
+#endif
+}
+
+}  // namespace
+
+PopulateAhead::~PopulateAhead() { finish(); }
+
+void PopulateAhead::finish() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  closing_ = true;
+  pending_.clear();  // what is under way finishes; nothing more starts
+  lock.unlock();
+  if (!thread_.joinable()) return;
+  work_.notify_one();
+  thread_.join();
+}
+
+void PopulateAhead::advance(const TriMesh& m) {
+  if (closing_ || unsupported_) return;
+  const std::size_t points = static_cast<std::size_t>(kEvery), slots = 2 * points;
+  advance(pts_, m.pts.data(), m.pts.size() * sizeof(Point), m.pts.capacity() * sizeof(Point), points * sizeof(Point));
+  advance(tris_, m.tris.data(), m.tris.size() * sizeof(FTri), m.tris.capacity() * sizeof(FTri), slots * sizeof(FTri));
+  advance(stamp_, m.stamp.data(), m.stamp.size() * sizeof(std::uint32_t), m.stamp.capacity() * sizeof(std::uint32_t),
+          slots * sizeof(std::uint32_t));
+}
+
+void PopulateAhead::advance(Array& a, const void* data, std::size_t bytes, std::size_t capacity, std::size_t growth) {
+  const auto at = reinterpret_cast<std::uintptr_t>(data);
+  if (at != a.data) a = Array{at, bytes, false};  // a new buffer (or the first call): populated as far as it is used
+  if (a.stopped || bytes < kLead) return;         // a small mesh takes its few faults
+  // The buffer is freed when the array outgrows its capacity. Within two calls' growth
+  // of that, wait until no population of it is under way and leave it: it cannot
+  // move before the next call while more than one call's growth is left.
+  if (capacity - bytes < 2 * growth) {
+    if (beside_) wait();
+    a.stopped = true;
+    return;
+  }
+  if (a.populated > bytes + kLead / 2) return;  // still half the lead ahead
+  const std::uintptr_t page = page_size();
+  const std::uintptr_t first_page = (at + page - 1) & ~(page - 1);
+  const std::size_t target = std::min(capacity, bytes + kLead);
+  Range r{std::max((at + a.populated) & ~(page - 1), first_page), (at + target) & ~(page - 1)};
+  a.populated = target;
+  if (r.to <= r.from) return;
+  if (!beside_) {
+    populate(r);
+    return;
+  }
+  if (!thread_.joinable()) thread_ = std::thread([this] { run(); });
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_.push_back(r);
+  }
+  work_.notify_one();
+}
+
+void PopulateAhead::populate(Range r) {
+  if (!populate_pages(r.from, r.to)) unsupported_ = true;
+}
+
+void PopulateAhead::run() {
+  for (;;) {
+    Range r;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      busy_ = false;
+      idle_.notify_all();
+      work_.wait(lock, [&] { return closing_ || !pending_.empty(); });
+      if (pending_.empty()) return;  // closing
+      r = pending_.front();
+      pending_.erase(pending_.begin());
+      busy_ = true;
+    }
+    // A failure (an old kernel) ends the population: the pages then fault as usual.
+    if (!populate_pages(r.from, r.to)) unsupported_ = true;
+  }
+}
+
+void PopulateAhead::wait() {
+  if (!thread_.joinable()) return;
+  std::unique_lock<std::mutex> lock(mutex_);
+  idle_.wait(lock, [&] { return !busy_ && pending_.empty(); });
+}
+
+}  // namespace lepp::fast
