@@ -109,8 +109,8 @@ void add_refine_command(CLI::App& app, int& status) {
   cmd->add_option("--threads", args->threads,
                   "Threads for --order batch's selection (fast engine; 0: the machine's cores), and for the output: "
                   "the statistics beside the writing, Triangle's .node beside its .ele (its lines made during the "
-                  "refinement, except with batch). The mesh and files are the "
-                  "same for every number; the other orders refine on one")
+                  "refinement, except with batch), the canonical sort; and the fast engine's memory made ready "
+                  "beside its refinement. The mesh and files are the same for every number; the other orders refine on one")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-steiner", args->max_steiner, "Steiner budget; default 100000 + 1000 x (vertices + segments)")

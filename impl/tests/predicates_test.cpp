@@ -214,6 +214,14 @@ TEST(ExactDoubles, LengthsByDominanceAgreeWithExactArithmetic) {
   // (p - q)^2 = (h + l)^2 against h^2 + z^2, apart by less than the rounding of 2hl.
   const double p = 0x1.442f7dbc496ccp+0, q = -0x1.d69964a23d596p-55, z = 0x1.869755127fb44p-27;
   EXPECT_EQ(detail::compare_sqlen_by_expansion({q, 0}, {p, 0}, {0, 0}, {p, z}), 1);
+  // A tie that only l^2's rounding keeps: b - a = (2^50 - m, r) with m = r^2 / 2^51 (TwoSum:
+  // h = 2^50, l = -m, whose square m^2 is no double) against (2^50, m): (h + l)^2 + r^2 =
+  // h^2 + 2hl + l^2 + r^2 = h^2 + m^2 exactly, since 2hl = -r^2. The other side's m^2 is
+  // its first term's rounding and error, this side's its third's: drop l^2's error and the
+  // tie becomes a sign.
+  const double r = 0x1p19 + 1, m = r * r / 0x1p51;
+  EXPECT_EQ(detail::compare_sqlen_by_expansion({m, 0}, {0x1p50, r}, {0, 0}, {0x1p50, m}), 0);
+  EXPECT_EQ(detail::compare_sqlen_exact({m, 0}, {0x1p50, r}, {0, 0}, {0x1p50, m}), 0);
   EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {1, 0x1p-600}, {0, 0}, {1, 0}), 2);
   EXPECT_EQ(detail::compare_sqlen_by_expansion({0, 0}, {0x1p500, 0}, {0, 0}, {1, 0}), 2);
   int decided = 0, by_expansion = 0;
