@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <future>
+#include <system_error>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -84,15 +85,15 @@ Tri rotated(const FTri& f) {
 // triangles anywhere in the output): the passes fetch them kAhead triangles early.
 constexpr std::size_t kAhead = 16;
 
-// Triangles [from, to) of the engine's array: each one counted in its bucket's
-// count[v + 1] (v its smallest id), its constrained edges listed once (from its
-// only triangle, or from the lower id). With `packed` (the array's own bytes), each
-// is also written there rotated as a 12-byte Tri, over the 24-byte triangles
-// already read: Tri ti ends at byte 12 ti + 12, before triangle ti + 1 begins.
-void count_and_pack(const FTri* tris, std::size_t from, std::size_t to, std::uint32_t* count, unsigned char* packed,
+// The engine's nt triangles: each one counted in its bucket's count[v + 1] (v its
+// smallest id), its constrained edges listed once (from its only triangle, or from
+// the lower id), and written rotated as a 12-byte Tri into `packed`, the array's own
+// bytes, over the 24-byte triangles already read: Tri ti ends at byte 12 ti + 12,
+// before triangle ti + 1 begins.
+void count_and_pack(const FTri* tris, std::size_t nt, std::uint32_t* count, unsigned char* packed,
                     const SegmentMembership& membership, std::vector<ConstrainedEdge>& edges) {
-  for (std::size_t ti = from; ti < to; ++ti) {
-    if (ti + kAhead < to) {
+  for (std::size_t ti = 0; ti < nt; ++ti) {
+    if (ti + kAhead < nt) {
       const FTri& g = tris[ti + kAhead];  // not yet overwritten
       __builtin_prefetch(count + std::min({g.v(0), g.v(1), g.v(2)}) + 1, 1);
     }
@@ -104,7 +105,7 @@ void count_and_pack(const FTri* tris, std::size_t from, std::size_t to, std::uin
       const int a = f.v(next3(i)), b = f.v(prev3(i));
       edges.push_back({std::min(a, b), std::max(a, b), membership.segment_of(a, b)});
     }
-    if (packed) std::memcpy(packed + ti * sizeof(Tri), &r, sizeof r);
+    std::memcpy(packed + ti * sizeof(Tri), &r, sizeof r);
   }
 }
 
@@ -160,6 +161,17 @@ void sort_buckets(Tri* out, const std::uint32_t* end, std::size_t from, std::siz
   }
 }
 
+// f on a thread of its own; an invalid future where no thread can be made (this
+// thread then does the work itself).
+template <class F>
+std::future<void> start_beside(F&& f) {
+  try {
+    return std::async(std::launch::async, std::forward<F>(f));
+  } catch (const std::system_error&) {
+    return {};
+  }
+}
+
 }  // namespace
 
 Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership, int threads, std::size_t split_from) {
@@ -181,7 +193,7 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership, int threa
 
   // First pass: the buckets counted, the constrained edges listed, the triangles
   // packed in place.
-  count_and_pack(ftris, 0, nt, start.data(), packed, membership, edges);
+  count_and_pack(ftris, nt, start.data(), packed, membership, edges);
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];  // start[v]: where bucket v begins
 
   // The rest of the engine's array backs the output's triangles: the two never hold
@@ -200,18 +212,18 @@ Mesh TriMesh::take_canonical_mesh(const SegmentMembership& membership, int threa
   // reads every triangle and writes only its own buckets, so no memory is added):
   // the same places, so the same mesh.
   const bool split = threads > 1 && nt >= split_from;
-  if (split) {
-    const auto middle = static_cast<std::uint32_t>(
-        std::lower_bound(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(nv), static_cast<std::uint32_t>(nt / 2)) -
-        start.begin());
-    const auto all = static_cast<std::uint32_t>(nv);
-    auto beside = std::async(std::launch::async, [&] { scatter<false>(packed, nt, start.data(), out, middle, all); });
+  const auto middle = static_cast<std::uint32_t>(
+      std::lower_bound(start.begin(), start.begin() + static_cast<std::ptrdiff_t>(nv), static_cast<std::uint32_t>(nt / 2)) -
+      start.begin());
+  std::future<void> beside;
+  if (split) beside = start_beside([&] { scatter<false>(packed, nt, start.data(), out, middle, static_cast<std::uint32_t>(nv)); });
+  if (beside.valid()) {
     scatter<false>(packed, nt, start.data(), out, 0, middle);
     beside.get();
     tris = {};
-    beside = std::async(std::launch::async, [&] { sort_buckets(out, start.data(), middle, nv); });
-    sort_buckets(out, start.data(), 0, middle);
-    beside.get();
+    beside = start_beside([&] { sort_buckets(out, start.data(), middle, nv); });
+    sort_buckets(out, start.data(), 0, beside.valid() ? middle : nv);
+    if (beside.valid()) beside.get();
   } else {
     scatter<true>(packed, nt, start.data(), out, 0, 0);
     tris = {};

@@ -3,6 +3,7 @@
 #include "populate_ahead.h"
 
 #include <algorithm>
+#include <system_error>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -78,7 +79,14 @@ void PopulateAhead::advance(Array& a, const void* data, std::size_t bytes, std::
     populate(r);
     return;
   }
-  if (!thread_.joinable()) thread_ = std::thread([this] { run(); });
+  if (!thread_.joinable()) {
+    try {
+      thread_ = std::thread([this] { run(); });
+    } catch (const std::system_error&) {  // no thread to be had: nothing more (an optimization only)
+      unsupported_ = true;
+      return;
+    }
+  }
   {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_.push_back(r);
