@@ -21,7 +21,7 @@ fi
 start=$(date +%s)
 ninja -C "$build" -j "$(nproc)" fuzz_parse fuzz_cdt fuzz_refine fuzz_differential fuzz_engine fuzz_audit >/dev/null
 echo "fuzz build: $(( $(date +%s) - start )) s"
-# The coverage ignorelist at work: no comparison hooks in third-party code, some in lepp's.
+# The coverage instrumentation at work: no comparison hooks; edge counters in lepp's code, none in third-party code.
 bash fuzz/tests/coverage_hooks.sh objdump "$build/fuzz/fuzz_refine"
 
 tmp=$(mktemp -d)
