@@ -11,68 +11,11 @@
 #include <type_traits>
 #include <utility>
 
+#include "pages.h"
 #include "tri_mesh.h"
-
-#ifdef __linux__
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
 
 namespace lepp::fast {
 namespace {
-
-// The whole pages within [begin, end), as addresses.
-struct Pages {
-  std::uintptr_t from = 0, to = 0;
-};
-Pages pages_within(const unsigned char* begin, const unsigned char* end) {
-#ifdef __linux__
-  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-#else
-  const std::uintptr_t page = 4096;
-#endif
-  const std::uintptr_t from = (reinterpret_cast<std::uintptr_t>(begin) + page - 1) & ~(page - 1);
-  const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(page - 1);
-  return {from, std::max(from, to)};
-}
-
-// Returns the whole pages within [begin, end) to the system (their contents are
-// no longer needed); elsewhere than on Linux, nothing.
-void release_pages(unsigned char* begin, unsigned char* end) {
-#ifdef __linux__
-  const Pages p = pages_within(begin, end);
-  if (p.to > p.from) madvise(reinterpret_cast<void*>(p.from), p.to - p.from, MADV_DONTNEED);
-#else
-  (void)begin;
-  (void)end;
-#endif
-}
-
-// Moves the pages of [from, from_end), whose contents are no longer needed, to back
-// the untouched storage [to, to_end), as far as whole pages of both go. Both must
-// be private anonymous memory (the allocator's): the source stays mapped, empty
-// (MREMAP_DONTUNMAP: zero pages on demand), so the memory already held is reused
-// where fresh pages would each fault (about 2 us a page on the machines measured;
-// issue 40). False where nothing was moved (not Linux, a kernel before 5.13): the
-// caller releases the source instead.
-bool move_pages(unsigned char* from, unsigned char* from_end, unsigned char* to, unsigned char* to_end) {
-#if defined(__linux__) && defined(MREMAP_DONTUNMAP)
-  const Pages source = pages_within(from, from_end), target = pages_within(to, to_end);
-  const std::uintptr_t n = std::min(source.to - source.from, target.to - target.from);
-  if (n == 0) return false;
-  void* const moved = mremap(reinterpret_cast<void*>(source.from), n, n, MREMAP_MAYMOVE | MREMAP_FIXED | MREMAP_DONTUNMAP,
-                             reinterpret_cast<void*>(target.from));
-  if (moved == MAP_FAILED) return false;
-  release_pages(reinterpret_cast<unsigned char*>(source.from + n), from_end);  // a page the target had no room for
-  return true;
-#else
-  (void)from;
-  (void)from_end;
-  (void)to;
-  (void)to_end;
-  return false;
-#endif
-}
 
 // A triangle rotated to start at its smallest id (canonicalize's form).
 Tri rotated(const FTri& f) {
@@ -117,23 +60,21 @@ template <bool kAll>
 void scatter(const unsigned char* packed, std::size_t nt, std::uint32_t* place, Tri* out, std::uint32_t lo, std::uint32_t hi) {
   std::uint32_t scratch_place = 0;
   Tri scratch;
-  auto slot = [&](std::uint32_t v) { return kAll || v - lo < hi - lo ? place + v : &scratch_place; };
+  auto mine = [&](const Tri& r) { return kAll || static_cast<std::uint32_t>(r[0]) - lo < hi - lo; };
   for (std::size_t ti = 0; ti < nt; ++ti) {
     Tri r;
     if (ti + 2 * kAhead < nt) {
       std::memcpy(&r, packed + (ti + 2 * kAhead) * sizeof(Tri), sizeof r);
-      __builtin_prefetch(slot(static_cast<std::uint32_t>(r[0])), 1);
+      __builtin_prefetch(mine(r) ? place + r[0] : &scratch_place, 1);
     }
     if (ti + kAhead < nt) {
       std::memcpy(&r, packed + (ti + kAhead) * sizeof(Tri), sizeof r);
-      const std::uint32_t v = static_cast<std::uint32_t>(r[0]);
-      if (kAll || v - lo < hi - lo) __builtin_prefetch(out + place[v], 1);
+      if (mine(r)) __builtin_prefetch(out + place[r[0]], 1);
     }
     std::memcpy(&r, packed + ti * sizeof(Tri), sizeof r);
-    const std::uint32_t v = static_cast<std::uint32_t>(r[0]);
-    const bool mine = kAll || v - lo < hi - lo;
-    std::uint32_t* const p = mine ? place + v : &scratch_place;
-    Tri* const d = mine ? out + *p : &scratch;
+    const bool its = mine(r);
+    std::uint32_t* const p = its ? place + r[0] : &scratch_place;
+    Tri* const d = its ? out + *p : &scratch;
     *d = r;
     ++*p;
   }

@@ -5,35 +5,9 @@
 #include <algorithm>
 #include <system_error>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
+#include "pages.h"
 
 namespace lepp::fast {
-namespace {
-
-std::uintptr_t page_size() {
-#ifdef __linux__
-  static const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  return page;
-#else
-  return 4096;
-#endif
-}
-
-// False when the system cannot populate a range (not Linux, a kernel before 5.14).
-bool populate_pages(std::uintptr_t from, std::uintptr_t to) {
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-  return madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE) == 0;
-#else
-  (void)from;
-  (void)to;
-  return false;
-#endif
-}
-
-}  // namespace
 
 PopulateAhead::~PopulateAhead() { finish(); }
 
@@ -69,14 +43,15 @@ void PopulateAhead::advance(Array& a, const void* data, std::size_t bytes, std::
     return;
   }
   if (a.populated > bytes + kLead / 2) return;  // still half the lead ahead
+  // From the page where the populated part ends (it may hold bytes not yet
+  // populated), not before the array's first whole page.
   const std::uintptr_t page = page_size();
-  const std::uintptr_t first_page = (at + page - 1) & ~(page - 1);
   const std::size_t target = std::min(capacity, bytes + kLead);
-  Range r{std::max((at + a.populated) & ~(page - 1), first_page), (at + target) & ~(page - 1)};
+  const Pages r = pages_within(std::max((at + a.populated) & ~(page - 1), at), at + target);
   a.populated = target;
   if (r.to <= r.from) return;
   if (!beside_) {
-    populate(r);
+    if (!populate_pages(r)) unsupported_ = true;
     return;
   }
   if (!thread_.joinable()) {
@@ -94,13 +69,9 @@ void PopulateAhead::advance(Array& a, const void* data, std::size_t bytes, std::
   work_.notify_one();
 }
 
-void PopulateAhead::populate(Range r) {
-  if (!populate_pages(r.from, r.to)) unsupported_ = true;
-}
-
 void PopulateAhead::run() {
   for (;;) {
-    Range r;
+    Pages r;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       busy_ = false;
@@ -112,7 +83,7 @@ void PopulateAhead::run() {
       busy_ = true;
     }
     // A failure (an old kernel) ends the population: the pages then fault as usual.
-    if (!populate_pages(r.from, r.to)) unsupported_ = true;
+    if (!populate_pages(r)) unsupported_ = true;
   }
 }
 

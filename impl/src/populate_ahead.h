@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "pages.h"
 #include "tri_mesh.h"
 
 namespace lepp::fast {
@@ -50,12 +51,8 @@ class PopulateAhead {
     std::size_t populated = 0;  // bytes from data
     bool stopped = false;       // near the end of its capacity: left alone until it moves
   };
-  struct Range {
-    std::uintptr_t from = 0, to = 0;
-  };
   // bytes, capacity: the array's in use and reserved; growth: the most it can grow between calls.
   void advance(Array& a, const void* data, std::size_t bytes, std::size_t capacity, std::size_t growth);
-  void populate(Range r);
   void run();
 
   const bool beside_;
@@ -64,7 +61,7 @@ class PopulateAhead {
   std::thread thread_;
   std::mutex mutex_;
   std::condition_variable work_, idle_;
-  std::vector<Range> pending_;
+  std::vector<Pages> pending_;
   bool busy_ = false;
   // finish() was called: written under the lock, read without it only by the thread
   // that calls advance() and finish().

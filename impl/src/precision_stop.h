@@ -133,7 +133,7 @@ inline bool settle_choice(TriMesh& m, const Lepp& lepp, Method method, Choice& c
 // order, each settled as settle_choice says. True iff one can be inserted: lepp and
 // c then hold it (lepp.m1, lepp.m2 its second-longest edges); else both unchanged.
 // At most max_states Lepp states (RefineOptions::tie_search_states; 0: no bound).
-// *cut (when given): false found, whether the bound left some state unseen.
+// *cut (when given): when nothing is found, whether the bound left some state unseen.
 bool other_tie_resolution(TriMesh& m, int t, Method method, std::size_t max_states, Lepp& lepp, Choice& c,
                           SliverObstacles& obstacles, bool* cut = nullptr);
 

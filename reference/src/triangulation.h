@@ -162,7 +162,7 @@ inline bool settle_selection(const Triangulation& tr, const Lepp& lepp, Method m
 // each settled as settle_selection says. True iff one can be inserted (lepp and s
 // then hold it); else both unchanged. At most max_states Lepp states
 // (RefineOptions::tie_search_states; 0: no bound).
-// *cut (when given): false found, whether the bound left some state unseen.
+// *cut (when given): when nothing is found, whether the bound left some state unseen.
 bool other_tie_resolution(const Triangulation& tr, FH t, Method method, std::size_t max_states, Lepp& lepp, Selection& s,
                           bool* cut = nullptr);
 // Inserts the selected point, restores the constrained Delaunay property by
