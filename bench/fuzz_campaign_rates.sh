@@ -39,7 +39,7 @@ for row in "${fuzz_ci_rows[@]}"; do
     fuzz_row_env "$work" "$target" "$lepp" ${vars:-}
     start=$(date +%s.%N)
     status=0
-    env "${row_env[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "$build/fuzz/$target" -seed=1 -runs="$runs" \
+    env "${row_env[@]}" python3 bench/lib/cpu_time.py "$work/time" "$build/fuzz/$target" -seed=1 -runs="$runs" \
       -timeout=300 -rss_limit_mb=4096 -malloc_limit_mb=2048 -print_final_stats=1 "${dict[@]}" \
       -artifact_prefix="$work/findings/" "$work/corpus" "$seeds" >"$work/log" 2>&1 || status=$?
     end=$(date +%s.%N)

@@ -45,7 +45,7 @@ replay() {  # MODE NAME TARGET VARS...
   fi
   local start end status=0
   start=$(date +%s.%N)
-  env "${row_env[@]}" /usr/bin/time -o "$work/time" -f '%U %S' "${cmd[@]}" > "$work/log" 2>&1 || status=$?
+  env "${row_env[@]}" python3 bench/lib/cpu_time.py "$work/time" "${cmd[@]}" > "$work/log" 2>&1 || status=$?
   end=$(date +%s.%N)
   if [[ $status -ne 0 ]]; then
     echo "fuzz_throughput: $mode $name ($target) stopped, exit $status:" >&2

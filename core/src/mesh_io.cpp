@@ -270,7 +270,11 @@ void write_mesh(const std::string& prefix, const Mesh& mesh, int threads, NodeTe
 }
 
 void write_poly(const std::string& path, const Pslg& pslg) {
-  auto out = fmt::output_file(path);
+  // A buffer of about the text's size, 32 KiB at most (fmt's default): the fuzzers write
+  // thousands of small PSLGs, and a sanitizer maps each buffer apart.
+  const std::size_t items = pslg.vertices.size() + pslg.segments.size() + pslg.holes.size() + 2 * pslg.regions.size();
+  const std::size_t estimate = std::min<std::size_t>(64 * items + 256, std::size_t{1} << 15);
+  auto out = fmt::output_file(path, fmt::buffer_size = estimate);
   const bool markers = pslg.vertex_markers.size() == pslg.vertices.size() && !pslg.vertices.empty();
   out.print("{} 2 0 {}\n", pslg.vertices.size(), markers ? 1 : 0);
   for (std::size_t i = 0; i < pslg.vertices.size(); ++i) {

@@ -30,20 +30,37 @@ int compare_edge_lengths(VH a, VH b, VH c, VH d) {
                                         CGAL::squared_distance(c->point(), d->point())));
 }
 
-// Edge order key (squared length, -min id, -max id): true iff ab > cd.
-bool edge_greater(VH a, VH b, VH c, VH d) {
-  const int r = compare_edge_lengths(a, b, c, d);
-  if (r != 0) return r > 0;
+// The edge order's tie-break, for ab and cd of one length: true iff ab is the greater.
+bool tie_greater(VH a, VH b, VH c, VH d) {
   int ab_min = std::min(id(a), id(b)), ab_max = std::max(id(a), id(b));
   int cd_min = std::min(id(c), id(d)), cd_max = std::max(id(c), id(d));
   if (ab_min != cd_min) return ab_min < cd_min;  // older vertices win ties
   return ab_max < cd_max;
 }
 
-// Vertex indices 0,1,2 of f sorted by their opposite edge, shortest first.
+// Edge order key (squared length, -min id, -max id): true iff ab > cd.
+bool edge_greater(VH a, VH b, VH c, VH d) {
+  const int r = compare_edge_lengths(a, b, c, d);
+  if (r != 0) return r > 0;
+  return tie_greater(a, b, c, d);
+}
+
+// Vertex indices 0,1,2 of f sorted by their opposite edge, shortest first: edge_greater's
+// order, with f's points read once rather than four times a comparison (the Lepp walks
+// and the bad test sort every triangle they meet: a tenth of fuzz_differential under ASan).
 std::array<int, 3> edges_ascending(FH f) {
+  const VH v[3] = {f->vertex(0), f->vertex(1), f->vertex(2)};
+  Point p[3];
+  const bool doubles = double_coords(v[0], p[0]) && double_coords(v[1], p[1]) && double_coords(v[2], p[2]);
+  auto greater = [&](int i, int j) {  // edge i (opposite vertex i) longer than edge j
+    const int a = Cdt::ccw(i), b = Cdt::cw(i), c = Cdt::ccw(j), d = Cdt::cw(j);
+    if (!doubles) return edge_greater(v[a], v[b], v[c], v[d]);
+    const int r = compare_squared_lengths(p[a], p[b], p[c], p[d]);
+    if (r != 0) return r > 0;
+    return tie_greater(v[a], v[b], v[c], v[d]);
+  };
   std::array<int, 3> e{0, 1, 2};
-  std::sort(e.begin(), e.end(), [&](int i, int j) { return edge_greater(f, j, f, i); });
+  std::sort(e.begin(), e.end(), [&](int i, int j) { return greater(j, i); });
   return e;
 }
 
