@@ -14,6 +14,9 @@
 # usage: bench/fuzz_throughput.sh [BUILD] [FUZZ_BUILD]   (default build, build-fuzz)
 #   MODES="release sanitizer" (one of them to skip the other), ONLY="row ..." (rows by name),
 #   REPEAT=1, CORPUS=bench/fuzz-corpus. Run it on an idle core: nice, not under load.
+#   BEFORE="OLD_BUILD OLD_FUZZ_BUILD": another tree's two builds (a worktree of the commit
+#   compared with) replayed in the same run, each repetition the old then the new, and the
+#   ratio of the medians printed: a ratio only against the other run of the same measurement.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=$(readlink -f "${1:-build}")
@@ -21,7 +24,6 @@ fuzz_build=$(readlink -f "${2:-build-fuzz}")
 modes=${MODES:-release sanitizer}
 repeat=${REPEAT:-1}
 corpus=$(readlink -f "${CORPUS:-bench/fuzz-corpus}")
-lepp=$build/cli/lepp
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -29,13 +31,13 @@ export ASAN_OPTIONS="abort_on_error=1:detect_leaks=0" UBSAN_OPTIONS="print_stack
 source fuzz/ci_rows.sh  # CI's rows (their run counts unused: a replay runs each input once)
 
 # One replay: prints "WALL CPU" in seconds, or fails with the log's finding lines.
-replay() {  # MODE NAME TARGET VARS...
-  local mode=$1 name=$2 target=$3
-  shift 3
+replay() {  # BUILD FUZZ_BUILD MODE NAME TARGET VARS...
+  local build=$1 fuzz_build=$2 mode=$3 name=$4 target=$5
+  shift 5
   local work=$tmp/$mode-$name
   rm -rf "$work" && mkdir -p "$work/known" "$work/engine"
   local row_env
-  fuzz_row_env "$work" "$target" "$lepp" "$@"
+  fuzz_row_env "$work" "$target" "$build/cli/lepp" "$@"
   local cmd
   if [[ $mode == release ]]; then
     cmd=("$build/fuzz/${target}_replay" --as-fuzzer "$corpus/$name")
@@ -57,18 +59,44 @@ replay() {  # MODE NAME TARGET VARS...
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-for mode in $modes; do
-  case $mode in
-    release) probe=$build/fuzz/fuzz_parse_replay ;;
-    sanitizer) probe=$fuzz_build/fuzz/fuzz_parse ;;
-    *) echo "fuzz_throughput: unknown mode $mode (release, sanitizer)" >&2; exit 2 ;;
-  esac
-  [[ -x $probe ]] || { echo "fuzz_throughput: $probe is missing (build the fuzz targets of $mode first)" >&2; exit 2; }
-done
-[[ -x $lepp ]] || { echo "fuzz_throughput: $lepp is missing (fuzz_engine runs it)" >&2; exit 2; }
+before=()
+if [[ -n ${BEFORE:-} ]]; then
+  read -r -a before <<<"$BEFORE"
+  [[ ${#before[@]} -eq 2 ]] || { echo "fuzz_throughput: BEFORE takes two paths, OLD_BUILD OLD_FUZZ_BUILD" >&2; exit 2; }
+  before=("$(readlink -f "${before[0]}")" "$(readlink -f "${before[1]}")")
+fi
+# The trees measured: the new one, and the old one first when BEFORE is set.
+trees=("$build $fuzz_build")
+[[ ${#before[@]} -eq 2 ]] && trees=("${before[0]} ${before[1]}" "$build $fuzz_build")
 
-echo "| row | build | inputs | wall s | CPU s | exec/s (CPU) | exec/s (wall) |"
-echo "|---|---|---:|---:|---:|---:|---:|"
+for tree in "${trees[@]}"; do
+  read -r b f <<<"$tree"
+  for mode in $modes; do
+    case $mode in
+      release) probe=$b/fuzz/fuzz_parse_replay ;;
+      sanitizer) probe=$f/fuzz/fuzz_parse ;;
+      *) echo "fuzz_throughput: unknown mode $mode (release, sanitizer)" >&2; exit 2 ;;
+    esac
+    [[ -x $probe ]] || { echo "fuzz_throughput: $probe is missing (build the fuzz targets of $mode first)" >&2; exit 2; }
+  done
+  [[ -x $b/cli/lepp ]] || { echo "fuzz_throughput: $b/cli/lepp is missing (fuzz_engine runs it)" >&2; exit 2; }
+done
+
+# CPU and wall medians of a times file, and the row's rates: "CPU WALL EXEC_CPU EXEC_WALL".
+rates() {  # FILE INPUTS
+  local wall cpu
+  wall=$(cut -d' ' -f1 "$1" | median)
+  cpu=$(cut -d' ' -f2 "$1" | median)
+  awk -v k="$2" -v w="$wall" -v c="$cpu" 'BEGIN { printf "%.2f %.2f %.1f %.1f\n", c, w, (c > 0 ? k / c : 0), k / w }'
+}
+
+if [[ ${#before[@]} -eq 2 ]]; then
+  echo "| row | build | inputs | before CPU s | CPU s | before exec/s (CPU) | exec/s (CPU) | x before |"
+  echo "|---|---|---:|---:|---:|---:|---:|---:|"
+else
+  echo "| row | build | inputs | wall s | CPU s | exec/s (CPU) | exec/s (wall) |"
+  echo "|---|---|---:|---:|---:|---:|---:|"
+fi
 failed=0
 for row in "${fuzz_ci_rows[@]}"; do
   read -r name target _runs vars <<<"$row"
@@ -77,14 +105,25 @@ for row in "${fuzz_ci_rows[@]}"; do
   inputs=$(find "$corpus/$name" -maxdepth 1 -type f | wc -l)
   for mode in $modes; do
     : > "$tmp/times"
+    : > "$tmp/times-before"
     for ((i = 0; i < repeat; ++i)); do
+      if [[ ${#before[@]} -eq 2 ]]; then
+        # shellcheck disable=SC2086
+        if ! replay "${before[0]}" "${before[1]}" "$mode" "$name" "$target" $vars >> "$tmp/times-before"; then
+          failed=1; continue 2
+        fi
+      fi
       # shellcheck disable=SC2086
-      if ! replay "$mode" "$name" "$target" $vars >> "$tmp/times"; then failed=1; continue 2; fi
+      if ! replay "$build" "$fuzz_build" "$mode" "$name" "$target" $vars >> "$tmp/times"; then failed=1; continue 2; fi
     done
-    wall=$(cut -d' ' -f1 "$tmp/times" | median)
-    cpu=$(cut -d' ' -f2 "$tmp/times" | median)
-    awk -v n="$name" -v m="$mode" -v k="$inputs" -v w="$wall" -v c="$cpu" \
-      'BEGIN { printf "| %s | %s | %d | %.2f | %.2f | %.1f | %.1f |\n", n, m, k, w, c, (c > 0 ? k / c : 0), k / w }'
+    read -r cpu wall exec_cpu exec_wall <<<"$(rates "$tmp/times" "$inputs")"
+    if [[ ${#before[@]} -eq 2 ]]; then
+      read -r old_cpu _ old_exec_cpu _ <<<"$(rates "$tmp/times-before" "$inputs")"
+      awk -v n="$name" -v m="$mode" -v k="$inputs" -v oc="$old_cpu" -v c="$cpu" -v oe="$old_exec_cpu" -v e="$exec_cpu" \
+        'BEGIN { printf "| %s | %s | %d | %.2f | %.2f | %.1f | %.1f | %.2f |\n", n, m, k, oc, c, oe, e, (oe > 0 ? e / oe : 0) }'
+    else
+      echo "| $name | $mode | $inputs | $wall | $cpu | $exec_cpu | $exec_wall |"
+    fi
   done
 done
 exit $failed

@@ -13,6 +13,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "distance_filter.h"
 #include "insert_unflipped.h"
 #include "lepp/angle.h"
 
@@ -236,6 +237,7 @@ bool Replayer::match_here(const Point& p, ReplayChoice& out, bool wide) {
   for (const Terminal& t : terminals(faces)) {
     std::vector<Candidate> cands = candidates(t);
     for (const Candidate& c : cands) {
+      if (surely_farther(p, c.point, tolerance(c.scale))) continue;
       const double d = distance(p, c.point);
       if (d > tolerance(c.scale) || (insertable_found && d >= nearest)) continue;
       // The Lepp may arrive from either side of an unconstrained terminal edge.
@@ -314,6 +316,7 @@ bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) {
   double nearest = 0;
   for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
     for (const Candidate& c : candidates(t)) {
+      if (surely_farther(p, c.point, tolerance(c.scale))) continue;
       const double d = distance(p, c.point);
       if (d > tolerance(c.scale)) continue;
       const bool ins = insertable_as(p, t, c);
