@@ -3,7 +3,10 @@
 // it: its own process group, stdin and stdout on /dev/null, stderr kept (capped),
 // the whole group killed at the timeout, the address space capped with
 // setrlimit(RLIMIT_AS) in the child. Never blocks past the timeout, whatever the
-// child does (forks, closes or keeps stderr open, ignores SIGTERM, loops).
+// child does (forks, closes or keeps stderr open, ignores SIGTERM, loops). A command
+// with no memory cap starts by posix_spawn (none of the caller's page tables copied,
+// which for a large or sanitized caller was most of a short run's cost); with a cap,
+// by fork, to set it. Either way the child starts alike.
 #pragma once
 #include <cstddef>
 #include <functional>
