@@ -179,7 +179,7 @@ void MeshStatsJob::work() {
   StatsPass pass;
   const std::size_t nt = mesh_.triangles.size();
   // No more than the mesh's angles: the fuzzers' meshes of a few triangles each took
-  // 128 KiB, zeroed, fresh pages under ASan (a fifth of fuzz_cdt's time).
+  // 128 KiB, zeroed, fresh pages under ASan (57 % of the bytes fuzz_cdt allocated).
   std::vector<double> angles(std::min(chunk_, nt));
   // The triangles come in order of their smallest vertex, so their other two
   // vertices are loads from anywhere in the array: fetched kAhead triangles early.

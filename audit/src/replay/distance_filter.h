@@ -2,8 +2,8 @@
 // Private to the conformance replay: whether a program's point is surely farther than
 // a tolerance from an exact candidate, decided without exact arithmetic. Most
 // candidates lie far from the program's point, and their exact differences (lazy
-// nodes, then GMP rationals) were most of the replay's allocations: half of
-// fuzz_engine's parent under ASan, and of `lepp audit`'s replays.
+// nodes, then GMP rationals) were a third of the allocations of fuzz_engine's parent,
+// each an allocation stack under ASan, and time in every `lepp audit`.
 #pragma once
 #include <cmath>
 

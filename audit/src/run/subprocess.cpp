@@ -83,6 +83,15 @@ bool make_pipe(int fds[2], std::string& detail) {
   return true;
 }
 
+// The child's stderr and result pipes, both or neither.
+bool make_pipes(int err[2], int res[2], std::string& detail) {
+  if (!make_pipe(err, detail)) return false;
+  if (make_pipe(res, detail)) return true;
+  close(err[0]);
+  close(err[1]);
+  return false;
+}
+
 // The child's end as waitpid sees it (the child is ours).
 class WaitpidEnd : public ChildEnd {
  public:
@@ -212,12 +221,7 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
   SubprocessResult r;
   let_us_reap_our_children();
   int err[2], res[2];
-  if (!make_pipe(err, r.detail)) return r;
-  if (!make_pipe(res, r.detail)) {
-    close(err[0]);
-    close(err[1]);
-    return r;
-  }
+  if (!make_pipes(err, res, r.detail)) return r;
   const auto t0 = Clock::now();
   pid_t pid = fork();
   if (pid < 0) {
@@ -248,12 +252,6 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
 
 namespace {
 
-// run_forked's child, made by posix_spawn: glibc's clone(CLONE_VM | CLONE_VFORK) copies
-// none of the parent's page tables, which fork copies and exec then unmaps (a third of
-// fuzz_engine's time under ASan, whose shadow maps are large; an audit's parent is big
-// too). The same set-up as set_up_child's, but the memory cap, which posix_spawn cannot
-// set: a run with one forks. A program that cannot run ends as run_program's child ends
-// (127 and "PROGRAM: not found", 126 otherwise); here posix_spawn reports it instead.
 // The working directory a child could not enter (posix_spawn gives chdir's error and
 // exec's alike).
 bool chdir_fails(const std::string& directory) {
@@ -261,18 +259,20 @@ bool chdir_fails(const std::string& directory) {
   return !std::filesystem::is_directory(directory, ec) || access(directory.c_str(), X_OK) != 0;
 }
 
+// run_forked's child, made by posix_spawn: glibc's clone(CLONE_VM | CLONE_VFORK) copies
+// none of the parent's page tables, which fork copies and exec then unmaps (a sixth of
+// fuzz_engine's samples under ASan, whose shadow maps are large, and copy-on-write faults
+// besides; an audit's parent is big too). The same set-up as set_up_child's but the
+// memory cap, which posix_spawn cannot set: a run with one forks. A program that cannot
+// run ends as run_program's child ends (127 and "PROGRAM: not found", 126 otherwise);
+// here posix_spawn reports it instead.
 // `name`: the program as its error message names it; null for /bin/sh's, which says nothing.
 SubprocessResult run_spawned(const char* file, char* const argv[], char* const envp[], bool search,
                              const SubprocessLimits& limits, const std::string* name) {
   SubprocessResult r;
   let_us_reap_our_children();
   int err[2], res[2];
-  if (!make_pipe(err, r.detail)) return r;
-  if (!make_pipe(res, r.detail)) {
-    close(err[0]);
-    close(err[1]);
-    return r;
-  }
+  if (!make_pipes(err, res, r.detail)) return r;
   close(res[1]);  // a program has no result pipe: the parent reads its end at once
   posix_spawn_file_actions_t actions;
   posix_spawnattr_t attr;
