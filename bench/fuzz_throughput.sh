@@ -82,13 +82,8 @@ for tree in "${trees[@]}"; do
   [[ -x $b/cli/lepp ]] || { echo "fuzz_throughput: $b/cli/lepp is missing (fuzz_engine runs it)" >&2; exit 2; }
 done
 
-# CPU and wall medians of a times file, and the row's rates: "CPU WALL EXEC_CPU EXEC_WALL".
-rates() {  # FILE INPUTS
-  local wall cpu
-  wall=$(cut -d' ' -f1 "$1" | median)
-  cpu=$(cut -d' ' -f2 "$1" | median)
-  awk -v k="$2" -v w="$wall" -v c="$cpu" 'BEGIN { printf "%.2f %.2f %.1f %.1f\n", c, w, (c > 0 ? k / c : 0), k / w }'
-}
+# The CPU and wall medians of a times file: "CPU WALL", unrounded (the ratio is taken of them).
+medians() { echo "$(cut -d' ' -f2 "$1" | median) $(cut -d' ' -f1 "$1" | median)"; }
 
 if [[ ${#before[@]} -eq 2 ]]; then
   echo "| row | build | inputs | before CPU s | CPU s | before exec/s (CPU) | exec/s (CPU) | x before |"
@@ -116,13 +111,15 @@ for row in "${fuzz_ci_rows[@]}"; do
       # shellcheck disable=SC2086
       if ! replay "$build" "$fuzz_build" "$mode" "$name" "$target" $vars >> "$tmp/times"; then failed=1; continue 2; fi
     done
-    read -r cpu wall exec_cpu exec_wall <<<"$(rates "$tmp/times" "$inputs")"
+    read -r cpu wall <<<"$(medians "$tmp/times")"
     if [[ ${#before[@]} -eq 2 ]]; then
-      read -r old_cpu _ old_exec_cpu _ <<<"$(rates "$tmp/times-before" "$inputs")"
-      awk -v n="$name" -v m="$mode" -v k="$inputs" -v oc="$old_cpu" -v c="$cpu" -v oe="$old_exec_cpu" -v e="$exec_cpu" \
-        'BEGIN { printf "| %s | %s | %d | %.2f | %.2f | %.1f | %.1f | %.2f |\n", n, m, k, oc, c, oe, e, (oe > 0 ? e / oe : 0) }'
+      read -r old_cpu _ <<<"$(medians "$tmp/times-before")"
+      awk -v n="$name" -v m="$mode" -v k="$inputs" -v oc="$old_cpu" -v c="$cpu" \
+        'BEGIN { printf "| %s | %s | %d | %.2f | %.2f | %.1f | %.1f | %.2f |\n", n, m, k, oc, c,
+                 (oc > 0 ? k / oc : 0), (c > 0 ? k / c : 0), (c > 0 ? oc / c : 0) }'
     else
-      echo "| $name | $mode | $inputs | $wall | $cpu | $exec_cpu | $exec_wall |"
+      awk -v n="$name" -v m="$mode" -v k="$inputs" -v w="$wall" -v c="$cpu" \
+        'BEGIN { printf "| %s | %s | %d | %.2f | %.2f | %.1f | %.1f |\n", n, m, k, w, c, (c > 0 ? k / c : 0), k / w }'
     fi
   done
 done

@@ -206,7 +206,8 @@ std::vector<CellTri> Replayer::cell_bad_reaching(CellMap& cells, const CellTri& 
 bool Replayer::try_cell_terminal(CellMap& cells, const CellTri& t1, const CellTri* t2, int l, const Point& p, ReplayChoice& out,
                                  std::size_t& used) {
   for (const Candidate& c : t2 ? candidates(t1, *t2, true, l) : candidates(t1, t1, false, l)) {
-    if (surely_farther(p, c.point, tolerance(c.scale)) || distance(p, c.point) > tolerance(c.scale)) continue;
+    const double tol = tolerance(c.scale);
+    if (surely_farther(p, c.point, tol) || distance(p, c.point) > tol) continue;
     std::vector<CellTri> path = cell_bad_reaching(cells, t1, l, t2, used);
     if (path.empty() && t2) path = cell_bad_reaching(cells, *t2, index_off(*t2, vtx(t1, Cdt::ccw(l)), vtx(t1, Cdt::cw(l))), &t1, used);
     if (path.empty()) continue;

@@ -237,9 +237,10 @@ bool Replayer::match_here(const Point& p, ReplayChoice& out, bool wide) {
   for (const Terminal& t : terminals(faces)) {
     std::vector<Candidate> cands = candidates(t);
     for (const Candidate& c : cands) {
-      if (surely_farther(p, c.point, tolerance(c.scale))) continue;
+      const double tol = tolerance(c.scale);
+      if (surely_farther(p, c.point, tol)) continue;
       const double d = distance(p, c.point);
-      if (d > tolerance(c.scale) || (insertable_found && d >= nearest)) continue;
+      if (d > tol || (insertable_found && d >= nearest)) continue;
       // The Lepp may arrive from either side of an unconstrained terminal edge.
       std::vector<FH> path = bad_reaching(t.t1, t.l, t.t2);
       Terminal used = t;
@@ -316,9 +317,10 @@ bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) {
   double nearest = 0;
   for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
     for (const Candidate& c : candidates(t)) {
-      if (surely_farther(p, c.point, tolerance(c.scale))) continue;
+      const double tol = tolerance(c.scale);
+      if (surely_farther(p, c.point, tol)) continue;
       const double d = distance(p, c.point);
-      if (d > tolerance(c.scale)) continue;
+      if (d > tol) continue;
       const bool ins = insertable_as(p, t, c);
       const bool better = !found || (ins && !insertable_found) || (ins == insertable_found && d < nearest);
       if (!better) continue;

@@ -252,6 +252,13 @@ SubprocessResult run_forked(const ChildFunction& child, const SubprocessLimits& 
 
 namespace {
 
+// How sh reports a program it cannot run, by exec's errno: kind 0 not there (127, "not
+// found"), 1 not permitted (126), 2 anything else (126). Both children use it; the forked
+// one after fork, so it only reads these tables.
+int exec_failure(int e) { return e == ENOENT || e == ENOTDIR ? 0 : e == EACCES ? 1 : 2; }
+constexpr const char* kExecFailureSaid[3] = {": not found\n", ": Permission denied\n", ": cannot execute\n"};
+constexpr int kExecFailureStatus[3] = {127, 126, 126};
+
 // The working directory a child could not enter (posix_spawn gives chdir's error and
 // exec's alike).
 bool chdir_fails(const std::string& directory) {
@@ -304,10 +311,9 @@ SubprocessResult run_spawned(const char* file, char* const argv[], char* const e
     r.started = true;
     r.seconds = since(t0);
     const bool chdir_failed = !limits.directory.empty() && chdir_fails(limits.directory);
-    const bool missing = e == ENOENT || e == ENOTDIR;
-    r.exit_code = chdir_failed ? 126 : !name || missing ? 127 : 126;
-    if (!chdir_failed && name)
-      r.stderr_text = *name + (missing ? ": not found\n" : e == EACCES ? ": Permission denied\n" : ": cannot execute\n");
+    const int kind = exec_failure(e);
+    r.exit_code = chdir_failed ? 126 : !name ? 127 : kExecFailureStatus[kind];
+    if (!chdir_failed && name) r.stderr_text = *name + kExecFailureSaid[kind];
     return r;
   }
   r.started = true;
@@ -341,19 +347,16 @@ SubprocessResult run_program(const std::vector<std::string>& words, const Subpro
   std::vector<char*> envp;
   for (const std::string& e : env) envp.push_back(const_cast<char*>(e.c_str()));
   envp.push_back(nullptr);
-  if (limits.memory_mb == 0) return run_spawned(argv[0], argv.data(), env.empty() ? environ : envp.data(), true, limits, &words[0]);
-  const std::string not_found = words.at(0) + ": not found\n";
-  const std::string denied = words[0] + ": Permission denied\n";
-  const std::string cannot = words[0] + ": cannot execute\n";
+  if (limits.memory_mb == 0) return run_spawned(argv[0], argv.data(), env.empty() ? environ : envp.data(), true, limits, &words.at(0));
+  std::string said[3];
+  for (int kind = 0; kind < 3; ++kind) said[kind] = words[0] + kExecFailureSaid[kind];
   return run_forked(
       [&](int) {
         if (env.empty()) execvp(argv[0], argv.data());
         else execvpe(argv[0], argv.data(), envp.data());
-        // As sh reports a program it cannot run: 127 not found, 126 found but not executable.
-        const int e = errno;
-        const std::string& m = e == ENOENT || e == ENOTDIR ? not_found : e == EACCES ? denied : cannot;
-        [[maybe_unused]] const ssize_t written = write(2, m.data(), m.size());  // nothing to do if it fails
-        return e == ENOENT || e == ENOTDIR ? 127 : 126;
+        const int kind = exec_failure(errno);
+        [[maybe_unused]] const ssize_t written = write(2, said[kind].data(), said[kind].size());  // nothing to do if it fails
+        return kExecFailureStatus[kind];
       },
       limits);
 }
