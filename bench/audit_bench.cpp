@@ -7,6 +7,9 @@
 //                       write the .poly, fork/exec /bin/sh, wait, read .node/.ele/.trace
 //   BM_AuditLoop        run_audit per run with an engine that returns ready meshes
 //                       (inputs, checks, bookkeeping; no shrinking, nothing fails)
+//   BM_Diagnose         the catalogue's diagnosis of a point that is no choice on a
+//                       whole replayed mesh (every terminal configuration), with the
+//                       skip of far configurations (skip:1) and without (skip:0)
 // Counters: vertices of the mesh checked; runs per iteration of the loop. Read CPU
 // time (the program under audit runs in other processes; wall time includes them).
 #include <benchmark/benchmark.h>
@@ -23,6 +26,7 @@
 #include "lepp/io.h"
 #include "lepp/trace_io.h"
 #include "problems.h"
+#include "replay/replayer.h"  // audit/src: the replay's searches, white-box
 
 namespace fs = std::filesystem;
 
@@ -89,6 +93,41 @@ void BM_CommandAdapter(benchmark::State& state) {
   fs::remove_all(dir);
 }
 BENCHMARK(BM_CommandAdapter)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+
+// Each paper problem's whole trace replayed, then points that are no choice asked
+// about: every 50th step's point moved by a thousandth of its magnitude (unknown:
+// the list of nearest rules) and by 64 ulps (within a thousand tolerances: precision).
+void BM_Diagnose(benchmark::State& state) {
+  const Ready& r = ready_runs()[static_cast<std::size_t>(state.range(0))];
+  audit::ReplayRules rules;
+  rules.min_angle_deg = r.request.theta;
+  audit::replay_detail::Replayer replayer(r.pslg, rules);
+  const std::vector<Point>& trace = *r.run.trace;
+  for (const Point& p : trace) {
+    audit::ReplayChoice c;
+    if (!replayer.match(p, c)) {
+      state.SkipWithError("the fast engine's trace is no choice");
+      return;
+    }
+    replayer.insert(p, c);
+  }
+  std::vector<Point> probes;
+  for (std::size_t i = 0; i < trace.size(); i += 50) {
+    const Point p = trace[i];
+    probes.push_back({p.x + 1e-3 * std::max(std::abs(p.x), std::abs(p.y)), p.y});
+    double y = p.y;
+    for (int k = 0; k < 64; ++k) y = std::nextafter(y, INFINITY);
+    probes.push_back({p.x, y});
+  }
+  audit::replay_detail::Replayer::skip_far_terminals = state.range(1) != 0;
+  for (auto _ : state)
+    for (const Point& p : probes) benchmark::DoNotOptimize(replayer.diagnose(p));
+  audit::replay_detail::Replayer::skip_far_terminals = true;
+  state.counters["points"] = static_cast<double>(probes.size());
+  state.counters["triangles"] = static_cast<double>(r.run.mesh.triangles.size());
+  state.SetLabel(r.name);
+}
+BENCHMARK(BM_Diagnose)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->ArgNames({"problem", "skip"})->Unit(benchmark::kMillisecond);
 
 // Generated inputs (seed 1, sizes 0 to 60): the loop's time per run when the engine costs nothing.
 std::string fmt_key(const Pslg& p, double theta) {

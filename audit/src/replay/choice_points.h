@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "distance_filter.h"
 #include "exact_constructions.h"
 #include "lepp/audit/replay.h"
 #include "tie_order.h"
@@ -77,6 +78,37 @@ std::optional<Candidate> quad_centroid(Rule rule, const T& t1, const T& t2, int 
   const std::optional<CPoint> g = guarded_area_centroid(a->point(), b->point(), c->point(), d->point());
   if (!g) return std::nullopt;  // a flat quad has no area centroid: no such choice
   return Candidate{rule, *g, scale, {}, {}};
+}
+
+// What bounds every candidate at a terminal configuration before any is built:
+// the box of its vertices (every candidate is a midpoint or a centroid of them,
+// of either reading) and upper bounds of the candidates' scales (quad_centroid's):
+// the largest |coordinate| M of the vertices for midpoints, triangle centroids and
+// the vertex reading; for the area reading M * M / |ab| when |ab| < M, with |ab|
+// taken low by more than its rounding in quad_centroid (infinity when |ab|'s
+// interval reaches 0).
+struct TerminalBound {
+  ApproxBox box;
+  double scale = 0;       // no candidate of the area reading
+  double area_scale = 0;  // any candidate
+};
+
+inline TerminalBound terminal_bound(const Terminal& t) {
+  TerminalBound out;
+  VH a = vtx(t.t1, Cdt::ccw(t.l)), b = vtx(t.t1, Cdt::cw(t.l));
+  for (int i = 0; i < 3; ++i) out.box.add(t.t1->vertex(i)->point());
+  if (t.t2 != FH()) out.box.add(vtx(t.t2, index_off(t.t2, a, b))->point());
+  out.scale = out.area_scale = out.box.abs_max();
+  if (t.t2 == FH()) return out;  // no quad: no centroid of either reading
+  using I = CGAL::Interval_nt<true>;
+  const auto &pa = CGAL::approx(a->point()), &pb = CGAL::approx(b->point());
+  const I dx = I(pa.x().inf(), pa.x().sup()) - I(pb.x().inf(), pb.x().sup());
+  const I dy = I(pa.y().inf(), pa.y().sup()) - I(pb.y().inf(), pb.y().sup());
+  const double ab = CGAL::sqrt(dx * dx + dy * dy).inf() * (1 - 0x1p-10);
+  const double m = out.scale;
+  if (!(ab > 0)) out.area_scale = std::numeric_limits<double>::infinity();
+  else if (m / ab > 1) out.area_scale = m * (m / ab) * (1 + 0x1p-10);
+  return out;
 }
 
 // 1 strictly inside f farther than tol from its boundary, -1 not strictly

@@ -5,7 +5,9 @@
 // nodes, then GMP rationals) were a third of the allocations of fuzz_engine's parent,
 // each an allocation stack under ASan, and time in every `lepp audit`.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "lepp/pslg.h"
 #include "triangulation.h"  // reference/src: the exact engine's CGAL types
@@ -29,5 +31,40 @@ inline bool surely_farther(const Point& p, const CPoint& q, double tol) {
   };
   return beyond(p.x, a.x()) || beyond(p.y, a.y());
 }
+
+// The box around some exact points, from their interval approximations: every point
+// made of them with non-negative weights summing to one (a midpoint, a centroid of
+// either reading) lies in it. It bounds a whole terminal configuration's candidates
+// before any is constructed: in the whole-mesh searches most configurations lie far
+// from the program's point, and building their exact candidates (lazy nodes, GMP)
+// was most of the catalogue's diagnosis.
+struct ApproxBox {
+  double xlo = std::numeric_limits<double>::infinity(), xhi = -std::numeric_limits<double>::infinity();
+  double ylo = xlo, yhi = xhi;
+
+  void add(const CPoint& q) {
+    const auto& a = CGAL::approx(q);
+    xlo = std::min(xlo, a.x().inf()), xhi = std::max(xhi, a.x().sup());
+    ylo = std::min(ylo, a.y().inf()), yhi = std::max(yhi, a.y().sup());
+  }
+  // The largest |coordinate| in the box: at least abs_max of each point added.
+  double abs_max() const { return std::max({std::abs(xlo), std::abs(xhi), std::abs(ylo), std::abs(yhi)}); }
+
+  // No more than the replay's distance (Replayer::distance) from p to any point in the
+  // box: the exact gap on each axis rounded down, lowered by 2^-10 of itself. The
+  // replay rounds each exact difference through CGAL's to_double, which may return the
+  // midpoint of an interval up to 1e-5 wide relative to the value (CGAL's relative
+  // precision of to_double), so a little below the exact gap. 0 for a p that is not
+  // finite or an empty box (nothing said).
+  double lower_bound(const Point& p) const {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !(xlo <= xhi) || !(ylo <= yhi)) return 0;
+    using I = CGAL::Interval_nt<true>;
+    auto gap = [](double v, double lo, double hi) {
+      return std::max({0.0, (I(lo) - I(v)).inf(), (I(v) - I(hi)).inf()});
+    };
+    const double g = std::max(gap(p.x, xlo, xhi), gap(p.y, ylo, yhi));
+    return g - g * 0x1p-10;
+  }
+};
 
 }  // namespace lepp::audit::replay_detail

@@ -35,7 +35,10 @@ inline std::optional<CPoint> guarded_area_centroid(const CPoint& a, const CPoint
   FT w1 = CGAL::abs((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
   FT w2 = CGAL::abs((b.x() - a.x()) * (d.y() - a.y()) - (b.y() - a.y()) * (d.x() - a.x()));
   FT w = 3 * (w1 + w2);
-  if (CGAL::is_zero(w)) return std::nullopt;
+  // sign, not CGAL::is_zero: the latter is Lazy_exact_nt's algebraic is_zero, which
+  // evaluates w exactly every time (GMP on the whole expression); sign reads the
+  // interval first and goes exact only when it straddles 0.
+  if (CGAL::sign(w) == CGAL::ZERO) return std::nullopt;
   return CPoint((w1 * (a.x() + b.x() + c.x()) + w2 * (a.x() + b.x() + d.x())) / w,
                 (w1 * (a.y() + b.y() + c.y()) + w2 * (a.y() + b.y() + d.y())) / w);
 }
@@ -45,6 +48,10 @@ inline std::optional<CPoint> guarded_area_centroid(const CPoint& a, const CPoint
 // nearest gives an infinity from DBL_MAX plus half its ulp on (a tie goes to
 // the even side, the infinity), else DBL_MAX; FT(infinity) is never made.
 inline double round_nearest(const FT& x) {
+  // A value whose interval approximation is one double is that double: no exact
+  // evaluation (a midpoint or centroid that rounding did not touch).
+  const std::pair<double, double> approx = CGAL::to_interval(x);
+  if (approx.first == approx.second) return approx.first;
   std::pair<double, double> iv = CGAL::to_interval(CGAL::exact(x));
   if (iv.first == iv.second) return iv.first;
   if (!std::isfinite(iv.first) || !std::isfinite(iv.second)) {

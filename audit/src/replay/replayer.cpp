@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <map>
 #include <string>
 #include <set>
@@ -316,6 +317,9 @@ bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) {
   bool found = false, insertable_found = false;
   double nearest = 0;
   for_each_bad_lepp_end([&](const std::vector<FH>& lepp, const Terminal& t) {
+    // The catalogue's points (both readings' centroids) only where a variant allows them.
+    const bool area = rules.centroid == CentroidReading::Area || allows_points();
+    if (far_from(p, terminal_bound(t), area, 1, -std::numeric_limits<double>::infinity())) return;
     for (const Candidate& c : candidates(t)) {
       const double tol = tolerance(c.scale);
       if (surely_farther(p, c.point, tol)) continue;

@@ -57,6 +57,11 @@ class Replayer {
   // search runs.
   std::int64_t searched_everywhere_ = 0;
   bool search_exhausted_ = false;  // the last match's search of the cells ran out of its budget
+  // For tests: false builds every configuration's candidates in the whole-mesh
+  // searches (match_everywhere, diagnose), as before far_from; the answers must
+  // be the same (audit/tests/replay/far_terminals_test.cpp).
+  static inline bool skip_far_terminals = true;
+  mutable std::int64_t skipped_terminals_ = 0;  // configurations far_from skipped (tests)
 
  private:
   FT sin2_;
@@ -77,6 +82,17 @@ class Replayer {
   FH hint() const { return last_ != VH() ? last_->face() : FH(); }
   bool in_domain(FH f) const { return replay_detail::in_domain(tr, f); }
   double tolerance(double scale) const { return point_tolerance(rules, scale); }
+  // True when no candidate at the configuration can be within `factor` times its
+  // tolerance of p, nor nearer than `ratio` such tolerances: the whole-mesh
+  // searches skip it without building one (TerminalBound). `area`: some
+  // candidate may be of the area reading.
+  bool far_from(const Point& p, const TerminalBound& b, bool area, double factor, double ratio) const {
+    if (!skip_far_terminals) return false;
+    const double tol = factor * tolerance(area ? b.area_scale : b.scale), lb = b.box.lower_bound(p);
+    const bool far = lb > tol && lb / tol > ratio;
+    skipped_terminals_ += far;
+    return far;
+  }
 
   // Bad, or within the angle tolerance of bad.
   const std::optional<FT>& bound(int region) const { return bounds_[static_cast<std::size_t>(region)]; }
