@@ -8,6 +8,7 @@
 // far away, on meshes at the origin, far from it and at subnormal scale.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -222,6 +223,30 @@ TEST(FarTerminals, TheSearchesAnswerTheSameWithoutTheSkip) {
   }
   // The skip is taken (else this test would compare a search with itself).
   EXPECT_GT(skipped, 1000);
+}
+
+// A sliver of height 1e-7 under an edge of length 1, bad at 20 degrees, whose
+// circumcenter lies 1.25e6 below it. At a point near that circumcenter two rules
+// are near (circumcenter, off-center: the triangle's own points, considered first)
+// and the list has room for a third: the sliver's terminal configuration, 1.25e6
+// away, though many more of its tolerances away than the off-center's. It is not
+// skipped; the relaxed pass's is (the list is full by then).
+TEST(FarTerminals, AListWithRoomForAThirdRuleStillTakesIt) {
+  Pslg raw;
+  raw.vertices = {{0, 0}, {1, 0}, {0.5, 1e-7}};
+  raw.segments = {{0, 1, 0}, {1, 2, 0}, {2, 0, 0}};
+  std::vector<std::string> warnings;
+  const Pslg pslg = validate(raw, warnings);
+  ReplayRules rules;
+  rules.min_angle_deg = 20;
+  const Replayer replayer(pslg, rules);
+  const Point p{1.5, -1249999.99999995};  // the circumcenter is (0.5, -1249999.99999995)
+  const DeviationMatch m = replayer.diagnose(p);
+  EXPECT_EQ(m.deviation, Deviation::Unknown) << m.what;
+  EXPECT_NE(m.what.find("circumcenter"), std::string::npos) << m.what;
+  EXPECT_NE(m.what.find("off-center"), std::string::npos) << m.what;
+  EXPECT_EQ(std::count(m.what.begin(), m.what.end(), '('), 3) << "three rules listed: " << m.what;
+  EXPECT_GT(replayer.skipped_terminals_, 0);
 }
 
 }  // namespace
