@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 
 #include "distance_filter.h"
 #include "exact_constructions.h"
 #include "lepp/audit/replay.h"
+#include "mean_difference.h"
 #include "tie_order.h"
 
 namespace lepp::audit::replay_detail {
@@ -29,10 +31,34 @@ struct Candidate {
   double scale = 0;        // largest |coordinate| of the vertices defining the point
   VH split_a, split_b;     // the constrained edge it splits, or null
   Deviation deviation = Deviation::Unknown;  // Unknown: the paper's choice; else the catalogue rule that made it
+  MeanOf mean;             // point is the mean of these doubles (a midpoint, the vertex centroid), if n > 0
 };
+
+// The mean of the vertices' points, when each is a double (its interval a point: so
+// are the input's and every inserted vertex); else none (n = 0).
+inline MeanOf mean_of(std::initializer_list<VH> vs) {
+  MeanOf m;
+  for (VH v : vs) {
+    const auto& a = CGAL::approx(v->point());
+    double x, y;
+    if (!CGAL::fit_in_double(a.x(), x) || !CGAL::fit_in_double(a.y(), y)) return {};
+    m.x[static_cast<std::size_t>(m.n)] = x, m.y[static_cast<std::size_t>(m.n)] = y, ++m.n;
+  }
+  return m;
+}
 
 inline double abs_max(const CPoint& p) {
   return std::max(std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())));
+}
+
+// The candidate's point rounded to the nearest doubles (round_nearest), without GMP
+// where it is a mean of doubles (mean_nearest).
+inline Point rounded_point(const Candidate& c) {
+  auto coord = [&](const FT& x, const std::array<double, 4>& m) {
+    const std::optional<double> r = mean_nearest(m.data(), c.mean.n);
+    return r ? *r : round_nearest(x);
+  };
+  return {coord(c.point.x(), c.mean.x), coord(c.point.y(), c.mean.y)};
 }
 
 // The point tolerance for a choice of this scale (ReplayRules::point_tolerance_ulps).
@@ -56,6 +82,7 @@ Candidate midpoint(Rule rule, const T& f, int i) {
   VH a = vtx(f, Cdt::ccw(i)), b = vtx(f, Cdt::cw(i));
   Candidate c{rule, CGAL::midpoint(a->point(), b->point()), std::max(abs_max(a->point()), abs_max(b->point())), {}, {}};
   if (constrained(f, i)) c.split_a = a, c.split_b = b;
+  c.mean = mean_of({a, b});
   return c;
 }
 
@@ -71,7 +98,9 @@ std::optional<Candidate> quad_centroid(Rule rule, const T& t1, const T& t2, int 
   if (reading == CentroidReading::Vertex) {
     CPoint g(((a->point().x() + b->point().x()) + (c->point().x() + d->point().x())) / 4,
              ((a->point().y() + b->point().y()) + (c->point().y() + d->point().y())) / 4);
-    return Candidate{rule, g, scale, {}, {}};
+    Candidate out{rule, g, scale, {}, {}};
+    out.mean = mean_of({a, b, c, d});
+    return out;
   }
   double ab = std::sqrt(CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
   if (ab > 0 && scale / ab > 1) scale *= scale / ab;

@@ -207,7 +207,7 @@ bool Replayer::try_cell_terminal(CellMap& cells, const CellTri& t1, const CellTr
                                  std::size_t& used) {
   for (const Candidate& c : t2 ? candidates(t1, *t2, true, l) : candidates(t1, t1, false, l)) {
     const double tol = tolerance(c.scale);
-    if (surely_farther(p, c.point, tol) || distance(p, c.point) > tol) continue;
+    if (surely_farther(p, c.point, tol) || distance(p, c) > tol) continue;
     std::vector<CellTri> path = cell_bad_reaching(cells, t1, l, t2, used);
     if (path.empty() && t2) path = cell_bad_reaching(cells, *t2, index_off(*t2, vtx(t1, Cdt::ccw(l)), vtx(t1, Cdt::cw(l))), &t1, used);
     if (path.empty()) continue;

@@ -89,7 +89,7 @@ DeviationMatch Replayer::diagnose(const Point& p) const {
     // A point out of the doubles' range (the circumcenter of a nearly flat
     // triangle) has an infinite scale: it would match every point.
     if (!std::isfinite(tol)) return;
-    const double d = distance(p, c.point);
+    const double d = distance(p, c);
     auto& near = nearest[static_cast<std::size_t>(rank)];
     if (tol > 0 && d / tol < near.first / near.second) near = {d, tol};
     if (!(d <= tol) || (rank == best_rank && d >= best_d)) return;
@@ -104,9 +104,9 @@ DeviationMatch Replayer::diagnose(const Point& p) const {
       ReplayChoice r;
       r.bad = ccw_ids(lepp.front());
       r.lepp = {r.bad};
-      r.point = {round_nearest(c.point.x()), round_nearest(c.point.y())};
+      r.point = rounded_point(c);
       r.distance = d;
-      r.euclidean = euclidean(p, c.point);
+      r.euclidean = euclidean(p, c);
       best.where = r;
     }
     best.where.tolerance = tol;

@@ -82,14 +82,17 @@ bool Replayer::allows_points() const {
   return points(rules.variant) || std::any_of(allowed_.begin(), allowed_.end(), points);
 }
 
-double Replayer::distance(const Point& p, const CPoint& q) {
+// max(|dx|, |dy|), each exact difference rounded as CGAL's to_double rounds it.
+double Replayer::distance(const Point& p, const Candidate& c) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
-  return std::max(std::abs(CGAL::to_double(FT(p.x) - q.x())), std::abs(CGAL::to_double(FT(p.y) - q.y())));
+  return std::max(std::abs(difference_to_double(p.x, c.point.x(), c.mean.x.data(), c.mean.n)),
+                  std::abs(difference_to_double(p.y, c.point.y(), c.mean.y.data(), c.mean.n)));
 }
 
-double Replayer::euclidean(const Point& p, const CPoint& q) {
+double Replayer::euclidean(const Point& p, const Candidate& c) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
-  return std::hypot(CGAL::to_double(FT(p.x) - q.x()), CGAL::to_double(FT(p.y) - q.y()));
+  return std::hypot(difference_to_double(p.x, c.point.x(), c.mean.x.data(), c.mean.n),
+                    difference_to_double(p.y, c.point.y(), c.mean.y.data(), c.mean.n));
 }
 
 // The domain triangles around p: those incident to a vertex of the
@@ -193,9 +196,9 @@ ReplayChoice Replayer::describe(const Terminal& t, const Candidate& c, const Poi
   r.t1 = ccw_ids(t.t1);
   if (t.t2 != FH()) r.t2 = ccw_ids(t.t2);
   r.rule = c.rule;
-  r.point = {round_nearest(c.point.x()), round_nearest(c.point.y())};
-  r.distance = distance(p, c.point);
-  r.euclidean = euclidean(p, c.point);
+  r.point = rounded_point(c);
+  r.distance = distance(p, c);
+  r.euclidean = euclidean(p, c);
   r.tolerance = tolerance(c.scale);
   if (c.split_a != VH()) r.split_edge = {id(c.split_a), id(c.split_b)};
   r.deviation = c.deviation;
@@ -240,7 +243,7 @@ bool Replayer::match_here(const Point& p, ReplayChoice& out, bool wide) {
     for (const Candidate& c : cands) {
       const double tol = tolerance(c.scale);
       if (surely_farther(p, c.point, tol)) continue;
-      const double d = distance(p, c.point);
+      const double d = distance(p, c);
       if (d > tol || (insertable_found && d >= nearest)) continue;
       // The Lepp may arrive from either side of an unconstrained terminal edge.
       std::vector<FH> path = bad_reaching(t.t1, t.l, t.t2);
@@ -323,7 +326,7 @@ bool Replayer::match_everywhere(const Point& p, ReplayChoice& out) {
     for (const Candidate& c : candidates(t)) {
       const double tol = tolerance(c.scale);
       if (surely_farther(p, c.point, tol)) continue;
-      const double d = distance(p, c.point);
+      const double d = distance(p, c);
       if (d > tol) continue;
       const bool ins = insertable_as(p, t, c);
       const bool better = !found || (ins && !insertable_found) || (ins == insertable_found && d < nearest);

@@ -116,8 +116,11 @@ class Replayer {
     return t.t2 == FH() ? candidates(t.t1, t.t1, false, t.l) : candidates(t.t1, t.t2, true, t.l);
   }
 
-  static double distance(const Point& p, const CPoint& q);
-  static double euclidean(const Point& p, const CPoint& q);
+  // From p to a candidate's point: max(|dx|, |dy|), and the Euclidean distance for
+  // reports; each difference as CGAL's to_double rounds it, without GMP where the
+  // point is a mean of doubles (mean_difference.h).
+  static double distance(const Point& p, const Candidate& c);
+  static double euclidean(const Point& p, const Candidate& c);
 
   // replayer.cpp: the search around a point, and everywhere.
   std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false);
