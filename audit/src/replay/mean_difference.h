@@ -160,11 +160,9 @@ inline std::optional<double> mean_nearest(const double* m, int n) {
 // the exact value's tightest interval), the last without GMP where it can.
 inline double difference_to_double(double v, const FT& q, const double* m, int n) {
   const FT diff = FT(v) - q;
-  const auto& app = CGAL::approx(diff);
-  double r;
-  if (n == 0 || CGAL::fit_in_double(app, r) ||
-      CGAL::has_smaller_relative_precision(app, FT::get_relative_precision_of_to_double()))
-    return CGAL::to_double(diff);  // CGAL's own branch, no exact arithmetic
+  // CGAL's own branch, no exact arithmetic: the interval a point, or narrow enough.
+  if (n == 0 || CGAL::has_smaller_relative_precision(CGAL::approx(diff), FT::get_relative_precision_of_to_double()))
+    return CGAL::to_double(diff);
   if (const auto tight = mean_difference_interval(v, m, n)) return (tight->second + tight->first) * 0.5;
   return CGAL::to_double(diff);
 }
