@@ -48,6 +48,12 @@ inline MeanOf mean_of(std::initializer_list<VH> vs) {
 }
 
 inline double abs_max(const CPoint& p) {
+  // A point of doubles (every vertex of the replay's mesh) is read from its interval,
+  // which is then the point: to_double(p.x()) would build a lazy node (an allocation)
+  // to give the same double.
+  const auto& a = CGAL::approx(p);
+  double x, y;
+  if (CGAL::fit_in_double(a.x(), x) && CGAL::fit_in_double(a.y(), y)) return std::max(std::abs(x), std::abs(y));
   return std::max(std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())));
 }
 
