@@ -26,11 +26,15 @@ int compare_squared_lengths_exact(const Point& a, const Point& b, const Point& c
 // sign(sin2 |u|^2 |v|^2 - cross(u, v)^2) with u = b - apex, v = c - apex.
 int skinny_sign_exact(const Point& apex, const Point& b, const Point& c, double sin2);
 
-// x + y == s exactly (Knuth's TwoSum: its error term is exact when nothing overflows).
-inline bool sum_is_exact(double x, double y, double s) {
+// What s = x + y (rounded) lost: x + y - s exactly (Knuth's TwoSum: its error term is
+// exact when nothing overflows; an overflow leaves NaN).
+inline double sum_error(double x, double y, double s) {
   const double yy = s - x;
-  return (x - (s - yy)) + (y - yy) == 0;
+  return (x - (s - yy)) + (y - yy);
 }
+
+// x + y == s exactly.
+inline bool sum_is_exact(double x, double y, double s) { return sum_error(x, y, s) == 0; }
 
 // Exact without a product: when the four differences are exact doubles, the components
 // of each length sorted by size, |ab|^2 - |cd|^2 = (p^2 - r^2) + (q^2 - s^2) has the sign

@@ -34,26 +34,29 @@ struct Candidate {
   MeanOf mean;             // point is the mean of these doubles (a midpoint, the vertex centroid), if n > 0
 };
 
-// The mean of the vertices' points, when each is a double (its interval a point: so
-// are the input's and every inserted vertex); else none (n = 0).
+// The point as doubles when it is one: its interval approximation a point (so are the
+// input's vertices and every vertex the replay inserts); else none. Read so, no lazy
+// coordinate node is built (to_double(p.x()) makes one, an allocation).
+inline std::optional<Point> doubles_of(const CPoint& p) {
+  const auto& a = CGAL::approx(p);
+  Point d;
+  if (!CGAL::fit_in_double(a.x(), d.x) || !CGAL::fit_in_double(a.y(), d.y)) return std::nullopt;
+  return d;
+}
+
+// The mean of the vertices' points, when each is a point of doubles; else none (n = 0).
 inline MeanOf mean_of(std::initializer_list<VH> vs) {
   MeanOf m;
   for (VH v : vs) {
-    const auto& a = CGAL::approx(v->point());
-    double x, y;
-    if (!CGAL::fit_in_double(a.x(), x) || !CGAL::fit_in_double(a.y(), y)) return {};
-    m.x[static_cast<std::size_t>(m.n)] = x, m.y[static_cast<std::size_t>(m.n)] = y, ++m.n;
+    const std::optional<Point> d = doubles_of(v->point());
+    if (!d) return {};
+    m.x[static_cast<std::size_t>(m.n)] = d->x, m.y[static_cast<std::size_t>(m.n)] = d->y, ++m.n;
   }
   return m;
 }
 
 inline double abs_max(const CPoint& p) {
-  // A point of doubles (every vertex of the replay's mesh) is read from its interval,
-  // which is then the point: to_double(p.x()) would build a lazy node (an allocation)
-  // to give the same double.
-  const auto& a = CGAL::approx(p);
-  double x, y;
-  if (CGAL::fit_in_double(a.x(), x) && CGAL::fit_in_double(a.y(), y)) return std::max(std::abs(x), std::abs(y));
+  if (const std::optional<Point> d = doubles_of(p)) return std::max(std::abs(d->x), std::abs(d->y));
   return std::max(std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())));
 }
 

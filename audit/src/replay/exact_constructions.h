@@ -43,6 +43,14 @@ inline std::optional<CPoint> guarded_area_centroid(const CPoint& a, const CPoint
                 (w1 * (a.y() + b.y() + c.y()) + w2 * (a.y() + b.y() + d.y())) / w);
 }
 
+// Of two adjacent doubles, the one whose significand is even: round to nearest's
+// answer on a tie between them.
+inline double even_of(double a, double b) {
+  std::int64_t bits;
+  std::memcpy(&bits, &a, sizeof bits);
+  return (bits & 1) ? b : a;
+}
+
 // The double nearest to x (ties to even), from the exact value. Beyond the
 // largest double (a circumcenter far off a nearly flat triangle) round to
 // nearest gives an infinity from DBL_MAX plus half its ulp on (a tie goes to
@@ -65,9 +73,7 @@ inline double round_nearest(const FT& x) {
   CGAL::Comparison_result r = CGAL::compare(x, (FT(lo) + FT(hi)) / 2);
   if (r == CGAL::SMALLER) return lo;
   if (r == CGAL::LARGER) return hi;
-  std::int64_t bits;
-  std::memcpy(&bits, &lo, sizeof bits);
-  return (bits & 1) ? hi : lo;
+  return even_of(lo, hi);
 }
 
 }  // namespace lepp::audit::replay_detail

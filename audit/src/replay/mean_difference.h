@@ -12,13 +12,13 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <utility>
 
-#include "triangulation.h"  // reference/src: the exact engine's CGAL types
+#include "double_predicates.h"   // reference/src: sum_error (Knuth's TwoSum)
+#include "exact_constructions.h"  // even_of
+#include "triangulation.h"        // reference/src: the exact engine's CGAL types
 
 namespace lepp::audit::replay_detail {
 
@@ -31,13 +31,6 @@ struct MeanOf {
 };
 
 namespace mean_detail {
-
-// a + b = s + e exactly (Knuth's two-sum), for finite a, b and a finite s.
-inline void two_sum(double a, double b, double& s, double& e) {
-  s = a + b;
-  const double bb = s - a;
-  e = (a - (s - bb)) + (b - bb);
-}
 
 // An expansion: up to 8 non-overlapping doubles, smallest first; their exact sum.
 struct Expansion {
@@ -52,9 +45,8 @@ struct Expansion {
     }
     double q = b;
     for (std::size_t i = 0; i < size; ++i) {
-      double s, e;
-      two_sum(q, c[i], s, e);
-      c[i] = e;
+      const double s = q + c[i];
+      c[i] = sum_error(q, c[i], s);
       q = s;
     }
     c[size++] = q;
@@ -72,10 +64,6 @@ struct Expansion {
     return s;
   }
 };
-
-}  // namespace mean_detail
-
-namespace mean_detail {
 
 constexpr double kSmall = 0x1p-900, kLarge = 0x1p+1000;
 inline bool in_range(double t) { return t == 0 || (std::abs(t) > kSmall && std::abs(t) < kLarge); }
@@ -149,9 +137,7 @@ inline std::optional<double> mean_nearest(const double* m, int n) {
   const int side = twice.sign() * x->at;  // 1: nearer other, -1: nearer h, 0: a tie
   if (side < 0) return x->h;
   if (side > 0) return x->other;
-  std::int64_t bits;
-  std::memcpy(&bits, &x->h, sizeof bits);
-  return (bits & 1) ? x->other : x->h;  // the even one
+  return even_of(x->h, x->other);
 }
 
 // CGAL::to_double(FT(v) - q) for the coordinate q of a point that is the mean of the

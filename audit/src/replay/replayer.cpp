@@ -82,17 +82,21 @@ bool Replayer::allows_points() const {
   return points(rules.variant) || std::any_of(allowed_.begin(), allowed_.end(), points);
 }
 
-// max(|dx|, |dy|), each exact difference rounded as CGAL's to_double rounds it.
+std::pair<double, double> Replayer::differences(const Point& p, const Candidate& c) {
+  return {difference_to_double(p.x, c.point.x(), c.mean.x.data(), c.mean.n),
+          difference_to_double(p.y, c.point.y(), c.mean.y.data(), c.mean.n)};
+}
+
 double Replayer::distance(const Point& p, const Candidate& c) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
-  return std::max(std::abs(difference_to_double(p.x, c.point.x(), c.mean.x.data(), c.mean.n)),
-                  std::abs(difference_to_double(p.y, c.point.y(), c.mean.y.data(), c.mean.n)));
+  const auto [dx, dy] = differences(p, c);
+  return std::max(std::abs(dx), std::abs(dy));
 }
 
 double Replayer::euclidean(const Point& p, const Candidate& c) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
-  return std::hypot(difference_to_double(p.x, c.point.x(), c.mean.x.data(), c.mean.n),
-                    difference_to_double(p.y, c.point.y(), c.mean.y.data(), c.mean.n));
+  const auto [dx, dy] = differences(p, c);
+  return std::hypot(dx, dy);
 }
 
 // The domain triangles around p: those incident to a vertex of the

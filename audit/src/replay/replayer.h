@@ -121,6 +121,7 @@ class Replayer {
   // point is a mean of doubles (mean_difference.h).
   static double distance(const Point& p, const Candidate& c);
   static double euclidean(const Point& p, const Candidate& c);
+  static std::pair<double, double> differences(const Point& p, const Candidate& c);  // dx, dy of a finite p
 
   // replayer.cpp: the search around a point, and everywhere.
   std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false);
