@@ -35,6 +35,10 @@ struct VertexInfo {
 struct FaceInfo {
   bool in_domain = false;
   int region = 0;  // with region area bounds: 0 none, k + 1 the PSLG's region k
+  // The audit's replay keeps facts of the faces it walks (audit/src/replay/face_facts.h)
+  // and this is where a face's are (0: none; copied with the rest, checked there).
+  // The engine never reads it; the face stays 64 bytes.
+  std::uint32_t facts = 0;
 };
 
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;

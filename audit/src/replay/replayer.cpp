@@ -7,12 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <map>
 #include <string>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "distance_filter.h"
 #include "insert_unflipped.h"
@@ -63,10 +63,31 @@ Replayer::Replayer(const Pslg& p, const ReplayRules& r)
   tr.cocircular_ties = count_cocircular_edges(tr);
 }
 
-bool Replayer::maybe_bad(FH f) const {
+bool Replayer::judge_bad(FH f) const {
   if (is_skinny(f, sin2_) || (threshold_within_rounding_ && within_rounding_of_theta(f))) return true;
   const std::optional<FT>& b = bound(f->info().region);
   return b && is_too_big(f, *b);
+}
+
+bool Replayer::maybe_bad(FH f) const { return cache_face_facts ? bad_of(facts_.of(f), f) : judge_bad(f); }
+
+bool Replayer::longest(FH f, int i) const { return cache_face_facts ? longest_of(facts_.of(f), f, i) : is_longest(f, i); }
+
+bool Replayer::bad_of(FaceFacts::Facts& e, FH f) const {
+  if (!cache_face_facts) return judge_bad(f);
+  std::int8_t& bad = e.bad[threshold_within_rounding_];
+  if (bad == FaceFacts::kUnknown) bad = judge_bad(f);
+  return bad;
+}
+
+bool Replayer::longest_of(FaceFacts::Facts& e, FH f, int i) const {
+  if (!cache_face_facts) return is_longest(f, i);
+  std::int8_t& mask = e.longest[length_ties_within_rounding];
+  if (mask == FaceFacts::kUnknown) {
+    mask = 0;
+    for (int k = 0; k < 3; ++k) mask = static_cast<std::int8_t>(mask | is_longest(f, k) << k);
+  }
+  return mask >> i & 1;
 }
 
 bool Replayer::allows(Deviation d) const {
@@ -142,7 +163,8 @@ std::vector<Terminal> Replayer::terminals(const std::vector<FH>& faces) const {
   std::vector<Terminal> out;
   std::set<std::pair<int, int>> seen;  // terminal edge by vertex ids
   for (FH f : faces) {
-    for (int l : longest_edges(f)) {
+    for (int l = 0; l < 3; ++l) {
+      if (!longest(f, l)) continue;
       auto e = edge_key(id(f->vertex(Cdt::ccw(l))), id(f->vertex(Cdt::cw(l))));
       if (f->is_constrained(l)) {
         // A constrained edge is terminal on each domain side separately.
@@ -150,7 +172,7 @@ std::vector<Terminal> Replayer::terminals(const std::vector<FH>& faces) const {
         continue;
       }
       FH n = f->neighbor(l);
-      if (!in_domain(n) || !is_longest(n, n->index(f))) continue;
+      if (!in_domain(n) || !longest(n, n->index(f))) continue;
       if (!seen.insert(e).second) continue;
       out.push_back({f, n, l});
     }
@@ -159,32 +181,42 @@ std::vector<Terminal> Replayer::terminals(const std::vector<FH>& faces) const {
 }
 
 // Backwards from terminal triangle t (arrived at, terminal edge l; other
-// the triangle across l or null) along the Lepp tree to a bad triangle.
-// Returns the Lepp from the bad triangle to t, empty if none.
+// the triangle across l or null) along the Lepp tree to a bad triangle,
+// breadth first. Returns the Lepp from the bad triangle to t, empty if none.
 std::vector<FH> Replayer::bad_reaching(FH t, int l, FH other) const {
-  std::map<FH, FH> next;  // face -> the next face on its Lepp
-  std::deque<std::pair<FH, int>> todo;                           // face and its exit edge
-  next[t] = FH();
-  if (other != FH()) next[other] = FH();
-  todo.push_back({t, l});
-  while (!todo.empty()) {
-    auto [f, exit] = todo.front();
-    todo.pop_front();
-    if (maybe_bad(f)) {
+  struct Node {
+    FH f;
+    int exit;  // the edge towards t
+    int next;  // the node of the next face on its Lepp, -1 at t
+    FaceFacts::Facts* facts;
+  };
+  // Reached faces carry this walk's mark in their entries (face_facts.h, kept
+  // with or without cache_face_facts). One look-up a face: an entry stays where
+  // it is while the walk adds others.
+  const std::uint64_t walk = facts_.new_walk();
+  std::vector<Node> nodes{{t, l, -1, &facts_.of(t)}};
+  nodes[0].facts->walk = walk;
+  if (other != FH()) facts_.of(other).walk = walk;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const Node n = nodes[k];
+    if (bad_of(*n.facts, n.f)) {
       std::vector<FH> path;
-      for (FH g = f; g != FH(); g = next[g]) path.push_back(g);
+      for (int i = static_cast<int>(k); i >= 0; i = nodes[static_cast<std::size_t>(i)].next)
+        path.push_back(nodes[static_cast<std::size_t>(i)].f);
       return path;
     }
-    for (int k = 0; k < 3; ++k) {
-      if (k == exit || f->is_constrained(k)) continue;
-      FH g = f->neighbor(k);
-      if (!in_domain(g) || next.count(g)) continue;
-      int kk = g->index(f);
+    for (int i = 0; i < 3; ++i) {
+      if (i == n.exit || n.f->is_constrained(i)) continue;
+      FH g = n.f->neighbor(i);
+      if (!in_domain(g)) continue;
+      FaceFacts::Facts& e = facts_.of(g);
+      if (e.walk == walk) continue;
+      int gi = g->index(n.f);
       // g's Lepp (under some tie resolution) crosses into f: the shared
       // edge is a longest edge of g (and no longer than f's exit, always).
-      if (!is_longest(g, kk)) continue;
-      next[g] = f;
-      todo.push_back({g, kk});
+      if (!longest_of(e, g, gi)) continue;
+      e.walk = walk;
+      nodes.push_back({g, gi, static_cast<int>(k), &e});
     }
   }
   return {};
@@ -396,7 +428,8 @@ void Replayer::insert(const Point& p, const ReplayChoice& choice) {
 // Forward: every end of Lepp(t) under every tie resolution (capped).
 void Replayer::lepp_ends(FH f, int entry, std::vector<FH>& path, std::vector<std::pair<std::vector<FH>, Terminal>>& out,
                          std::size_t cap) const {
-  for (int l : longest_edges(f)) {
+  for (int l = 0; l < 3; ++l) {
+    if (!longest(f, l)) continue;
     if (out.size() >= cap) return;
     if (l == entry) continue;
     if (f->is_constrained(l)) {
@@ -406,7 +439,7 @@ void Replayer::lepp_ends(FH f, int entry, std::vector<FH>& path, std::vector<std
     FH n = f->neighbor(l);
     if (!in_domain(n) || std::find(path.begin(), path.end(), n) != path.end()) continue;
     int j = n->index(f);
-    if (is_longest(n, j)) {
+    if (longest(n, j)) {
       std::vector<FH> full = path;
       full.push_back(n);
       out.push_back({full, {f, n, l}});

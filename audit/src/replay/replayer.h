@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "catalogue_points.h"
+#include "face_facts.h"
 #include "paper_points.h"
 
 namespace lepp::audit::replay_detail {
@@ -62,6 +63,17 @@ class Replayer {
   // be the same (audit/tests/replay/far_terminals_test.cpp).
   static inline bool skip_far_terminals = true;
   mutable std::int64_t skipped_terminals_ = 0;  // configurations far_from skipped (tests)
+  // For tests: false computes every face's facts afresh (face_facts.h), as
+  // before the cache (the walks still mark the faces they reach there); the
+  // answers must be the same (audit/tests/replay/face_facts_test.cpp).
+  static inline bool cache_face_facts = true;
+
+  // A face's facts under the reading of the moment, from the cache (face_facts.h);
+  // public for the tests that hold them against their computation.
+  bool maybe_bad(FH f) const;  // bad, or within the angle tolerance of bad
+  bool longest(FH f, int i) const;  // edge i is a longest edge of f (ties included)
+  bool judge_bad(FH f) const;  // maybe_bad, computed
+  const FaceFacts& face_facts() const { return facts_; }
 
  private:
   FT sin2_;
@@ -94,9 +106,13 @@ class Replayer {
     return far;
   }
 
+  mutable FaceFacts facts_;
+  // maybe_bad and longest on f's entry e (filled on first use).
+  bool bad_of(FaceFacts::Facts& e, FH f) const;
+  bool longest_of(FaceFacts::Facts& e, FH f, int i) const;
+
   // Bad, or within the angle tolerance of bad.
   const std::optional<FT>& bound(int region) const { return bounds_[static_cast<std::size_t>(region)]; }
-  bool maybe_bad(FH f) const;
   bool maybe_bad(const CellTri& t) const;  // cocircular_search.cpp
   bool within_rounding_of_theta(FH f) const { return is_skinny(f, sin2_rounding_); }
 
