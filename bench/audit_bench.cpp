@@ -9,7 +9,8 @@
 //                       (inputs, checks, bookkeeping; no shrinking, nothing fails)
 //   BM_Diagnose         the catalogue's diagnosis of a point that is no choice on a
 //                       whole replayed mesh (every terminal configuration), with the
-//                       skip of far configurations (skip:1) and without (skip:0)
+//                       skip of far configurations (skip:1) and without (skip:0), the
+//                       faces' facts kept (facts:1) and computed at every look (facts:0)
 // Counters: vertices of the mesh checked; runs per iteration of the loop. Read CPU
 // time (the program under audit runs in other processes; wall time includes them).
 #include <benchmark/benchmark.h>
@@ -120,14 +121,19 @@ void BM_Diagnose(benchmark::State& state) {
     probes.push_back({p.x, y});
   }
   audit::replay_detail::Replayer::skip_far_terminals = state.range(1) != 0;
+  audit::replay_detail::Replayer::cache_face_facts = state.range(2) != 0;
   for (auto _ : state)
     for (const Point& p : probes) benchmark::DoNotOptimize(replayer.diagnose(p));
   audit::replay_detail::Replayer::skip_far_terminals = true;
+  audit::replay_detail::Replayer::cache_face_facts = true;
   state.counters["points"] = static_cast<double>(probes.size());
   state.counters["triangles"] = static_cast<double>(r.run.mesh.triangles.size());
   state.SetLabel(r.name);
 }
-BENCHMARK(BM_Diagnose)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->ArgNames({"problem", "skip"})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Diagnose)
+    ->ArgsProduct({{0, 1, 2, 3}, {0, 1}, {0, 1}})
+    ->ArgNames({"problem", "skip", "facts"})
+    ->Unit(benchmark::kMillisecond);
 
 // Generated inputs (seed 1, sizes 0 to 60): the loop's time per run when the engine costs nothing.
 std::string fmt_key(const Pslg& p, double theta) {

@@ -8,6 +8,8 @@
 // FaceInfo was copied from another's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -161,6 +163,38 @@ TEST(FaceFacts, ACopyStartsEmpty) {
   assigned.of(f).bad[0] = 0;
   assigned = facts;
   EXPECT_EQ(assigned.of(f).bad[0], FaceFacts::kUnknown);
+}
+
+// A terminal pair across an unconstrained edge, one side bad at 35 degrees (base
+// angles 32), the other good (59): the walk from either side never crosses the
+// terminal edge, so the Lepp is the bad triangle, then the other, each once. Both
+// mirror images: one of them starts the walk from the good side.
+TEST(FaceFacts, TheWalkStaysOnItsSideOfTheTerminalEdge) {
+  for (const double sign : {1.0, -1.0}) {
+    SCOPED_TRACE(sign);
+    const double h1 = std::tan(59 * M_PI / 180), h2 = std::tan(32 * M_PI / 180);
+    Pslg raw;
+    raw.vertices = {{0, 0}, {1, -sign * h2}, {2, 0}, {1, sign * h1}};
+    raw.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+    std::vector<std::string> warnings;
+    const Pslg pslg = validate(raw, warnings);
+    ReplayRules rules;
+    rules.min_angle_deg = 35;
+    Replayer replayer(pslg, rules);
+    std::size_t domain = 0;
+    for (FH f : replayer.tr.cdt.finite_face_handles()) domain += in_domain(replayer.tr, f);
+    ASSERT_EQ(domain, 2u);
+    // The paper's choice (Select Point splits a constrained edge of the flat side).
+    std::size_t total = 0;
+    const std::vector<ReplayChoice> all = replayer.all_choices({1, 0}, 1, total);
+    ASSERT_EQ(all.size(), 1u);
+    ReplayChoice choice;
+    ASSERT_TRUE(replayer.match(all[0].point, choice));
+    ASSERT_EQ(choice.lepp.size(), 2u);
+    EXPECT_NE(choice.lepp[0], choice.lepp[1]);
+    EXPECT_EQ(choice.bad, choice.lepp[0]);
+    EXPECT_NE(std::find(choice.bad.begin(), choice.bad.end(), 1), choice.bad.end()) << "the bad triangle is the flat one";
+  }
 }
 
 }  // namespace
