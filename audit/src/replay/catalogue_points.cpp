@@ -15,7 +15,9 @@ std::vector<Candidate> catalogue_points(const ReplayRules& rules, const T& t1, c
   VH a = vtx(t1, Cdt::ccw(l)), b = vtx(t1, Cdt::cw(l)), c = vtx(t1, l);
   auto tri_centroid = [&](VH x, VH y, VH z, Rule rule) {
     double scale = std::max({abs_max(x->point()), abs_max(y->point()), abs_max(z->point())});
-    return Candidate{rule, triangle_centroid(x->point(), y->point(), z->point()), scale, {}, {}};
+    Candidate out{rule, triangle_centroid(x->point(), y->point(), z->point()), scale, {}, {}};
+    out.mean = mean_of({x, y, z});
+    return out;
   };
   // The midpoints of a terminal triangle's two other edges.
   auto other_edges = [&](const T& f, int term) {

@@ -31,7 +31,7 @@ struct Candidate {
   double scale = 0;        // largest |coordinate| of the vertices defining the point
   VH split_a, split_b;     // the constrained edge it splits, or null
   Deviation deviation = Deviation::Unknown;  // Unknown: the paper's choice; else the catalogue rule that made it
-  MeanOf mean;             // point is the mean of these doubles (a midpoint, the vertex centroid), if n > 0
+  MeanOf mean;             // point is the mean of these doubles (a midpoint, a centroid of vertices), if n > 0
 };
 
 // The point as doubles when it is one: its interval approximation a point (so are the

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Private to the conformance replay: the difference between a program's coordinate
-// and a choice's that is the mean of two or four doubles (a midpoint, the quad's
-// vertex centroid), rounded to a double exactly as CGAL's to_double rounds the lazy
+// and a choice's that is the mean of two, three or four doubles (a midpoint, a
+// triangle's centroid, the quad's vertex centroid), rounded to a double exactly as CGAL's to_double rounds the lazy
 // difference, without GMP. Where to_double's interval is too wide it evaluates the
 // difference exactly (a rational, then MPFR's tightest interval, then its centre):
 // for a program's point within a few ulps of its choice, every step of a
@@ -24,7 +24,7 @@ namespace lepp::audit::replay_detail {
 
 using namespace lepp::reference::detail;
 
-// A point that is the mean of n doubles per coordinate (n = 2 or 4; 0: not known to be).
+// A point that is the mean of n doubles per coordinate (n = 2, 3 or 4; 0: not known to be).
 struct MeanOf {
   std::array<double, 4> x{}, y{};
   int n = 0;
@@ -67,8 +67,18 @@ struct Expansion {
 
 constexpr double kSmall = 0x1p-900, kLarge = 0x1p+1000;
 inline bool in_range(double t) { return t == 0 || (std::abs(t) > kSmall && std::abs(t) < kLarge); }
+inline bool known_count(int n) { return n == 2 || n == 3 || n == 4; }
 
-// The value e / n of an exact sum e (n = 2 or 4) placed among the doubles: h and its
+// sign * n * x added to e exactly (n = 2, 3 or 4, |x| within range): a power of two
+// scales exactly; 3 x is its rounded product and that product's error (fma: exact,
+// the product neither overflows nor underflows within range).
+inline void add_multiple(Expansion& e, int n, double x, double sign) {
+  const double p = n * x;
+  e.add(sign * p);
+  if (n == 3) e.add(sign * std::fma(3.0, x, -p));
+}
+
+// The value e / n of an exact sum e (n = 2, 3 or 4) placed among the doubles: h and its
 // neighbour `other` on the value's side, the value strictly between them, and `at` the
 // side (1: above h, -1: below; 0: the value is h and `other` is h). None when it cannot
 // be decided here (values out of range).
@@ -83,7 +93,7 @@ inline std::optional<Placed> place(const Expansion& e, int n) {
   if (!in_range(h) || h == 0) return std::nullopt;
   auto compare = [&](double x) {  // the sign of e - n x, exactly
     Expansion r = e;
-    r.add(-(n * x));
+    add_multiple(r, n, x, -1);
     return r.ok ? r.sign() : 2;
   };
   const int at = compare(h);
@@ -104,13 +114,13 @@ inline bool all_in_range(const double* m, int n) {
 
 // The tightest interval of doubles around v - (m_1 + ... + m_n) / n, as CGAL's
 // To_interval gives it for a rational (both ends the value when it is a double; else
-// the two doubles around it). None when it cannot be made here: n not 2 or 4, a value
+// the two doubles around it). None when it cannot be made here: n not 2, 3 or 4, a value
 // not finite, or one near the subnormal range or the largest doubles.
 inline std::optional<std::pair<double, double>> mean_difference_interval(double v, const double* m, int n) {
   using namespace mean_detail;
-  if ((n != 2 && n != 4) || !in_range(v) || !all_in_range(m, n)) return std::nullopt;
-  Expansion e;  // n v - sum m, exactly: n * v is exact (a power of two, no overflow below kLarge)
-  e.add(n * v);
+  if (!known_count(n) || !in_range(v) || !all_in_range(m, n)) return std::nullopt;
+  Expansion e;  // n v - sum m, exactly
+  add_multiple(e, n, v, 1);
   for (int i = 0; i < n; ++i) e.add(-m[i]);
   const std::optional<Placed> x = place(e, n);
   if (!x) return std::nullopt;
@@ -122,7 +132,7 @@ inline std::optional<std::pair<double, double>> mean_difference_interval(double 
 // exact mean); none when it cannot be decided here (as above).
 inline std::optional<double> mean_nearest(const double* m, int n) {
   using namespace mean_detail;
-  if ((n != 2 && n != 4) || !all_in_range(m, n)) return std::nullopt;
+  if (!known_count(n) || !all_in_range(m, n)) return std::nullopt;
   Expansion e;
   for (int i = 0; i < n; ++i) e.add(m[i]);
   const std::optional<Placed> x = place(e, n);
@@ -131,8 +141,8 @@ inline std::optional<double> mean_nearest(const double* m, int n) {
   // Which side of the midpoint of h and other: the sign of 2 e - n (h + other), exactly.
   Expansion twice;
   for (std::size_t i = 0; i < e.size; ++i) twice.add(2 * e.c[i]);
-  twice.add(-(n * x->h));
-  twice.add(-(n * x->other));
+  add_multiple(twice, n, x->h, -1);
+  add_multiple(twice, n, x->other, -1);
   if (!twice.ok) return std::nullopt;
   const int side = twice.sign() * x->at;  // 1: nearer other, -1: nearer h, 0: a tie
   if (side < 0) return x->h;

@@ -114,6 +114,16 @@ double Replayer::distance(const Point& p, const Candidate& c) {
   return std::max(std::abs(dx), std::abs(dy));
 }
 
+void Replayer::set_distances(const Point& p, const Candidate& c, ReplayChoice& r) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+    r.distance = r.euclidean = std::numeric_limits<double>::infinity();
+    return;
+  }
+  const auto [dx, dy] = differences(p, c);  // once for both
+  r.distance = std::max(std::abs(dx), std::abs(dy));
+  r.euclidean = std::hypot(dx, dy);
+}
+
 double Replayer::euclidean(const Point& p, const Candidate& c) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
   const auto [dx, dy] = differences(p, c);
@@ -233,8 +243,7 @@ ReplayChoice Replayer::describe(const Terminal& t, const Candidate& c, const Poi
   if (t.t2 != FH()) r.t2 = ccw_ids(t.t2);
   r.rule = c.rule;
   r.point = rounded_point(c);
-  r.distance = distance(p, c);
-  r.euclidean = euclidean(p, c);
+  set_distances(p, c, r);
   r.tolerance = tolerance(c.scale);
   if (c.split_a != VH()) r.split_edge = {id(c.split_a), id(c.split_b)};
   r.deviation = c.deviation;

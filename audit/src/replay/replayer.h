@@ -138,6 +138,7 @@ class Replayer {
   static double distance(const Point& p, const Candidate& c);
   static double euclidean(const Point& p, const Candidate& c);
   static std::pair<double, double> differences(const Point& p, const Candidate& c);  // dx, dy of a finite p
+  static void set_distances(const Point& p, const Candidate& c, ReplayChoice& r);  // distance and euclidean, at once
 
   // replayer.cpp: the search around a point, and everywhere.
   std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false);
