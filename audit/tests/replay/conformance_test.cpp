@@ -313,6 +313,28 @@ TEST(Conformance, PointToleranceBoundary) {
   EXPECT_GT(bad.failure->nearest_distance, tol);
 }
 
+// A point moved off its choice by (3, 4) units of 1e-6 of its size: the report gives the
+// choice's distance in the max norm (4 units, what the tolerance is held to) and the
+// Euclidean one (5 units, what finding.md prints), each from the same two differences.
+TEST(Conformance, ReportsBothDistancesToTheNearestChoice) {
+  Pslg p = paper("A");
+  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
+  std::vector<Point> trace = points_of(r);
+  ASSERT_GT(trace.size(), 20u);
+  const std::size_t k = trace.size() / 2;
+  const double unit = 1e-6 * std::max(std::abs(trace[k].x), std::abs(trace[k].y));
+  std::vector<Point> moved = trace;
+  moved[k].x += 3 * unit;
+  moved[k].y -= 4 * unit;
+  ConformanceReport report = check_conformance(p, moved, options(Method::Centroid, 30));
+  ASSERT_FALSE(report.conforms);
+  EXPECT_EQ(report.failure->step, k);
+  ASSERT_FALSE(report.failure->candidates.empty());
+  const auto& nearest = report.failure->candidates.front();  // the step's own choice
+  EXPECT_NEAR(nearest.distance, 4 * unit, 1e-6 * unit);
+  EXPECT_NEAR(nearest.euclidean, 5 * unit, 1e-6 * unit);
+}
+
 TEST(Conformance, RejectsAPointWhenNoTriangleIsBad) {
   Pslg p = polygon({{0, 0}, {1, 0}, {0.5, 0.8}});  // a good triangle
   ConformanceReport r = check_conformance(p, {{0.5, 0.3}}, options(Method::Centroid, 30));
