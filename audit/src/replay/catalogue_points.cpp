@@ -6,7 +6,8 @@
 namespace lepp::audit::replay_detail {
 
 template <class T>
-std::vector<Candidate> catalogue_points(const ReplayRules& rules, const T& t1, const T& t2, bool has_t2, int l) {
+std::vector<Candidate> catalogue_points(const ReplayRules& rules, const T& t1, const T& t2, bool has_t2, int l,
+                                        const Point* near) {
   std::vector<Candidate> out;
   auto add = [&](Deviation d, Candidate c) {
     c.deviation = d;
@@ -36,7 +37,9 @@ std::vector<Candidate> catalogue_points(const ReplayRules& rules, const T& t1, c
   const std::optional<Candidate> g = quad_centroid(Rule::QuadCentroid, t1, t2, l, reading);
   // The other reading's centroid, only where it is another point (on a
   // parallelogram both readings are the same point: no deviation of reading).
-  const std::optional<Candidate> g_other = quad_centroid(Rule::QuadCentroid, t1, t2, l, other_reading);
+  const bool other_far = near && other_reading == CentroidReading::Area && area_centroid_beyond(rules, *near, a, b, c, d);
+  const std::optional<Candidate> g_other =
+      other_far ? std::nullopt : quad_centroid(Rule::QuadCentroid, t1, t2, l, other_reading);
   if (g_other && (!g || g_other->point != g->point))
     add(reading == CentroidReading::Vertex ? Deviation::AreaCentroid : Deviation::VertexCentroid, *g_other);
   add(Deviation::TriangleCentroid, tri_centroid(a, b, c, Rule::QuadCentroid));
@@ -66,8 +69,8 @@ std::vector<Candidate> catalogue_points(const ReplayRules& rules, const T& t1, c
   return out;
 }
 
-template std::vector<Candidate> catalogue_points(const ReplayRules&, const FH&, const FH&, bool, int);
-template std::vector<Candidate> catalogue_points(const ReplayRules&, const CellTri&, const CellTri&, bool, int);
+template std::vector<Candidate> catalogue_points(const ReplayRules&, const FH&, const FH&, bool, int, const Point*);
+template std::vector<Candidate> catalogue_points(const ReplayRules&, const CellTri&, const CellTri&, bool, int, const Point*);
 
 // The bad triangle's circumcenter and off-center (Ungor: on the bisector of
 // its shortest edge pq, where the triangle pq-point has the angle theta at

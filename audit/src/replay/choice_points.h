@@ -118,6 +118,40 @@ std::optional<Candidate> quad_centroid(Rule rule, const T& t1, const T& t2, int 
   return Candidate{rule, *g, scale, {}, {}};
 }
 
+// True only when p is surely farther (in the max norm) than its tolerance from the
+// quad's area centroid, as quad_centroid would make it, decided from the vertices'
+// doubles in interval arithmetic before its lazy-exact construction (which the search
+// around a point would build only to drop). Conservative on every rounding: the scale
+// from a lower bound of |ab| (quad_centroid reads it through to_double), and the
+// tolerance raised by 2^-10 of itself (the replay's distance reads each difference
+// through to_double, up to 1e-5 of it low). False says nothing.
+inline bool area_centroid_beyond(const ReplayRules& rules, const Point& p, VH a, VH b, VH c, VH d) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
+  const std::optional<Point> A = doubles_of(a->point()), B = doubles_of(b->point()), C = doubles_of(c->point()),
+                             D = doubles_of(d->point());
+  if (!A || !B || !C || !D) return false;
+  using I = CGAL::Interval_nt<true>;
+  const I ax(A->x), ay(A->y), bx(B->x), by(B->y), cx(C->x), cy(C->y), dx(D->x), dy(D->y);
+  const I w1 = CGAL::abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
+  const I w2 = CGAL::abs((bx - ax) * (dy - ay) - (by - ay) * (dx - ax));
+  const I w = I(3) * (w1 + w2);
+  if (!(w.inf() > 0)) return false;
+  const I gx = (w1 * (ax + bx + cx) + w2 * (ax + bx + dx)) / w, gy = (w1 * (ay + by + cy) + w2 * (ay + by + dy)) / w;
+  const I ab2 = CGAL::square(bx - ax) + CGAL::square(by - ay);
+  const double ab_lo = std::sqrt(ab2.inf()) * (1 - 0x1p-10);
+  if (!(ab_lo > 0)) return false;
+  const double m = std::max({std::abs(A->x), std::abs(A->y), std::abs(B->x), std::abs(B->y), std::abs(C->x), std::abs(C->y),
+                             std::abs(D->x), std::abs(D->y)});
+  const double scale_hi = m * std::max(1.0, m / ab_lo) * (1 + 0x1p-20);
+  const double tol_hi = point_tolerance(rules, scale_hi) * (1 + 0x1p-10);
+  if (!std::isfinite(tol_hi)) return false;
+  auto beyond = [tol_hi](double v, const I& g) {
+    const I diff = I(v) - g;
+    return diff.inf() > tol_hi || diff.sup() < -tol_hi;
+  };
+  return beyond(p.x, gx) || beyond(p.y, gy);
+}
+
 // What bounds every candidate at a terminal configuration before any is built:
 // the box of its vertices (every candidate is a midpoint or a centroid of them,
 // of either reading) and upper bounds of the candidates' scales (quad_centroid's):

@@ -284,7 +284,7 @@ bool Replayer::match_here(const Point& p, ReplayChoice& out, bool wide) {
   std::vector<FH> faces = faces_near(p, at_vertex, wide);
   if (at_vertex) return false;
   for (const Terminal& t : terminals(faces)) {
-    std::vector<Candidate> cands = candidates(t);
+    std::vector<Candidate> cands = candidates(t, &p);
     for (const Candidate& c : cands) {
       const double tol = tolerance(c.scale);
       if (surely_farther(p, c.point, tol)) continue;

@@ -59,8 +59,9 @@ class Replayer {
   std::int64_t searched_everywhere_ = 0;
   bool search_exhausted_ = false;  // the last match's search of the cells ran out of its budget
   // For tests: false builds every configuration's candidates in the whole-mesh
-  // searches (match_everywhere, diagnose), as before far_from; the answers must
-  // be the same (audit/tests/replay/far_terminals_test.cpp).
+  // searches (match_everywhere, diagnose), as before far_from, and every catalogue
+  // point in the search around a point (area_centroid_beyond); the answers must be
+  // the same (audit/tests/replay/far_terminals_test.cpp).
   static inline bool skip_far_terminals = true;
   mutable std::int64_t skipped_terminals_ = 0;  // configurations far_from skipped (tests)
   // For tests: false computes every face's facts afresh (face_facts.h), as
@@ -120,16 +121,18 @@ class Replayer {
   bool allows_points() const;
   // Every point the paper's rule allows for this terminal configuration (and,
   // under ReplayRules::variant and allow(), the variants' points there).
+  // near: the point searched around (catalogue_points may leave out what is surely
+  // too far from it; skip_far_terminals false leaves out nothing).
   template <class T>
-  std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l) const {
+  std::vector<Candidate> candidates(const T& t1, const T& t2, bool has_t2, int l, const Point* near = nullptr) const {
     std::vector<Candidate> out = paper_candidates(rules, t1, t2, has_t2, l);
     if (allows_points())
-      for (Candidate& c : catalogue_points(rules, t1, t2, has_t2, l))
+      for (Candidate& c : catalogue_points(rules, t1, t2, has_t2, l, skip_far_terminals ? near : nullptr))
         if (allows(c.deviation)) out.push_back(c);
     return out;
   }
-  std::vector<Candidate> candidates(const Terminal& t) const {
-    return t.t2 == FH() ? candidates(t.t1, t.t1, false, t.l) : candidates(t.t1, t.t2, true, t.l);
+  std::vector<Candidate> candidates(const Terminal& t, const Point* near = nullptr) const {
+    return t.t2 == FH() ? candidates(t.t1, t.t1, false, t.l, near) : candidates(t.t1, t.t2, true, t.l, near);
   }
 
   // From p to a candidate's point: max(|dx|, |dy|), and the Euclidean distance for

@@ -65,6 +65,58 @@ TEST(FarTerminals, TheBoundHoldsForEveryCandidate) {
   }
 }
 
+// The search around a point leaves out the other reading's area centroid where
+// area_centroid_beyond says it is surely beyond its tolerance: at every terminal pair of
+// the meshes, at points a few ulps to many tolerances off the exact area centroid, the
+// replay's own distance to it (each difference through to_double) is then beyond the
+// tolerance too; and where the point is within the tolerance it is never left out.
+TEST(FarTerminals, TheAreaCentroidIsLeftOutOnlyBeyondItsTolerance) {
+  std::size_t beyond = 0, kept = 0;
+  for (const Case& c : cases()) {
+    if (c.area) continue;  // the vertex reading: the catalogue's other reading is the area's
+    const RefineResult run = traced_run(c);
+    Replayer replayer(c.pslg, rules_of(c));
+    for (std::size_t i = 0; i <= run.trace.size(); i += 5) {
+      for (FH f : replayer.tr.cdt.finite_face_handles()) {
+        if (!in_domain(replayer.tr, f)) continue;
+        for (int l = 0; l < 3; ++l) {
+          FH n = f->neighbor(l);
+          if (f->is_constrained(l) || replayer.tr.cdt.is_infinite(n) || !in_domain(replayer.tr, n)) continue;
+          const std::optional<Candidate> g = quad_centroid(Rule::QuadCentroid, f, n, l, CentroidReading::Area);
+          if (!g) continue;
+          const double tol = point_tolerance(replayer.rules, g->scale);
+          const Point at = rounded_point(*g);
+          std::vector<Point> asked = {at, {ulps(at.x, 2), at.y}, {at.x, ulps(at.y, -7)}};
+          for (const double r : {0.5, 0.999, 1.001, 1.5, 4.0, 1e3}) {
+            asked.push_back({at.x + r * tol, at.y});
+            asked.push_back({at.x, at.y - r * tol});
+          }
+          VH a = f->vertex(Cdt::ccw(l)), b = f->vertex(Cdt::cw(l)), cv = f->vertex(l), d = n->vertex(n->index(f));
+          for (const Point& p : asked) {
+            const double dist = std::max(std::abs(CGAL::to_double(FT(p.x) - g->point.x())),
+                                         std::abs(CGAL::to_double(FT(p.y) - g->point.y())));
+            if (area_centroid_beyond(replayer.rules, p, a, b, cv, d)) {
+              ASSERT_GT(dist, tol) << c.name << ": (" << p.x << ", " << p.y << ")";
+              ++beyond;
+            } else {
+              ++kept;
+            }
+          }
+        }
+      }
+      if (i == run.trace.size()) break;
+      for (std::size_t j = i; j < i + 5 && j < run.trace.size(); ++j) {
+        ReplayChoice choice;
+        ASSERT_TRUE(replayer.match(run.trace[j].point, choice)) << c.name;
+        replayer.insert(run.trace[j].point, choice);
+      }
+    }
+  }
+  // Both answers are given (else the filter is never taken, or takes everything).
+  EXPECT_GT(beyond, 1000u);
+  EXPECT_GT(kept, 1000u);
+}
+
 // The searches answer the same with the skip and without: two replays of the same
 // trace, one skipping far configurations, asked the same points at every step.
 TEST(FarTerminals, TheSearchesAnswerTheSameWithoutTheSkip) {
@@ -79,6 +131,9 @@ TEST(FarTerminals, TheSearchesAnswerTheSameWithoutTheSkip) {
         replay_both(c, run, skipping, building, [](bool first) { Replayer::skip_far_terminals = first; });
     EXPECT_EQ(replayed, run.trace.size()) << c.name << ": the trace is replayed to its end";
     EXPECT_EQ(building.skipped_terminals_, 0) << c.name;
+    // The same searches found them: a point the search around it missed with the skip
+    // would still be found by the last search, over the whole mesh.
+    EXPECT_EQ(skipping.searched_everywhere_, building.searched_everywhere_) << c.name;
     skipped += skipping.skipped_terminals_;
   }
   // The skip is taken (else this test would compare a search with itself).
