@@ -126,7 +126,6 @@ std::optional<Candidate> quad_centroid(Rule rule, const T& t1, const T& t2, int 
 // tolerance raised by 2^-10 of itself (the replay's distance reads each difference
 // through to_double, up to 1e-5 of it low). False says nothing.
 inline bool area_centroid_beyond(const ReplayRules& rules, const Point& p, VH a, VH b, VH c, VH d) {
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
   const std::optional<Point> A = doubles_of(a->point()), B = doubles_of(b->point()), C = doubles_of(c->point()),
                              D = doubles_of(d->point());
   if (!A || !B || !C || !D) return false;
@@ -144,12 +143,7 @@ inline bool area_centroid_beyond(const ReplayRules& rules, const Point& p, VH a,
                              std::abs(D->x), std::abs(D->y)});
   const double scale_hi = m * std::max(1.0, m / ab_lo) * (1 + 0x1p-20);
   const double tol_hi = point_tolerance(rules, scale_hi) * (1 + 0x1p-10);
-  if (!std::isfinite(tol_hi)) return false;
-  auto beyond = [tol_hi](double v, const I& g) {
-    const I diff = I(v) - g;
-    return diff.inf() > tol_hi || diff.sup() < -tol_hi;
-  };
-  return beyond(p.x, gx) || beyond(p.y, gy);
+  return std::isfinite(tol_hi) && surely_farther(p, gx, gy, tol_hi);
 }
 
 // What bounds every candidate at a terminal configuration before any is built:

@@ -105,8 +105,7 @@ DeviationMatch Replayer::diagnose(const Point& p) const {
       r.bad = ccw_ids(lepp.front());
       r.lepp = {r.bad};
       r.point = rounded_point(c);
-      r.distance = d;
-      r.euclidean = euclidean(p, c);
+      set_distances(p, c, r);
       best.where = r;
     }
     best.where.tolerance = tol;

@@ -21,15 +21,21 @@ using namespace lepp::reference::detail;
 // difference rounded to a double, the larger) exceeds tol too, rounding being monotone
 // and tol a double. False says nothing: the exact distance decides. A p that is not
 // finite is left to it as well.
-inline bool surely_farther(const Point& p, const CPoint& q, double tol) {
+// The same from intervals enclosing the point's coordinates.
+inline bool surely_farther(const Point& p, const CGAL::Interval_nt<true>& x, const CGAL::Interval_nt<true>& y, double tol) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
   using I = CGAL::Interval_nt<true>;
-  const auto& a = CGAL::approx(q);
-  auto beyond = [tol](double v, const auto& x) {
-    const I d = I(v) - I(x.inf(), x.sup());
+  auto beyond = [tol](double v, const I& q) {
+    const I d = I(v) - q;
     return d.inf() > tol || d.sup() < -tol;
   };
-  return beyond(p.x, a.x()) || beyond(p.y, a.y());
+  return beyond(p.x, x) || beyond(p.y, y);
+}
+
+inline bool surely_farther(const Point& p, const CPoint& q, double tol) {
+  using I = CGAL::Interval_nt<true>;
+  const auto& a = CGAL::approx(q);
+  return surely_farther(p, I(a.x().inf(), a.x().sup()), I(a.y().inf(), a.y().sup()), tol);
 }
 
 // The box around some exact points, from their interval approximations: every point

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Private to the conformance replay: the difference between a program's coordinate
 // and a choice's that is the mean of two, three or four doubles (a midpoint, a
-// triangle's centroid, the quad's vertex centroid), rounded to a double exactly as CGAL's to_double rounds the lazy
-// difference, without GMP. Where to_double's interval is too wide it evaluates the
+// triangle's centroid, the quad's vertex centroid), rounded to a double exactly as
+// CGAL's to_double rounds the lazy difference, without GMP. Where to_double's
+// interval is too wide it evaluates the
 // difference exactly (a rational, then MPFR's tightest interval, then its centre):
 // for a program's point within a few ulps of its choice, every step of a
 // conforming trace, and a third of a long replay's time. Here the exact value is

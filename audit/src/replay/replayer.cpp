@@ -69,9 +69,9 @@ bool Replayer::judge_bad(FH f) const {
   return b && is_too_big(f, *b);
 }
 
-bool Replayer::maybe_bad(FH f) const { return cache_face_facts ? bad_of(facts_.of(f), f) : judge_bad(f); }
+bool Replayer::maybe_bad(FH f) const { return bad_of(facts_.of(f), f); }
 
-bool Replayer::longest(FH f, int i) const { return cache_face_facts ? longest_of(facts_.of(f), f, i) : is_longest(f, i); }
+bool Replayer::longest(FH f, int i) const { return longest_of(facts_.of(f), f, i); }
 
 bool Replayer::bad_of(FaceFacts::Facts& e, FH f) const {
   if (!cache_face_facts) return judge_bad(f);
@@ -122,12 +122,6 @@ void Replayer::set_distances(const Point& p, const Candidate& c, ReplayChoice& r
   const auto [dx, dy] = differences(p, c);  // once for both
   r.distance = std::max(std::abs(dx), std::abs(dy));
   r.euclidean = std::hypot(dx, dy);
-}
-
-double Replayer::euclidean(const Point& p, const Candidate& c) {
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::numeric_limits<double>::infinity();
-  const auto [dx, dy] = differences(p, c);
-  return std::hypot(dx, dy);
 }
 
 // The domain triangles around p: those incident to a vertex of the

@@ -135,13 +135,13 @@ class Replayer {
     return t.t2 == FH() ? candidates(t.t1, t.t1, false, t.l, near) : candidates(t.t1, t.t2, true, t.l, near);
   }
 
-  // From p to a candidate's point: max(|dx|, |dy|), and the Euclidean distance for
-  // reports; each difference as CGAL's to_double rounds it, without GMP where the
-  // point is a mean of doubles (mean_difference.h).
+  // From p to a candidate's point: max(|dx|, |dy|) (distance), and for a report both
+  // it and the Euclidean distance from the same two differences (set_distances); each
+  // difference as CGAL's to_double rounds it, without GMP where the point is a mean of
+  // doubles (mean_difference.h).
   static double distance(const Point& p, const Candidate& c);
-  static double euclidean(const Point& p, const Candidate& c);
   static std::pair<double, double> differences(const Point& p, const Candidate& c);  // dx, dy of a finite p
-  static void set_distances(const Point& p, const Candidate& c, ReplayChoice& r);  // distance and euclidean, at once
+  static void set_distances(const Point& p, const Candidate& c, ReplayChoice& r);
 
   // replayer.cpp: the search around a point, and everywhere.
   std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false);
