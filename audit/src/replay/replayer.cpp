@@ -140,26 +140,34 @@ std::vector<FH> Replayer::faces_near(const Point& p, bool& at_vertex, bool wide)
   std::vector<VH> around;
   for (int i = 0; i < 3; ++i) around.push_back(f->vertex(i));
   if (lt == Cdt::EDGE) around.push_back(f->neighbor(li)->vertex(f->neighbor(li)->index(f)));
-  for (VH v : around) {
-    if (tr.cdt.is_infinite(v)) continue;
-    Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
-    do {
-      if (in_domain(fc) && seen.insert(fc).second) out.push_back(fc);
-    } while (++fc != done);
-  }
+  for (VH v : around)
+    if (!tr.cdt.is_infinite(v)) domain_faces_around(v, out, seen);
   if (!wide) return out;
   std::set<VH> ring(around.begin(), around.end());
   const std::size_t inner = out.size();
   for (std::size_t k = 0; k < inner; ++k)
     for (int i = 0; i < 3; ++i) {
       VH v = out[k]->vertex(i);
-      if (!ring.insert(v).second) continue;
-      Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
-      do {
-        if (in_domain(fc) && seen.insert(fc).second) out.push_back(fc);
-      } while (++fc != done);
+      if (ring.insert(v).second) domain_faces_around(v, out, seen);
     }
   return out;
+}
+
+// Every domain face around v, in the order of CGAL's circulator, each not yet
+// seen added to out. None around a corner of the far bounding box
+// (cdt_build.cpp): its faces are flooded out of the domain when it is built,
+// and a later face takes its flags from the face it splits. A corner's degree
+// grows with the boundary's Steiner points (each outside triangle between a
+// side of the domain and the box fans from a corner), and a point located in
+// one of those triangles (on a boundary edge, or rounded just past it) had
+// the search turn the whole fan at every step.
+void Replayer::domain_faces_around(VH v, std::vector<FH>& out, std::set<FH>& seen) {
+  if (skip_box_corners && id(v) < 0) return;
+  Cdt::Face_circulator fc = tr.cdt.incident_faces(v), done = fc;
+  do {
+    ++star_faces_walked_;
+    if (in_domain(fc) && seen.insert(fc).second) out.push_back(fc);
+  } while (++fc != done);
 }
 
 // Terminal configurations with a terminal triangle in faces, each once.

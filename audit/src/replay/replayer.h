@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,11 @@ class Replayer {
   // before the cache (the walks still mark the faces they reach there); the
   // answers must be the same (audit/tests/replay/face_facts_test.cpp).
   static inline bool cache_face_facts = true;
+  // For tests: false turns the faces around the far bounding box's corners in
+  // faces_near too, as before domain_faces_around left them out; the faces and
+  // the answers must be the same (audit/tests/replay/box_corners_test.cpp).
+  static inline bool skip_box_corners = true;
+  std::int64_t star_faces_walked_ = 0;  // faces faces_near turned around its vertices (tests)
 
   // A face's facts under the reading of the moment, from the cache (face_facts.h);
   // public for the tests that hold them against their computation.
@@ -75,6 +81,9 @@ class Replayer {
   bool longest(FH f, int i) const;  // edge i is a longest edge of f (ties included)
   bool judge_bad(FH f) const;  // maybe_bad, computed
   const FaceFacts& face_facts() const { return facts_; }
+  // The search's domain faces around p (replayer.cpp); public for the tests that
+  // hold them against the whole turns of every vertex (box_corners_test.cpp).
+  std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false);
 
  private:
   FT sin2_;
@@ -144,7 +153,7 @@ class Replayer {
   static void set_distances(const Point& p, const Candidate& c, ReplayChoice& r);
 
   // replayer.cpp: the search around a point, and everywhere.
-  std::vector<FH> faces_near(const Point& p, bool& at_vertex, bool wide = false);
+  void domain_faces_around(VH v, std::vector<FH>& out, std::set<FH>& seen);
   std::vector<Terminal> terminals(const std::vector<FH>& faces) const;
   std::vector<FH> bad_reaching(FH t, int l, FH other) const;
   ReplayChoice describe(const Terminal& t, const Candidate& c, const Point& p, const std::vector<FH>& path) const;
