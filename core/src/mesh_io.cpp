@@ -156,7 +156,7 @@ std::optional<Mesh> read_mesh_at_once(const std::string& prefix) {
   DeferredIds poly_ids;
   bool poly_ok = true;
   try {
-    Pslg nodes = detail::read_node_numbered(prefix + ".node", ignored, first);
+    Pslg nodes = detail::read_node_numbered(prefix + ".node", ignored, first, true);
     mesh.vertices = std::move(nodes.vertices);
     try {
       edges = read_poly_edges(prefix + ".poly", poly_ids);
@@ -192,7 +192,7 @@ Mesh read_mesh(const std::string& prefix, int threads) {
   Mesh mesh;
   int first = 1;
   std::vector<std::string> ignored;
-  mesh.vertices = detail::read_node_numbered(prefix + ".node", ignored, first).vertices;
+  mesh.vertices = detail::read_node_numbered(prefix + ".node", ignored, first, true).vertices;
   const std::size_t n = mesh.vertices.size();
   auto vertex = [&](LineReader& in, std::int64_t v) { return vertex_id(in, v, first, n); };
   mesh.triangles = read_ele(prefix + ".ele", vertex);

@@ -10,6 +10,9 @@
 namespace lepp::detail {
 
 // read_node(path, warnings), and `first` set to the first vertex's number (1 when there is none).
-Pslg read_node_numbered(const std::string& path, std::vector<std::string>& warnings, int& first);
+// vertices_only: the vertices without their lines and markers (a mesh's .node, read_mesh:
+// at 10^7 vertices those are 80 MB written and never read).
+Pslg read_node_numbered(const std::string& path, std::vector<std::string>& warnings, int& first,
+                        bool vertices_only = false);
 
 }  // namespace lepp::detail

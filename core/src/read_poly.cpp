@@ -105,7 +105,8 @@ void header(LineReader& in, Leniency& lenient, const Tokens& t, std::size_t need
 }
 
 // Reads the vertex section: header already in `header`. Sets first index (0 or 1).
-void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& pslg, int& first) {
+// vertices_only: no vertex_lines, no vertex_markers (read_node_numbered).
+void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& pslg, int& first, bool vertices_only = false) {
   header(in, lenient, head, 1, 4, "vertex header (count, dimension, attributes, markers)");
   // count()'s check, made only if an error comes before the n lines are read (LineReader::count_later).
   const std::int64_t count_read = in.integer(head[0], "vertex count");
@@ -119,9 +120,10 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
   if (markers != 0 && markers != 1) in.fail("boundary marker count must be 0 or 1");
   const std::size_t fields = 3 + static_cast<std::size_t>(attributes) + static_cast<std::size_t>(markers);
   const std::size_t room = std::min(n, in.bytes_left() / 4 + 1);  // a line is 6 bytes at least: n unless the count is wrong
+  const bool lines = !vertices_only, keep_markers = markers && !vertices_only;
   pslg.vertices.reserve(room);
-  pslg.vertex_lines.reserve(room);
-  if (markers) pslg.vertex_markers.reserve(room);
+  if (lines) pslg.vertex_lines.reserve(room);
+  if (keep_markers) pslg.vertex_markers.reserve(room);
   Section section(in, lenient, 3, fields, "vertex line (number, x, y, attributes, marker)");
   // The plain line's kinds: the number, x, y, the attributes, the marker.
   const std::string kinds = "irr" + std::string(static_cast<std::size_t>(attributes), 'r') + (markers ? "i" : "");
@@ -142,7 +144,7 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
       section.plain_line();
       numbered(ints[0]);
       pslg.vertices.push_back({reals[0], reals[1]});
-      if (markers) pslg.vertex_markers.push_back(static_cast<int>(ints[1]));
+      if (keep_markers) pslg.vertex_markers.push_back(static_cast<int>(ints[1]));
     } else {
       in.expect_item(t, "vertex", i + 1, n);
       section.line(t);
@@ -150,10 +152,12 @@ void read_vertices(LineReader& in, Leniency& lenient, const Tokens& head, Pslg& 
       pslg.vertices.push_back({in.real(t[1], "x coordinate"), in.real(t[2], "y coordinate")});
       const std::size_t present = std::min(t.size(), fields);
       for (std::size_t a = 3; a < std::min(present, 3 + static_cast<std::size_t>(attributes)); ++a) in.real(t[a], "attribute");
-      if (markers)
-        pslg.vertex_markers.push_back(present == fields ? static_cast<int>(in.integer(t[fields - 1], "boundary marker")) : 0);
+      if (markers) {  // read (and checked) either way
+        const int marker = present == fields ? static_cast<int>(in.integer(t[fields - 1], "boundary marker")) : 0;
+        if (keep_markers) pslg.vertex_markers.push_back(marker);
+      }
     }
-    pslg.vertex_lines.push_back(in.line());
+    if (lines) pslg.vertex_lines.push_back(in.line());
   }
   in.count_kept();
   section.done();
@@ -184,7 +188,7 @@ bool is_directory(const std::string& path) {
 
 }  // namespace
 
-Pslg detail::read_node_numbered(const std::string& path, std::vector<std::string>& warnings, int& first) {
+Pslg detail::read_node_numbered(const std::string& path, std::vector<std::string>& warnings, int& first, bool vertices_only) {
   LineReader in(path);
   Leniency lenient{path};
   Pslg pslg;
@@ -192,7 +196,7 @@ Pslg detail::read_node_numbered(const std::string& path, std::vector<std::string
   Tokens t;
   in.expect(t, "vertex header");
   first = 1;
-  read_vertices(in, lenient, t, pslg, first);
+  read_vertices(in, lenient, t, pslg, first, vertices_only);
   if (in.next(t)) in.fail("unexpected content after the last vertex");
   lenient.report(warnings);
   return pslg;

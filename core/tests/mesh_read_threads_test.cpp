@@ -67,6 +67,8 @@ TEST(MeshReadThreads, SameMeshAsTheSequentialRead) {
 TEST(MeshReadThreads, SameFirstErrorOnBrokenFiles) {
   const std::vector<std::pair<std::string, Files>> cases = {
       {"node_broken", {"4 2 0 1\n1 0 0 1\n2 x 0 1\n3 1 1 1\n4 0 1 1\n", kEle1, ""}},
+      // A mesh keeps no markers, but a marker that is no integer is still an error.
+      {"node_marker_broken", {"4 2 0 1\n1 0 0 1\n2 1 0 m\n3 1 1 1\n4 0 1 1\n", kEle1, ""}},
       {"both_broken", {"4 2 0 1\n1 0 0 1\n2 x 0 1\n3 1 1 1\n4 0 1 1\n", "2 3 0\n1 1 2 3\n2 1 3 y\n", ""}},
       {"corner_out_of_range", {kNode1, "2 3 0\n1 1 2 5\n2 1 3 4\n", ""}},
       {"corner_zero_when_one_based", {kNode1, "2 3 0\n1 0 2 3\n2 1 3 4\n", ""}},
