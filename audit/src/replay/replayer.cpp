@@ -156,7 +156,7 @@ std::vector<FH> Replayer::faces_near(const Point& p, bool& at_vertex, bool wide)
 // Every domain face around v, in the order of CGAL's circulator, each not yet
 // seen added to out. None around a corner of the far bounding box
 // (cdt_build.cpp): its faces are flooded out of the domain when it is built,
-// and a later face takes its flags from the face it splits. A corner's degree
+// and a later face takes its flags from the faces it is made of (a split, a flip). A corner's degree
 // grows with the boundary's Steiner points (each outside triangle between a
 // side of the domain and the box fans from a corner), and a point located in
 // one of those triangles (on a boundary edge, or rounded just past it) had
