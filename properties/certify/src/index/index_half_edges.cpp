@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "../passes.h"
+#include "../point_table.h"
 #include "../prefetch.h"
 #include "../ranges.h"
 
@@ -126,28 +127,18 @@ void index_half_edges(Certification& cert) {
 
 namespace {
 
-// Whether two finite points are equal (as Point's == compares: -0 is 0): an open-addressing
-// table of ids, a power of two at least twice their number, probed linearly from the
-// hash's high bits (mixed once more: PointHash's low bits are the coordinates' low bits).
+// Whether two finite points are equal (as Point's == compares: -0 is 0).
 bool any_duplicate_point(const std::vector<Point>& points) {
-  std::size_t size = 16;
-  int bits = 4;
-  while (size < 2 * points.size()) size *= 2, ++bits;
-  std::vector<int> slot(size, -1);
-  const PointHash hash;
-  auto home = [&](const Point& p) { return static_cast<std::size_t>((hash(p) * 0x9E3779B97F4A7C15ull) >> (64 - bits)); };
+  PointTable table(points.size());
+  auto point_of = [&](int i) -> const Point& { return points[static_cast<std::size_t>(i)]; };
   for (std::size_t i = 0; i < points.size(); ++i) {
     // The slot a point kAhead on starts at (scattered over the table: a cache miss each), asked for now.
-    if (i + kAhead < points.size()) prefetch_write(&slot[home(points[i + kAhead])]);
+    if (i + kAhead < points.size()) prefetch_write(table.home_slot(points[i + kAhead]));
     const Point& p = points[i];
     if (!finite(p)) continue;  // NaN is equal to nothing; the sort below skips it too
-    for (std::size_t k = home(p);; k = (k + 1) & (size - 1)) {
-      if (slot[k] < 0) {
-        slot[k] = static_cast<int>(i);
-        break;
-      }
-      if (points[static_cast<std::size_t>(slot[k])] == p) return true;
-    }
+    int& slot = table.slot(p, point_of);
+    if (slot >= 0) return true;
+    slot = static_cast<int>(i);
   }
   return false;
 }

@@ -2,9 +2,10 @@
 // The mesh index's input layer: the expected domain, and which mesh vertex each input vertex is.
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <vector>
 
 #include "../passes.h"
+#include "../point_table.h"
 
 namespace lepp::certify::pass {
 namespace {
@@ -46,15 +47,19 @@ void index_input_vertices(Certification& cert) {
   ix.mesh_to_input.assign(ix.mesh.vertices.size(), -1);
   // For the input vertices the mesh does not number as the input does (all of them in a
   // mesh read from files), the first mesh vertex at the same coordinates not merged away,
-  // -1 if none: one pass over the mesh against a table of those input vertices only.
-  std::unordered_map<Point, int, PointHash> where;
-  if (ix.mesh.input_vertices < n) {
-    where.reserve(2 * (n - ix.mesh.input_vertices));
-    for (std::size_t i = ix.mesh.input_vertices; i < n; ++i) where.emplace(ix.pslg.vertices[i], -1);
+  // -1 if none: one pass over the mesh against a table of those input vertices only
+  // (each point's first input vertex stands for it; found[k]: its mesh vertex).
+  const std::size_t numbered = std::min<std::size_t>(ix.mesh.input_vertices, n);
+  PointTable table(n - numbered);
+  std::vector<int> found(n, -1);
+  auto input = [&](int i) -> const Point& { return ix.pslg.vertices[static_cast<std::size_t>(i)]; };
+  if (numbered < n) {
+    for (std::size_t i = numbered; i < n; ++i)
+      if (int& slot = table.slot(ix.pslg.vertices[i], input); slot < 0) slot = static_cast<int>(i);
     for (std::size_t v = 0; v < ix.mesh.vertices.size(); ++v) {
       if (ix.merged[v]) continue;
-      const auto it = where.find(ix.mesh.vertices[v]);
-      if (it != where.end() && it->second < 0) it->second = static_cast<int>(v);
+      const int k = table.find(ix.mesh.vertices[v], input);
+      if (k >= 0 && found[static_cast<std::size_t>(k)] < 0) found[static_cast<std::size_t>(k)] = static_cast<int>(v);
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -69,8 +74,8 @@ void index_input_vertices(Certification& cert) {
       }
       if (i < ix.mesh.vertices.size()) ix.input_to_mesh[i] = static_cast<int>(i);
     } else {
-      auto it = where.find(p);
-      if (it != where.end() && it->second >= 0) ix.input_to_mesh[i] = it->second;
+      const int k = table.find(p, input);
+      if (k >= 0 && found[static_cast<std::size_t>(k)] >= 0) ix.input_to_mesh[i] = found[static_cast<std::size_t>(k)];
       else if (i + ix.pslg.crossing_vertices >= n) ix.input_to_mesh[i] = nearest_mesh_vertex(ix, p);
     }
     const int m = ix.input_to_mesh[i];
