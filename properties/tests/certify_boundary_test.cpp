@@ -127,6 +127,27 @@ TEST(CertifyBoundary, UnusedDuplicateOfAnInputVertexIsMerged) {
   EXPECT_TRUE(r3.warnings.empty());
 }
 
+// Three copies of an input vertex, two of them in triangles: two duplicate pairs, and
+// the input vertex is present (a copy in triangles stands for it), wherever the unused
+// copy comes. Kills cert-input-table-unused-copy-first (unused first) and
+// cert-input-table-last-vertex (unused last).
+TEST(CertifyBoundary, AnInputVertexInTrianglesIsPresentBesideItsUnusedCopy) {
+  const Pslg sq = polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  for (const int unused : {0, 4, 5}) {  // which of the three copies of (0, 0) no triangle uses
+    Mesh m;  // as read from files: input vertices found by their coordinates
+    m.vertices = sq.vertices;
+    m.vertices.push_back({0, 0});
+    m.vertices.push_back({0, 0});
+    std::vector<int> used;
+    for (const int c : {0, 4, 5})
+      if (c != unused) used.push_back(c);
+    m.triangles = {{used[0], 1, 2}, {used[1], 2, 3}};
+    const certify::Report r = certify::certify(sq, m, {});
+    EXPECT_EQ(r.count(certify::Reason::DuplicateMeshVertex), 2u) << "unused copy " << unused << "\n" << certify::format_report(r);
+    EXPECT_EQ(r.count(certify::Reason::InputVertexMissing), 0u) << "unused copy " << unused << "\n" << certify::format_report(r);
+  }
+}
+
 // ---- --split-crossings ------------------------------------------------------
 Pslg crossing_pslg() { return test::crossing_split(LEPP_SOURCE_DIR); }
 using test::as_read;

@@ -46,9 +46,11 @@ void index_input_vertices(Certification& cert) {
   ix.input_to_mesh.assign(n, -1);
   ix.mesh_to_input.assign(ix.mesh.vertices.size(), -1);
   // For the input vertices the mesh does not number as the input does (all of them in a
-  // mesh read from files), the first mesh vertex at the same coordinates not merged away,
-  // -1 if none: one pass over the mesh against a table of those input vertices only
-  // (each point's first input vertex stands for it; found[k]: its mesh vertex).
+  // mesh read from files), the first mesh vertex at the same coordinates not merged away
+  // that a triangle uses, else the first not merged away, -1 if none: one pass over the
+  // mesh against a table of those input vertices only (each point's first input vertex
+  // stands for it; found[k]: its mesh vertex). Copies that triangles use are reported as
+  // duplicates; the input vertex is not missing too when an unused copy comes first.
   const std::size_t numbered = std::min<std::size_t>(ix.mesh.input_vertices, n);
   PointTable table(n - numbered);
   std::vector<int> found(n, -1);
@@ -59,7 +61,9 @@ void index_input_vertices(Certification& cert) {
     for (std::size_t v = 0; v < ix.mesh.vertices.size(); ++v) {
       if (ix.merged[v]) continue;
       const int k = table.find(ix.mesh.vertices[v], input);
-      if (k >= 0 && found[static_cast<std::size_t>(k)] < 0) found[static_cast<std::size_t>(k)] = static_cast<int>(v);
+      if (k < 0) continue;
+      int& m = found[static_cast<std::size_t>(k)];
+      if (m < 0 || (!ix.used[static_cast<std::size_t>(m)] && ix.used[v])) m = static_cast<int>(v);
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
