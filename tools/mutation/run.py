@@ -189,7 +189,8 @@ def main():
     ap.add_argument("--report-only", action="store_true")
     ap.add_argument("--check", action="store_true",
                     help="only check that every edit applies to the tree as it is (each 'from' exactly once in its "
-                         "file); exit 1 naming those that do not (a ctest runs this)")
+                         "file) and that every entry not argued equivalent has quick tests and targets; exit 1 "
+                         "naming those that fail (a ctest runs this)")
     ap.add_argument("--catalogue", default=CATALOGUE, help="the catalogue to read (default tools/mutation/mutants.txt)")
     ap.add_argument("--no-sync", action="store_true", help="keep the scratch tree as it is")
     ap.add_argument("--fuzz", action="store_true")
@@ -209,8 +210,13 @@ def main():
         for m in stale:
             count = open(os.path.join(ROOT, m["file"]), encoding="utf-8").read().count(m["from_text"])
             print(f"{a.catalogue}:{m['line']}: mutant {m['id']}: 'from' occurs {count} times in {m['file']} (must be exactly once)")
-        print(f"{len(mutants)} mutants, {len(stale)} that do not apply")
-        sys.exit(1 if stale else 0)
+        # A mutant not argued equivalent needs its quick tests and their targets: without
+        # them the quick pass runs nothing and calls it survived-quick.
+        untested = [m for m in mutants if "equivalent" not in m and not ("quick" in m and "targets" in m)]
+        for m in untested:
+            print(f"{a.catalogue}:{m['line']}: mutant {m['id']}: no 'quick' or no 'targets' (the quick pass would run no test)")
+        print(f"{len(mutants)} mutants, {len(stale)} that do not apply, {len(untested)} without quick tests")
+        sys.exit(1 if stale or untested else 0)
     scratch = os.path.abspath(a.scratch)
     build = os.path.join(scratch, "build")
     results_path = os.path.join(os.path.dirname(scratch), "results.json")
