@@ -57,7 +57,7 @@ std::vector<Candidate> catalogue_points(const ReplayRules& rules, const T& t1, c
       } else if (c1 != c2) {
         const T& star = c1 ? t1 : t2;
         const T& other = c1 ? t2 : t1;
-        int inside = inside_status(other, g->point, point_tolerance(rules, g->scale));
+        int inside = inside_status(other, *g, point_tolerance(rules, g->scale));
         // The paper: the midpoint only. Both programs take the centroid here;
         // Remark10Ignored ranks first, the trace tells them apart (conformance.cpp).
         if (inside < 0) add(Deviation::Remark10Ignored, *g), add(Deviation::Remark10Reversed, *g);

@@ -31,7 +31,7 @@ std::vector<Candidate> paper_candidates(const ReplayRules& rules, const T& t1, c
           // no area centroid: not inside, so the midpoint.
           const T& other = o.triangle == 1 ? t2 : t1;
           std::optional<Candidate> g = centroid(Rule::CentroidInOther);
-          int inside = g ? inside_status(other, g->point, point_tolerance(rules, g->scale)) : -1;
+          int inside = g ? inside_status(other, *g, point_tolerance(rules, g->scale)) : -1;
           const bool holds = o.when == PaperCondition::CentroidInsideOther ? inside >= 0 : inside <= 0;
           if (!holds) continue;
         }
