@@ -10,30 +10,29 @@ set -u
 python=$1 src=$2 scratch=$3
 mkdir -p "$scratch"
 "$python" "$src/tools/mutation/run.py" --check || { echo "FAIL: the catalogue does not apply"; exit 1; }
-cat > "$scratch/twice.txt" <<'CAT'
+# refused NAME MESSAGE: the catalogue in $scratch/NAME.txt (on stdin) must fail the check
+# naming MESSAGE.
+refused() {
+  cat > "$scratch/$1.txt"
+  out=$("$python" "$src/tools/mutation/run.py" --check --catalogue "$scratch/$1.txt")
+  code=$?
+  echo "$out"
+  if [ "$code" -ne 1 ] || ! echo "$out" | grep -q "$2"; then
+    echo "FAIL: $1 was not refused with \"$2\" (exit $code)"; exit 1
+  fi
+}
+refused twice "mutant matches-twice: 'from' occurs" <<'CAT'
 [matches-twice]
 file = tools/mutation/run.py
 from = import
 to = export
 bug = none: an edit whose text occurs many times
 CAT
-out=$("$python" "$src/tools/mutation/run.py" --check --catalogue "$scratch/twice.txt")
-code=$?
-echo "$out"
-if [ "$code" -ne 1 ] || ! echo "$out" | grep -q "mutant matches-twice: 'from' occurs"; then
-  echo "FAIL: a mutant whose 'from' occurs many times was not refused (exit $code)"; exit 1
-fi
-cat > "$scratch/untested.txt" <<'CAT'
+refused untested "mutant no-quick-tests: no 'quick' or no 'targets'" <<'CAT'
 [no-quick-tests]
 file = tools/mutation/run.py
 from = def parse_catalogue(path):
 to = def parse_catalogue(path, unused=None):
 bug = none: an entry that lost its quick and targets lines
 CAT
-out=$("$python" "$src/tools/mutation/run.py" --check --catalogue "$scratch/untested.txt")
-code=$?
-echo "$out"
-if [ "$code" -ne 1 ] || ! echo "$out" | grep -q "mutant no-quick-tests: no 'quick' or no 'targets'"; then
-  echo "FAIL: a mutant without quick tests was not refused (exit $code)"; exit 1
-fi
 echo "ok: the catalogue applies, and a stale one or one without quick tests is refused"

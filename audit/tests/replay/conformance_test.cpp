@@ -254,10 +254,13 @@ TEST(Conformance, AcceptsExactlyRoundedChoices) {
 
 // ---- moved points ----
 
+// The fast engine's points on p (centroid, first in first out, 30 degrees): the
+// moved-point tests move one of them.
+std::vector<Point> centroid_trace_of(const Pslg& p) { return points_of(run(p, true, Method::Centroid, QueueOrder::Fifo, 30)); }
+
 TEST(Conformance, PointToleranceIsMeasuredInUlps) {
-  Pslg p = paper("A");
-  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
-  std::vector<Point> trace = points_of(r);
+  const Pslg p = paper("A");
+  const std::vector<Point> trace = centroid_trace_of(p);
   ASSERT_GT(trace.size(), 20u);
   std::size_t k = trace.size() / 2;
 
@@ -287,9 +290,8 @@ TEST(Conformance, PointToleranceIsMeasuredInUlps) {
 // The tolerance's boundary: a point moved a quarter of the stated tolerance conforms, one
 // moved four times it does not (the engine's rounding is at most an eighth of it).
 TEST(Conformance, PointToleranceBoundary) {
-  Pslg p = paper("A");
-  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
-  std::vector<Point> trace = points_of(r);
+  const Pslg p = paper("A");
+  const std::vector<Point> trace = centroid_trace_of(p);
   ASSERT_GT(trace.size(), 20u);
   const std::size_t k = trace.size() / 2;
   std::vector<Point> far = trace;
@@ -317,9 +319,8 @@ TEST(Conformance, PointToleranceBoundary) {
 // choice's distance in the max norm (4 units, what the tolerance is held to) and the
 // Euclidean one (5 units, what finding.md prints), each from the same two differences.
 TEST(Conformance, ReportsBothDistancesToTheNearestChoice) {
-  Pslg p = paper("A");
-  RefineResult r = run(p, true, Method::Centroid, QueueOrder::Fifo, 30);
-  std::vector<Point> trace = points_of(r);
+  const Pslg p = paper("A");
+  const std::vector<Point> trace = centroid_trace_of(p);
   ASSERT_GT(trace.size(), 20u);
   const std::size_t k = trace.size() / 2;
   const double unit = 1e-6 * std::max(std::abs(trace[k].x), std::abs(trace[k].y));
