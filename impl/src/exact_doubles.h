@@ -121,6 +121,14 @@ class ExactSum {
     n_ = m;
   }
   int sign() const { return n_ == 0 ? 0 : (e_[n_ - 1] > 0) - (e_[n_ - 1] < 0); }
+  double largest() const { return n_ == 0 ? 0 : e_[n_ - 1]; }
+  // The sum of the other components' magnitudes, rounded (at most N - 2 additions): how far
+  // the sum may lie from largest(). (Nonoverlapping alone allows {-0.75, 1}: far from 1.)
+  double below_largest() const {
+    double m = 0;
+    for (std::size_t i = 0; i + 1 < n_; ++i) m += std::fabs(e_[i]);
+    return m;
+  }
 
  private:
   double e_[N];  // e_[0, n_) only: not zeroed, each call pays for what it uses
@@ -145,6 +153,46 @@ inline int compare_sqlen_by_expansion(const Point& a, const Point& b, const Poin
       if (term != 0) sum.add(sign * term);
   }
   return sum.sign();
+}
+
+// (b - a) x (c - a) as an exact sum plus a bounded rest: each difference h + l by TwoSum,
+// each of the eight partial products of two factors in ExactDoubles' range added exactly
+// (p + its fma error), the others only bounded. The sign is the sum's where the sum's
+// largest component clears the bound; else 2. A sliver's orientation against an ulp
+// cluster at the origin (the fast engine's sliver clause, fuzz_differential's slowest
+// input: 44 % of its time in exact orientations) has differences h = 2, l = 2^-1074:
+// no double holds the products, but the parts in range decide.
+inline int orient_by_expansion(const Point& a, const Point& b, const Point& c) {
+  double d[4][2];  // bax, cay, bay, cax: high part, then what TwoSum lost
+  const double ends[4][2] = {{b.x, a.x}, {c.y, a.y}, {b.y, a.y}, {c.x, a.x}};
+  for (int i = 0; i < 4; ++i) d[i][0] = two_sum(ends[i][0], -ends[i][1], d[i][1]);
+  ExactSum<16> sum;  // two products of two-term factors: 8 partial products, 2 terms each
+  double rest = 0;   // at least the sum of |u v| over the partial products left out
+  for (int k = 0; k < 2; ++k) {
+    const double(&x)[2] = d[2 * k];
+    const double(&y)[2] = d[2 * k + 1];
+    const double sign = k == 0 ? 1 : -1;
+    for (const double u : x)
+      for (const double v : y) {
+        if (u == 0 || v == 0) continue;
+        if (ExactDoubles::fits(u) && ExactDoubles::fits(v)) {
+          const double p = u * v;
+          sum.add(sign * p);
+          if (const double err = std::fma(u, v, -p); err != 0) sum.add(sign * err);
+        } else {
+          // |u v| rounded (its relative error u) and raised by 2^-50 (a rounding more),
+          // plus 2^-1074 for the two roundings' underflow; a NaN or an overflow: no decision.
+          rest += std::fabs(u) * std::fabs(v) * (1 + 0x1p-50) + 0x1p-1074;
+        }
+      }
+  }
+  if (rest == 0) return sum.sign();
+  // The value is top + (the other components) + (the rest), its sign top's where |top|
+  // exceeds both bounds. Each bound is a sum of at most 15 positive doubles, within a
+  // relative 15 u of its value (sums of subnormals are exact): raised by 2^-40.
+  const double top = sum.largest();
+  if (std::isfinite(rest) && std::fabs(top) > (sum.below_largest() + rest) * (1 + 0x1p-40)) return (top > 0) - (top < 0);
+  return 2;
 }
 
 inline int skinny_sign_in_doubles(const Point& apex, const Point& b, const Point& c, double s) {

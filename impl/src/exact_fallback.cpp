@@ -117,7 +117,8 @@ Scale tiny_scale(std::initializer_list<Point> points) {
 // no scale); then the polynomial in doubles if every step is exact; then Mpzf.
 int orient_exact(const Point& a, const Point& b, const Point& c) {
   if (const Scale t = tiny_scale({a, b, c}); t.k) return orient(t.of(a), t.of(b), t.of(c));
-  const int s = orient_in_doubles(a, b, c);
+  if (const int s = orient_in_doubles(a, b, c); s != 2) return s;
+  const int s = orient_by_expansion(a, b, c);
   return s != 2 ? s : orient_mpzf(a, b, c);
 }
 

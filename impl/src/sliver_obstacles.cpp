@@ -67,6 +67,12 @@ void SliverObstacles::add_to_chain(const TriMesh& m, int segment, int v) {
 }
 
 bool SliverObstacles::blocks(const TriMesh& m, int va, int vb, const Point& p) {
+  const auto [known, fresh] = answers_.try_emplace({va, vb, p.x, p.y}, false);
+  if (!fresh) return known->second;
+  return known->second = test(m, va, vb, p);
+}
+
+bool SliverObstacles::test(const TriMesh& m, int va, int vb, const Point& p) {
   if (!index_) {
     index_ = std::make_unique<Index>();
     std::vector<Chain>& chains = index_->chains;

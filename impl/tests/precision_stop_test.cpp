@@ -370,6 +370,36 @@ TEST(PrecisionStop, SliverClauseSeesTheChainEdgesAtTheRangesEnds) {
   }
 }
 
+// The clause's answers are remembered until a segment is split (sliver_obstacles.h):
+// a chain of the input outside the domain, (4, -3) -> (14, -0.5), passes below the
+// sliver a, p, b (at x = 12 it is at -1, below b), so the sliver is free (a deeper one
+// on the same edge, through (6, -2.8), is not: each point its own answer); a Steiner
+// vertex (7, -0.6) on that chain lies inside the sliver, and from that split on the
+// same question is answered anew: blocked. A remembered answer kept across the split
+// said free.
+TEST(PrecisionStop, SliverClauseAnswersAgainAfterASplit) {
+  const Point p{6, -1};
+  Pslg pslg;
+  pslg.vertices = {{0, 0}, {12, 0}, {12, 10}, {0, 10}, {4, -3}, {14, -0.5}};
+  pslg.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}, {4, 5, 0}};
+  const fast::SegmentMembership mem = fast::make_membership(pslg);
+  fast::TriMesh m = fast::build_initial_cdt(pslg, mem, 0, 0);
+  fast::SliverObstacles obstacles(pslg, mem);
+  EXPECT_FALSE(obstacles.blocks(m, 0, 1, p));
+  EXPECT_FALSE(obstacles.blocks(m, 0, 1, p));  // asked again: remembered, the same
+  EXPECT_TRUE(obstacles.blocks(m, 0, 1, {6, -2.8}));  // a deeper sliver, on the same edge, meets the chain
+  m.pts.push_back({7, -0.6});  // only its point: the clause reads no triangle
+  const int v = static_cast<int>(m.pts.size()) - 1;
+  const Point &a = pslg.vertices[0], &b = pslg.vertices[1];  // inside the sliver a, p, b (counter-clockwise)
+  ASSERT_TRUE(fast::orient(a, p, m.pts.back()) > 0 && fast::orient(p, b, m.pts.back()) > 0 && fast::orient(b, a, m.pts.back()) > 0);
+  obstacles.on_split(m, 4, v);
+  EXPECT_TRUE(obstacles.blocks(m, 0, 1, p));
+  fast::SliverObstacles fresh(pslg, mem);
+  fresh.blocks(m, 0, 1, p);  // builds its index from the chains without v
+  fresh.on_split(m, 4, v);
+  EXPECT_TRUE(fresh.blocks(m, 0, 1, p));
+}
+
 // A midpoint rounded off its constrained edge's line, on the side away from a
 // triangle whose circumcircle it lies outside: the usual split left the edge
 // from it to that triangle's apex not locally Delaunay, in both engines (lepp

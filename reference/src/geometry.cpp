@@ -177,10 +177,10 @@ namespace {
 // longest_edge(f), looked up in memo and kept there when given.
 int longest_edge(FH f, LongestEdgeMemo* memo) {
   if (!memo || id(f->vertex(0)) < 0 || id(f->vertex(1)) < 0 || id(f->vertex(2)) < 0) return longest_edge(f);
-  auto [it, fresh] = memo->try_emplace(key(f), -1);
-  if (fresh) it->second = id(f->vertex(longest_edge(f)));
+  int& known = memo->at(key(f));
+  if (known < 0) known = id(f->vertex(longest_edge(f)));
   for (int i = 0; i < 3; ++i)
-    if (id(f->vertex(i)) == it->second) return i;
+    if (id(f->vertex(i)) == known) return i;
   throw std::logic_error("reference: a remembered longest edge is not the face's");
 }
 

@@ -11,13 +11,13 @@
 #include <cstdint>
 #include <map>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "lepp/mesh.h"
 #include "lepp/pslg.h"
 #include "lepp/refine.h"
+#include "longest_edge_memo.h"
 
 namespace lepp::reference::detail {
 
@@ -107,18 +107,6 @@ struct Lepp {
   // length tie fixed them (the precision limit, tie_resolutions.cpp); -1: the edge order's.
   int s1 = -1, s2 = -1;
 };
-// The longest edge of each face met so far, by the face's ids (sorted): the id of
-// the vertex opposite it. The edge order is a function of the ids and of their
-// coordinates, which never change, so an answer stays true across flips; faces
-// with a bounding-box corner (id -1, shared by four) are not kept.
-struct TriHash {
-  std::size_t operator()(const Tri& t) const {
-    return std::hash<std::uint64_t>()((static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[0])) * 0x9E3779B97F4A7C15ULL) ^
-                                      (static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[1])) << 21) ^
-                                      static_cast<std::uint64_t>(static_cast<std::uint32_t>(t[2])));
-  }
-};
-using LongestEdgeMemo = std::unordered_map<Tri, int, TriHash>;
 // memo: if not null, longest edges are looked up and kept there (the Lepps of a
 // refinement walk the same fans again and again).
 Lepp find_lepp(FH t, LongestEdgeMemo* memo = nullptr);
