@@ -115,6 +115,9 @@ Scale tiny_scale(std::initializer_list<Point> points) {
 
 // Each: on tiny points, the filter again at scale (its own fallback then finds
 // no scale); then the polynomial in doubles if every step is exact; then Mpzf.
+// The orientation and the length comparison try an exact sum before Mpzf
+// (exact_doubles.h); it decides every case the doubles' step decides, which
+// stays first as the cheaper one (most filter failures are exact ties on grids).
 int orient_exact(const Point& a, const Point& b, const Point& c) {
   if (const Scale t = tiny_scale({a, b, c}); t.k) return orient(t.of(a), t.of(b), t.of(c));
   if (const int s = orient_in_doubles(a, b, c); s != 2) return s;
